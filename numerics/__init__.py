@@ -1,0 +1,1 @@
+"""Lattice models of chains of interlocked rings, checked against :mod:`ringchain.theory`."""

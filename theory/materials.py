@@ -1,0 +1,78 @@
+"""Material presets, each with its source (SI units).
+
+The symbolic derivations stay parameterised in E and nu; numbers enter only here,
+through named constructors.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from . import _validate as v
+
+__all__ = ["Material", "STAINLESS_STEEL_304", "MATERIALS", "get_material"]
+
+
+@dataclass(frozen=True)
+class Material:
+    """An isotropic elastic material.
+
+    Attributes
+    ----------
+    name : str
+        Short key, e.g. ``"stainless"``.
+    E : float
+        Young's modulus, Pa.
+    nu : float
+        Poisson's ratio.
+    rho : float
+        Density, kg/m^3.
+    source : str
+        Where the numbers come from.
+    """
+
+    name: str
+    E: float
+    nu: float
+    rho: float
+    source: str
+
+    def __post_init__(self):
+        v.positive("E", self.E, "Pa")
+        v.in_range("nu", self.nu, -1.0, 0.5, closed_high=False)
+        v.positive("rho", self.rho, "kg/m^3")
+
+    @property
+    def G(self) -> float:
+        """Shear modulus E/(2(1 + nu)), Pa."""
+        return self.E / (2.0 * (1.0 + self.nu))
+
+    @property
+    def E_star(self) -> float:
+        """Contact modulus of two bodies of this material, E/(2(1 - nu^2)), Pa (App. A)."""
+        return self.E / (2.0 * (1.0 - self.nu**2))
+
+
+#: AISI 304 austenitic stainless steel, annealed (the paper's rings are "stainless steel";
+#: the grade is not stated, 304 is the common one).
+STAINLESS_STEEL_304 = Material(
+    name="stainless",
+    E=193e9,
+    nu=0.29,
+    rho=8000.0,
+    source="ASM Handbook Vol. 1 / ASM Aerospace Specification Metals data sheet for AISI 304: "
+    "E = 193 GPa, nu = 0.29, rho = 8.00 g/cm^3",
+)
+
+#: Presets by key.
+MATERIALS = {STAINLESS_STEEL_304.name: STAINLESS_STEEL_304}
+
+
+def get_material(name_or_material) -> Material:
+    """A :class:`Material` from a preset key (``"stainless"``) or a Material itself."""
+    if isinstance(name_or_material, Material):
+        return name_or_material
+    try:
+        return MATERIALS[str(name_or_material).lower()]
+    except KeyError:
+        raise ValueError(f"unknown material {name_or_material!r}; presets: {sorted(MATERIALS)}") from None
