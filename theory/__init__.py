@@ -13,6 +13,7 @@ Static theory of one contact (paper Sec. II, Eqs. 1-4, App. A):
 - :class:`Ring`, :class:`Material` -- a ring of the chain and its material.
 """
 
+from . import paper_data
 from .contact import contact_ellipse, hertz_stiffness, minimum_contact_angle
 from .geometry import MIN_CHAIN_ASPECT_RATIO, PAPER_TUBE_RADIUS, Ring
 from .materials import MATERIALS, STAINLESS_STEEL_304, Material, get_material
@@ -28,6 +29,7 @@ from .series import (
 )
 
 __all__ = [
+    "paper_data",
     "hertz_stiffness",
     "contact_ellipse",
     "minimum_contact_angle",

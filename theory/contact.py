@@ -313,7 +313,7 @@ def hertz_stiffness(R, r, E, nu, angle=np.pi / 2):
     --------
     >>> K_c = hertz_stiffness(22.5e-3, 2.5e-3, 193e9, 0.29)
     >>> round(float(K_c) / 1e9, 3)  # GN/m^1.5
-    7.508
+    7.509
     """
     R, r = _check_geometry(R, r)
     E = v.positive("E", E, "Pa")

@@ -31,12 +31,13 @@ def _carlson_class(name: str, scipy_name: str, mpmath_name: str):
 
     def _eval_evalf(self, prec):
         import mpmath
+        from mpmath.libmp import prec_to_dps
 
         if not all(arg.is_number for arg in self.args):
             return None
-        with mpmath.workprec(prec):
-            values = [mpmath.mpf(sp.Float(arg, sp.prec_to_dps(prec) + 5)) for arg in self.args]
-            return sp.Float(getattr(mpmath, mpmath_name)(*values), sp.prec_to_dps(prec))
+        with mpmath.workprec(prec + 10):
+            values = [mpmath.mpf(arg.evalf(prec_to_dps(prec) + 5)) for arg in self.args]
+            return sp.Float(getattr(mpmath, mpmath_name)(*values), prec_to_dps(prec))
 
     return type(
         name,

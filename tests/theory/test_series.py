@@ -1,0 +1,132 @@
+"""Springs in series and the power-law reduction (paper Eqs. 3-4)."""
+
+import numpy as np
+import pytest
+import sympy as sp
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from ringchain.theory import (
+    PAPER_TUBE_RADIUS,
+    Ring,
+    crossover_force,
+    fit_power_law,
+    local_exponent,
+    n_per_mm_to_si,
+    paper_data,
+    series,
+    series_displacement,
+    si_to_n_per_mm,
+)
+
+S = series.symbols()
+F, K_c, K_b = S["F"], S["K_c"], S["K_b"]
+
+
+def test_total_extension_is_eq_3():
+    expected = (F / K_c) ** sp.Rational(2, 3) + F / K_b
+    assert sp.simplify(series.total_extension() - expected) == 0
+
+
+def test_local_exponent_limits():
+    n = series.local_exponent_expr()
+    assert sp.limit(n, F, 0) == sp.Rational(3, 2)
+    assert sp.limit(n, F, sp.oo) == 1
+
+
+def test_crossover_force_and_exponent_there():
+    assert sp.simplify(series.crossover_force_expr() - K_b**3 / K_c**2) == 0
+    assert series.local_exponent_at_crossover() == sp.Rational(6, 5)
+
+
+POINTS = [(0.3, 7.5e9, 3.3e6), (10.0, 9.7e9, 5.9e7), (1e4, 2e9, 1e5)]
+
+
+@pytest.mark.parametrize(("F_", "Kc_", "Kb_"), POINTS)
+def test_numeric_functions_equal_evalf(F_, Kc_, Kb_):
+    values = {F: F_, K_c: Kc_, K_b: Kb_}
+
+    def exact(expr):
+        return float(expr.evalf(20, subs=values))
+
+    # Same expressions evaluated in double precision: 1e-13.
+    assert np.isclose(series_displacement(F_, Kc_, Kb_), exact(series.total_extension()), rtol=1e-13)
+    assert np.isclose(local_exponent(F_, Kc_, Kb_), exact(series.local_exponent_expr()), rtol=1e-13)
+    assert np.isclose(crossover_force(Kc_, Kb_), exact(series.crossover_force_expr()), rtol=1e-13)
+
+
+def test_fit_recovers_pure_limits():
+    # Pure Hertz (bending infinitely stiff): the fit must return exactly K_c and 3/2.
+    K, n = fit_power_law(7.5e9, 1e30, 1.0, 100.0)
+    assert np.isclose(n, 1.5, rtol=1e-9) and np.isclose(K, 7.5e9, rtol=1e-8)  # 1e30 leaves ~1e-13 of bending
+    # Pure bending (contact infinitely stiff): K_b and 1.
+    K, n = fit_power_law(1e40, 3.3e6, 1.0, 100.0)
+    assert np.isclose(n, 1.0, rtol=1e-9) and np.isclose(K, 3.3e6, rtol=1e-8)
+
+
+def test_fit_lies_between_local_exponents_at_window_ends():
+    _, n = fit_power_law(7.5e9, 3.3e6, 1.0, 100.0)
+    n_lo, n_hi = local_exponent(100.0, 7.5e9, 3.3e6), local_exponent(1.0, 7.5e9, 3.3e6)
+    assert n_lo < n < n_hi
+
+
+def test_fit_broadcasts():
+    K, n = fit_power_law(np.array([7.5e9, 9.7e9]), np.array([[3.3e6], [5.9e7]]))
+    assert n.shape == (2, 2) and K.shape == (2, 2)
+    assert np.isclose(n[0, 0], fit_power_law(7.5e9, 3.3e6)[1])
+
+
+def test_fitted_exponent_against_aspect_ratio_follows_papers_trend():
+    """Sec. IV.A: n falls from about 1.4 (R/r = 3.1) to about 1.1 (R/r = 10)."""
+    aspects = [3.1, 4.0, 5.5, 6.0, 9.0, 10.0]
+    fitted = np.array([Ring.from_aspect_ratio(q, PAPER_TUBE_RADIUS).power_law()[1] for q in aspects])
+    assert np.all(np.diff(fitted) < 0)
+    reported = {**paper_data.FE_EXPONENTS, **{q: row[1] for q, row in paper_data.TABLE_I.items()}}
+    for aspect, n in zip(aspects, fitted, strict=True):
+        # The paper does not state its fitting window; moving ours down a decade (0.1-10 N instead
+        # of 1-100 N) raises n by 0.05-0.09 across these rings. The default window lands within 0.04
+        # of every reported value (largest gap 0.037 at R/r = 5.5), so 0.05 checks it.
+        assert abs(n - reported[aspect]) < 0.05, (aspect, n, reported[aspect])
+
+
+def test_unit_conversion():
+    # F = K_mm (delta/1 mm)^n = K_si (delta/1 m)^n: at delta = 1 mm both give K_mm newtons.
+    K_mm, n = 2284.0, 1.11
+    assert np.isclose(n_per_mm_to_si(K_mm, n) * (1e-3) ** n, K_mm, rtol=1e-14)
+    assert np.isclose(si_to_n_per_mm(n_per_mm_to_si(K_mm, n), n), K_mm, rtol=1e-14)
+
+
+@pytest.mark.parametrize(
+    ("call", "message"),
+    [
+        (lambda: series_displacement(-1.0, 1e9, 1e6), "F must be non-negative"),
+        (lambda: local_exponent(0.0, 1e9, 1e6), "F must be positive"),
+        (lambda: crossover_force(1e9, -1.0), "K_b must be positive"),
+        (lambda: fit_power_law(1e9, 1e6, 10.0, 1.0), "F_min < F_max"),
+        (lambda: fit_power_law(1e9, 1e6, 0.0, 1.0), "F_min must be positive"),
+        (lambda: series_displacement("a", 1e9, 1e6), "F must be a real number"),
+    ],
+)
+def test_bad_inputs(call, message):
+    with pytest.raises((ValueError, TypeError), match=message):
+        call()
+
+
+@settings(max_examples=100, deadline=None)
+@given(
+    F_=st.floats(1e-8, 1e8),
+    Kc_=st.floats(1e6, 1e12),
+    Kb_=st.floats(1e3, 1e9),
+)
+def test_local_exponent_between_one_and_three_halves(F_, Kc_, Kb_):
+    n = local_exponent(F_, Kc_, Kb_)
+    assert 1.0 <= n <= 1.5
+    # and it decreases with force (bending takes over)
+    assert local_exponent(2 * F_, Kc_, Kb_) <= n + 1e-15
+
+
+@settings(max_examples=50, deadline=None)
+@given(aspect=st.floats(3.0, 30.0), lo=st.floats(-3.0, 3.0), decades=st.floats(0.1, 4.0))
+def test_fitted_exponent_in_range(aspect, lo, decades):
+    ring = Ring.from_aspect_ratio(aspect)
+    K, n = ring.power_law(10.0**lo, 10.0 ** (lo + decades))
+    assert 1.0 < n < 1.5 and K > 0
