@@ -16,6 +16,7 @@ Static theory of one contact (paper Sec. II, Eqs. 1-4, App. A):
 from . import paper_data
 from .contact import contact_ellipse, hertz_stiffness, minimum_contact_angle
 from .geometry import MIN_CHAIN_ASPECT_RATIO, PAPER_TUBE_RADIUS, Ring
+from .longwave import linear_sound_speed
 from .materials import MATERIALS, STAINLESS_STEEL_304, Material, get_material
 from .ring import bending_stiffness
 from .series import (
@@ -26,6 +27,13 @@ from .series import (
     n_per_mm_to_si,
     series_displacement,
     si_to_n_per_mm,
+)
+from .solitary import (
+    solitary_wave_profile,
+    solitary_wave_speed,
+    solitary_wave_speed_from_velocity,
+    solitary_wave_speed_prestressed,
+    solitary_wave_width,
 )
 
 __all__ = [
@@ -48,4 +56,10 @@ __all__ = [
     "MATERIALS",
     "STAINLESS_STEEL_304",
     "get_material",
+    "solitary_wave_speed",
+    "solitary_wave_speed_from_velocity",
+    "solitary_wave_width",
+    "solitary_wave_profile",
+    "solitary_wave_speed_prestressed",
+    "linear_sound_speed",
 ]

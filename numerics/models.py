@@ -1,0 +1,391 @@
+r"""Equations of motion of the two lattice models of the paper (Sec. III.B), vectorised.
+
+Both models are a line of point masses ("sites") joined by nearest-neighbour bonds,
+written here in one form, :class:`Lattice`:
+
+- **power-law chain** (paper Eq. power law): one site per ring; every bond is a
+  unilateral contact with force :func:`power_law_force`, [K delta^n + gamma delta_dot]_+;
+- **dual-spring chain** (paper Eq. dual-spring): two sites of mass m/2 per ring;
+  the bonds alternate between the linear, bidirectional bending spring of a ring body
+  (:func:`linear_spring_force`, F_b = K_b delta plus its dashpot) and the unilateral
+  Hertz contact between rings (:func:`power_law_force` with n = 3/2, K = K_c).
+
+Conventions (tension positive, ARCHITECTURE.md): the axis points away from the impact,
+site 0 is at the impact end, bond k joins site k to site k+1 and its extension is
+delta_k = x_{k+1} - x_k, where x is a site's displacement from the configuration in
+which every bond is just taut and unloaded.  A positive bond force pulls its two sites
+together.  With a fixed support, one more bond joins the last site to an anchor that
+does not move (displacement 0).
+
+Everything is vectorised over rings and over leading axes (a batch of runs, or
+time samples): arrays of site quantities have shape (..., n_sites), arrays of bond
+quantities (..., n_bonds).  There is no Python loop over rings.
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+
+import numpy as np
+from ringchain.theory import _validate as v
+
+__all__ = ["STANDARD_GRAVITY", "power_law_force", "linear_spring_force", "Lattice"]
+
+#: Standard acceleration of gravity, m/s^2 (CGPM 1901, exact by definition).
+STANDARD_GRAVITY = 9.80665
+
+
+def power_law_force(delta, delta_rate=0.0, *, K, n, gamma=0.0):
+    """Force of an interlocked contact in tension, with its dashpot (paper Eq. power law).
+
+    Parameters
+    ----------
+    delta : array_like
+        Contact extension u_{i+1} - u_i, m (positive: the rings pull apart).
+    delta_rate : array_like, optional
+        d(delta)/dt, m/s.
+    K : float
+        Stiffness, N/m^n (K_c in N/m^1.5 for the Hertz contact, Eq. 1).
+    n : float
+        Exponent, >= 1 (3/2 for Hertz; the fitted n of Eq. 4 for the power-law chain).
+    gamma : float, optional
+        Dashpot coefficient, N s/m, >= 0.
+
+    Returns
+    -------
+    ndarray
+        [K delta^n + gamma delta_rate]_+ where delta > 0, else 0; N, positive in tension.
+
+    Notes
+    -----
+    The paper writes [F(delta) + gamma delta_dot]_+ with F = 0 for delta < 0.  Read
+    literally, the dashpot would then act across an open contact (a closing gap with
+    delta_dot > 0 would pull); here an open contact (delta <= 0) carries no force at
+    all, and an engaged one never pushes (the bracket).  With gamma > 0 the force jumps
+    from 0 to gamma delta_dot when a contact closes -- the usual Kelvin-Voigt impact.
+
+    Examples
+    --------
+    >>> float(power_law_force(2.0, K=3.0, n=1.5))  # 3 * 2^1.5
+    8.485281374238571
+    >>> float(power_law_force(-1e-6, 5.0, K=3.0, n=1.5, gamma=1.0))  # open contact
+    0.0
+    """
+    delta = v.as_float("delta", delta)
+    delta_rate = v.as_float("delta_rate", delta_rate)
+    K = v.positive("K", K, "N/m^n")
+    n = v.in_range("n", n, 1.0, np.inf, closed_low=True, closed_high=False)
+    gamma = v.nonnegative("gamma", gamma, "N s/m")
+    engaged = delta > 0
+    force = K * np.where(engaged, delta, 0.0) ** n + gamma * delta_rate
+    return np.where(engaged, np.maximum(force, 0.0), 0.0)
+
+
+def linear_spring_force(delta, delta_rate=0.0, *, K, gamma=0.0):
+    """Force of the bidirectional bending spring of a ring body with its dashpot (Eq. 2).
+
+    Parameters
+    ----------
+    delta : array_like
+        Extension of the ring body along the chain, m (either sign).
+    delta_rate : array_like, optional
+        d(delta)/dt, m/s.
+    K : float
+        Bending stiffness K_b, N/m (:func:`ringchain.theory.bending_stiffness`).
+    gamma : float, optional
+        Dashpot coefficient gamma_b, N s/m, >= 0.
+
+    Returns
+    -------
+    ndarray
+        K delta + gamma delta_rate, N (positive in tension, negative in compression).
+
+    Examples
+    --------
+    >>> float(linear_spring_force(-2e-6, K=3e6))
+    -6.0
+    """
+    delta = v.as_float("delta", delta)
+    delta_rate = v.as_float("delta_rate", delta_rate)
+    K = v.positive("K", K, "N/m")
+    gamma = v.nonnegative("gamma", gamma, "N s/m")
+    return K * delta + gamma * delta_rate
+
+
+@dataclass(frozen=True, eq=False)
+class Lattice:
+    """Sites joined by nearest-neighbour bonds: the common form of both paper models.
+
+    Usually built by :class:`ringchain.numerics.Chain`.  Every bond k has a contact part
+    and a spring part, given per bond, so that one vectorised expression serves both
+    models: a contact bond has K_spring = gamma_spring = 0, a spring bond has
+    K_contact = gamma_contact = 0.  The force of bond k is
+
+        K_spring delta + gamma_spring delta_dot
+        + (delta > 0) [K_contact delta^n + gamma_contact delta_dot]_+.
+
+    Parameters
+    ----------
+    mass : ndarray, shape (n_sites,)
+        Inertial mass of each site, kg.
+    weight_mass : ndarray, shape (n_sites,)
+        Mass of each site that gravity acts on, kg.
+    K_contact : ndarray, shape (n_bonds,)
+        Contact stiffness of each bond, N/m^n (0 for a spring bond).
+    n : float
+        Contact exponent.
+    K_spring : ndarray, shape (n_bonds,)
+        Linear stiffness of each bond, N/m (0 for a contact bond).
+    gamma_contact, gamma_spring : ndarray, shape (n_bonds,)
+        Dashpots, N s/m.
+
+    n_bonds is n_sites - 1 (free far end) or n_sites (the last bond ties the last site to
+    a fixed anchor).
+    """
+
+    mass: np.ndarray
+    weight_mass: np.ndarray
+    K_contact: np.ndarray
+    n: float
+    K_spring: np.ndarray
+    gamma_contact: np.ndarray
+    gamma_spring: np.ndarray
+
+    def __post_init__(self):
+        for name in ("mass", "weight_mass", "K_contact", "K_spring", "gamma_contact", "gamma_spring"):
+            object.__setattr__(self, name, np.asarray(getattr(self, name), dtype=float))
+        if self.n_bonds not in (self.n_sites - 1, self.n_sites):
+            raise ValueError(
+                f"{self.n_sites} sites need {self.n_sites - 1} or {self.n_sites} bonds, got {self.n_bonds}"
+            )
+
+    @property
+    def n_sites(self) -> int:
+        return self.mass.size
+
+    @property
+    def n_bonds(self) -> int:
+        return self.K_contact.size
+
+    @property
+    def anchored(self) -> bool:
+        """Whether the last bond ties the last site to a fixed support."""
+        return self.n_bonds == self.n_sites
+
+    @functools.cached_property
+    def damped(self) -> bool:
+        """Whether any dashpot is present (the motion then depends on velocities)."""
+        return bool(np.any(self.gamma_contact > 0) or np.any(self.gamma_spring > 0))
+
+    @functools.cached_property
+    def _has_springs(self) -> bool:
+        return bool(np.any(self.K_spring > 0))
+
+    # -- kinematics ------------------------------------------------------------------
+    def extension(self, x, out=None):
+        """Bond extensions delta_k = x_{k+1} - x_k (the anchor at 0), shape (..., n_bonds)."""
+        x = np.asarray(x, dtype=float)
+        if out is None:
+            out = np.empty((*x.shape[:-1], self.n_bonds))
+        np.subtract(x[..., 1:], x[..., :-1], out=out[..., : self.n_sites - 1])
+        if self.anchored:
+            # Not np.negative: NumPy 2.4.6 returns wrong values for np.negative with a strided
+            # input and a non-contiguous out (e.g. the last column of a batch); subtract is right.
+            np.subtract(0.0, x[..., -1], out=out[..., -1])
+        return out
+
+    # -- forces ----------------------------------------------------------------------
+    def bond_forces(self, e, e_rate=None):
+        """Bond forces, N, positive in tension, from extensions (and their rates if damped)."""
+        f = np.empty_like(e)
+        self._bond_forces_into(e, e_rate, f, np.empty_like(e))
+        return f
+
+    def elastic_forces(self, e):
+        """Bond forces without the dashpots, N."""
+        f = np.empty_like(e)
+        self._bond_forces_into(e, None, f, np.empty_like(e), elastic_only=True)
+        return f
+
+    def _bond_forces_into(self, e, e_rate, f, work, elastic_only=False):
+        np.maximum(e, 0.0, out=work)
+        np.power(work, self.n, out=work)
+        work *= self.K_contact
+        if self.damped and not elastic_only:
+            work += self.gamma_contact * e_rate
+            np.maximum(work, 0.0, out=work)
+            work[e <= 0] = 0.0
+        if self._has_springs:
+            np.multiply(e, self.K_spring, out=f)
+            if self.damped and not elastic_only:
+                f += self.gamma_spring * e_rate
+            f += work
+        else:
+            f[...] = work
+
+    def accelerations(self, x, u, g=STANDARD_GRAVITY):
+        """Site accelerations, m/s^2, shape (..., n_sites), of displacements x and velocities u.
+
+        Parameters
+        ----------
+        x, u : ndarray, shape (..., n_sites)
+            Site displacements (m) and velocities (m/s) along the axis pointing away from
+            the impact (up, for the hanging chain).
+        g : float
+            Gravity, m/s^2, acting along -axis on the weight masses (0 for no gravity).
+        """
+        x = np.asarray(x, dtype=float)
+        out = np.empty_like(x)
+        self.stepper(x.shape[:-1], g)(x, u, out)
+        return out
+
+    @functools.cached_property
+    def _uniform_pattern(self):
+        """(contacts, springs, K, K_s, m, m_gravity) if the lattice is a regular chain of one
+        or two alternating bond kinds with equal masses, else None (see :meth:`stepper`)."""
+        contact, spring = self.K_contact > 0, self.K_spring > 0
+        if not spring.any() and contact.all():
+            layout = (slice(None), None)
+        elif contact[1::2].all() and spring[0::2].all() and not contact[0::2].any() and not spring[1::2].any():
+            layout = (slice(1, None, 2), slice(0, None, 2))
+        else:
+            return None
+        values = (self.K_contact[contact], self.K_spring[spring], self.mass, self.weight_mass)
+        if any(np.ptp(a) > 0 for a in values if a.size):
+            return None
+        K_s = float(self.K_spring[spring][0]) if spring.any() else 0.0
+        return (*layout, float(self.K_contact[contact][0]), K_s, float(self.mass[0]), float(self.weight_mass[0]))
+
+    def stepper(self, batch_shape, g):
+        """A function ``(x, u, out)`` writing the accelerations into ``out``.
+
+        The inner loop of the integrators: work arrays and their views are made once,
+        so a call is about ten NumPy operations on whole arrays.  For an undamped regular
+        chain (the usual case) the forces are computed per unit mass on the contact and
+        spring bonds separately; otherwise by the general expression of the class
+        docstring, and the call returns ``(e, e_rate, f)`` (extensions, their rates and
+        the bond forces) for the dissipation rate.  ``u`` is only read if the lattice is
+        damped.  One stepper must not be called from two threads at once.
+        """
+        S, nb, n = self.n_sites, self.n_bonds, self.n
+        e = np.empty((*batch_shape, nb))
+        e_head = e[..., : S - 1]
+        e_tail = e[..., S - 1] if self.anchored else None
+        # Padded forces: [0, bond 0, ..., bond nb-1, (0 if the far end is free)].  Site k
+        # is pulled up by bond k and down by bond k-1; site 0 has no bond below it.
+        padded = np.zeros((*batch_shape, S + 1))
+        f = padded[..., 1 : 1 + nb]
+        above, below = padded[..., 1:], padded[..., :-1]
+        pattern = None if self.damped else self._uniform_pattern
+
+        # Site slices: plain ones for a single run (cheaper than ``...`` indexing).
+        upper, lower, last = (slice(1, None), slice(None, -1), S - 1) if not batch_shape else (
+            (Ellipsis, slice(1, None)), (Ellipsis, slice(None, -1)), (Ellipsis, S - 1))  # fmt: skip
+
+        def extension_into(x):
+            np.subtract(x[upper], x[lower], out=e_head)
+            if e_tail is not None:
+                np.subtract(0.0, x[last], out=e_tail)  # see extension(): not np.negative
+
+        if pattern is not None:
+            contacts, springs, K, K_s, m, m_g = pattern
+            K_per_mass, K_s_per_mass, g_acc = K / m, K_s / m, g * m_g / m
+            e_c, f_c = e[..., contacts], f[..., contacts]
+            e_s, f_s = (e[..., springs], f[..., springs]) if springs is not None else (None, None)
+            subtract, maximum, power, multiply = np.subtract, np.maximum, np.power, np.multiply
+
+            def accelerations_into(x, u, out):
+                subtract(x[upper], x[lower], out=e_head)
+                if e_tail is not None:
+                    subtract(0.0, x[last], out=e_tail)  # see extension(): not np.negative
+                maximum(e_c, 0.0, out=f_c)
+                power(f_c, n, out=f_c)
+                multiply(f_c, K_per_mass, out=f_c)
+                if e_s is not None:
+                    multiply(e_s, K_s_per_mass, out=f_s)
+                subtract(above, below, out=out)
+                subtract(out, g_acc, out=out)
+
+            return accelerations_into
+
+        e_rate = np.empty((*batch_shape, nb)) if self.damped else None
+        work = np.empty((*batch_shape, nb))
+        inv_mass = 1.0 / self.mass
+        gravity_acc = g * self.weight_mass * inv_mass
+
+        def accelerations_into(x, u, out):
+            extension_into(x)
+            if e_rate is not None:
+                self.extension(u, out=e_rate)
+            self._bond_forces_into(e, e_rate, f, work)
+            np.subtract(above, below, out=out)
+            np.multiply(out, inv_mass, out=out)
+            np.subtract(out, gravity_acc, out=out)
+            return e, e_rate, f
+
+        return accelerations_into
+
+    # -- energy ----------------------------------------------------------------------
+    def kinetic_energy(self, u):
+        """Sum of m u^2/2 over sites, J, shape (...)."""
+        return 0.5 * np.sum(self.mass * np.square(u), axis=-1)
+
+    def contact_energy(self, e):
+        """Elastic energy of the contacts, sum of K delta_+^(n+1)/(n+1), J."""
+        d = np.maximum(e, 0.0)
+        return np.sum(self.K_contact * d ** (self.n + 1.0), axis=-1) / (self.n + 1.0)
+
+    def spring_energy(self, e):
+        """Elastic energy of the linear springs, sum of K_s delta^2/2, J."""
+        return 0.5 * np.sum(self.K_spring * np.square(e), axis=-1)
+
+    def gravity_energy(self, x, g=STANDARD_GRAVITY):
+        """Potential energy of the weights, sum of m_gravity g x, J (zero at x = 0)."""
+        return g * np.sum(self.weight_mass * x, axis=-1)
+
+    def dissipation_rate(self, e, e_rate, f=None):
+        """Power taken out by the dashpots, sum of (F - F_elastic) delta_dot, W; always >= 0.
+
+        Where the bracket of a contact is active, F - F_elastic = gamma delta_dot, so the
+        power is gamma delta_dot^2; where it clips the force to zero (the dashpot would
+        push), F - F_elastic = -K delta^n with delta_dot < 0, so the power is again >= 0.
+        """
+        if f is None:
+            f = self.bond_forces(e, e_rate)
+        return np.sum((f - self.elastic_forces(e)) * e_rate, axis=-1)
+
+    # -- first-order system for scipy --------------------------------------------------
+    #: Lower and upper bandwidth of the Jacobian of :meth:`first_order_rhs` (site-interleaved
+    #: state): the velocity of site k depends on x and u of sites k-1, k, k+1.
+    BANDWIDTH = (3, 2)
+
+    def first_order_rhs(self, n_runs: int, g: float):
+        """Right-hand side f(t, y) of a batch of ``n_runs`` runs as one flat state.
+
+        The state is [x, u] interleaved per site, shape (n_runs, n_sites, 2), flattened,
+        then the energy W dissipated so far by each run (only if the lattice is damped).
+        Interleaving keeps the Jacobian banded (:attr:`BANDWIDTH`), which implicit and
+        stiff-switching solvers exploit; the W entries lie outside the band, which only
+        makes the Newton matrix approximate (W feeds back into nothing).
+        """
+        S = self.n_sites
+        n_xu = 2 * n_runs * S
+        shape = () if n_runs == 1 else (n_runs,)  # one run: plain 1-d views, no reshaping
+        accelerations_into = self.stepper(shape, g)
+        damped = self.damped
+        x_part, u_part = slice(0, n_xu, 2), slice(1, n_xu, 2)
+
+        def rhs(t, y):
+            dy = np.empty_like(y)
+            u = y[u_part]
+            dy[x_part] = u
+            x, a = y[x_part], dy[u_part]
+            if shape:
+                x, u, a = x.reshape(n_runs, S), u.reshape(n_runs, S), a.reshape(n_runs, S)
+            forces = accelerations_into(x, u, a)
+            if damped:
+                dy[n_xu:] = self.dissipation_rate(*forces)
+            return dy
+
+        return rhs

@@ -1,0 +1,498 @@
+"""Parameter sweeps: grids of chains and impacts, run through any executor, one CSV row per point.
+
+A sweep point (:class:`Point`) is one ring geometry (R/r, tube radius, contact angle,
+material), one lattice model, one chain length and, optionally, one impact (a drop
+height or an impact velocity).  For each point :func:`sweep` reports the static theory
+of the contact (K_c, K_b, crossover force, fitted power law, paper Eqs. 1-4) and, when
+there is an impact, what the paper measured on its chain (Sec. III.A): the peak forces
+at two sensor rings, their arrival times, the time of flight and wave speed, beside the
+solitary-wave speed of Eq. (vsfm) at the measured peak force.
+
+Scale.  Points that share a chain (everything but the impact) are integrated together
+by :func:`~ringchain.numerics.simulate_batch`, in chunks of ``batch_size`` runs, so a
+sweep over many drop heights costs little more than a few runs
+(benchmarks/bench_batch.py).  The chunks are independent tasks submitted to a
+:class:`concurrent.futures.Executor`: local processes by default, or a Dask cluster
+without any code change::
+
+    from distributed import Client
+    rows = sweep(grid, executor=Client("tcp://scheduler:8786").get_executor())
+
+Determinism.  The grid fixes the chunks (in grid order, independent of the executor and
+of the number of workers) and the rows come back in grid order, so the same grid gives
+the same rows, and the same CSV, whatever runs it.
+"""
+
+from __future__ import annotations
+
+import concurrent.futures as cf
+import csv
+import functools
+import io
+import itertools
+import math
+import multiprocessing
+import os
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, fields
+
+import numpy as np
+from ringchain.theory import PAPER_TUBE_RADIUS, Ring, paper_data
+from ringchain.theory import _validate as v
+
+from . import signals
+from .chain import MODELS, Chain, _choice, _count
+from .models import STANDARD_GRAVITY
+from .solve import simulate_batch
+
+__all__ = [
+    "Point",
+    "AXES",
+    "expand",
+    "sweep",
+    "run_points",
+    "write_csv",
+    "default_t_end",
+    "InlineExecutor",
+    "DEFAULT_BATCH_SIZE",
+    "DEFAULT_SAMPLES",
+    "SWEEP_METHOD",
+]
+
+#: Runs integrated together in one task (one :func:`simulate_batch` call).
+DEFAULT_BATCH_SIZE = 64
+
+#: Samples of each force record (evenly spaced over the duration).  Peak forces and
+#: times of flight read from 1001 samples differ from 8001 by < 1e-4 relative on the
+#: paper's chain, below the error of the Verlet integration itself (about 3e-4).
+DEFAULT_SAMPLES = 1001
+
+#: Integrator of the sweeps: fixed-step velocity Verlet.  Its cost per step does not
+#: depend on the batch's contents, so a batch of B runs costs far less than B runs; an
+#: adaptive method shares one step size across the batch, and the contact openings of
+#: every run shrink it (benchmarks/bench_batch.py).
+SWEEP_METHOD = "verlet"
+
+#: Times :func:`run_points` may double a default duration that ends inside the pulse.
+_MAX_DOUBLINGS = 4
+
+
+@dataclass(frozen=True)
+class Point:
+    """One point of a sweep: a chain of identical rings and, optionally, one impact.
+
+    Parameters
+    ----------
+    R_over_r : float
+        Aspect ratio R/r of the rings; >= 3 for a chain (and > 2 for one contact).
+    r : float
+        Tube radius, m (default the paper's 2.5 mm).
+    angle : float
+        Contact angle between adjacent ring planes, rad (default pi/2, Table I).
+    material : str
+        Material preset key (:data:`ringchain.theory.MATERIALS`).
+    model : {"dual-spring", "power-law"}
+        Lattice model (paper Sec. III.B); the power-law chain takes K and n fitted to the
+        series law of the ring (Eq. 4).
+    n_rings : int
+        Rings in the chain, ring 0 at the impact end, hanging from a fixed support.
+    m_eff_ratio : float
+        Inertial mass over ring mass, m_eff/m0 in (0, 1] (the paper fits 0.33-0.37,
+        Tables I-II); gravity acts on the full mass m0.
+    drop_height : float, optional
+        Free-fall height of ring 0, m (> 0).
+    impact_velocity : float, optional
+        Speed of ring 0 at impact, m/s (> 0); give this or ``drop_height``, or neither
+        for the static theory only.
+    sensors : tuple of int
+        Two sensor rings counted from the impact, near first (default rings 6 and 12).
+
+    Examples
+    --------
+    >>> point = Point(R_over_r=9.0, drop_height=0.05)
+    >>> round(point.ring.R * 1e3, 2), point.dynamic
+    (22.5, True)
+    """
+
+    R_over_r: float = 9.0
+    r: float = PAPER_TUBE_RADIUS
+    angle: float = math.pi / 2
+    material: str = "stainless"
+    model: str = "dual-spring"
+    n_rings: int = paper_data.CHAIN_RINGS
+    m_eff_ratio: float = 1.0
+    drop_height: float | None = None
+    impact_velocity: float | None = None
+    sensors: tuple = paper_data.SENSOR_RINGS
+
+    def __post_init__(self):
+        set_ = functools.partial(object.__setattr__, self)
+        set_("R_over_r", float(v.positive("R/r", self.R_over_r)))
+        set_("r", float(v.positive("r", self.r, "m")))
+        set_("angle", float(v.as_float("angle", self.angle)))
+        set_("m_eff_ratio", float(v.in_range("m_eff_ratio", self.m_eff_ratio, 0.0, 1.0)))
+        set_("model", _choice("model", str(self.model), MODELS))
+        set_("n_rings", _count("n_rings", self.n_rings, 2))
+        if self.drop_height is not None and self.impact_velocity is not None:
+            raise ValueError("give a drop height or an impact velocity, not both")
+        if self.drop_height is not None:
+            set_("drop_height", float(v.positive("drop height", self.drop_height, "m")))
+        if self.impact_velocity is not None:
+            set_("impact_velocity", float(v.positive("impact velocity", self.impact_velocity, "m/s")))
+        sensors = tuple(int(s) for s in self.sensors)
+        if len(sensors) != 2 or not 0 <= sensors[0] < sensors[1]:
+            raise ValueError(f"sensors must be two rings, near then far, counted from 0, got {self.sensors!r}")
+        set_("sensors", sensors)
+        ring = self.ring  # validates R > 2 r, the angle and the material, with errors that say why
+        if self.dynamic:
+            ring.check_chain()
+            if sensors[1] >= self.n_rings:
+                raise ValueError(
+                    f"sensor ring {sensors[1]} is not in a chain of {self.n_rings} rings (0..{self.n_rings - 1})"
+                )
+
+    @property
+    def ring(self) -> Ring:
+        """The ring of this point (R = R/r x r)."""
+        return Ring.from_aspect_ratio(self.R_over_r, r=self.r, material=self.material, angle=self.angle)
+
+    @property
+    def dynamic(self) -> bool:
+        """Whether the point has an impact to simulate."""
+        return self.drop_height is not None or self.impact_velocity is not None
+
+    def chain(self) -> Chain:
+        """The hanging chain of this point (:meth:`Chain.from_ring`)."""
+        return Chain.from_ring(self.ring, self.n_rings, self.model, m_eff_ratio=self.m_eff_ratio)
+
+    @property
+    def speed(self) -> float | None:
+        """Impact speed of ring 0, m/s: sqrt(2 g h) for a drop."""
+        if self.drop_height is not None:
+            return math.sqrt(2.0 * STANDARD_GRAVITY * self.drop_height)
+        return self.impact_velocity
+
+    @property
+    def chain_key(self) -> tuple:
+        """What the points integrated together share: all but the impact's size."""
+        kind = "drop" if self.drop_height is not None else "velocity" if self.impact_velocity is not None else None
+        return (*(getattr(self, f.name) for f in fields(self) if f.name not in _IMPACT), kind)
+
+
+_IMPACT = ("drop_height", "impact_velocity")
+
+#: Names a grid may vary (the fields of :class:`Point`).
+AXES = tuple(f.name for f in fields(Point))
+
+
+def expand(grid) -> list[Point]:
+    """The points of a grid, in a fixed order.
+
+    Parameters
+    ----------
+    grid : mapping or iterable
+        A mapping from axis names (:data:`AXES`) to a value or a sequence of values: the
+        Cartesian product, the last axis varying fastest (axes in the mapping's order);
+        or an iterable of :class:`Point` s or of mappings, one per point.
+
+    Returns
+    -------
+    list of Point
+
+    Examples
+    --------
+    >>> points = expand({"R_over_r": [6.0, 9.0], "drop_height": [0.01, 0.05]})
+    >>> [(p.R_over_r, p.drop_height) for p in points]
+    [(6.0, 0.01), (6.0, 0.05), (9.0, 0.01), (9.0, 0.05)]
+    """
+    if isinstance(grid, Mapping):
+        _check_axes(grid)
+        names = list(grid)
+        values = [_values(name, grid[name]) for name in names]
+        return [Point(**dict(zip(names, combo, strict=True))) for combo in itertools.product(*values)]
+    points = []
+    for item in grid:
+        if isinstance(item, Point):
+            points.append(item)
+        elif isinstance(item, Mapping):
+            _check_axes(item)
+            points.append(Point(**item))
+        else:
+            raise TypeError(f"a grid is a mapping of axes or an iterable of points, got an item {item!r}")
+    return points
+
+
+def _check_axes(mapping):
+    unknown = [name for name in mapping if name not in AXES]
+    if unknown:
+        raise ValueError(f"unknown sweep axis {unknown[0]!r}; axes: {', '.join(AXES)}")
+
+
+def _values(name, value) -> list:
+    if name == "sensors":  # a pair is one value, a list of pairs several
+        return [value] if np.ndim(value) == 1 else list(value)
+    if isinstance(value, str) or np.ndim(value) == 0:
+        return [value]
+    values = list(value)
+    if not values:
+        raise ValueError(f"axis {name!r} has no values")
+    return values
+
+
+# -- running -------------------------------------------------------------------------------------
+def default_t_end(chain: Chain, speeds, sensors) -> float:
+    """Duration that lets the leading pulse pass the far sensor, s.
+
+    The time the long-wave solitary wave of the chain's power law (Eq. vsfm) needs to
+    carry its front 1.5 times the distance to ring ``sensors[1]`` plus half a wave width
+    (:func:`ringchain.theory.solitary_wave_width`), at a force estimate below the actual
+    peak (so the estimated speed is low and the duration long): a quarter of the peak
+    force of a two-ring collision at the smallest impact speed, and at least the weight
+    of one ring (the gravity prestress keeps weak waves fast).  For the dual-spring
+    chain the power law is the one fitted to its contact and bending springs in series
+    (Eq. 4).  :func:`run_points` doubles the duration if a pulse is still passing the far
+    sensor at the end.
+    """
+    from ringchain.theory import fit_power_law, solitary_wave_speed, solitary_wave_width
+
+    if chain.model == "dual-spring":
+        K, n = (float(x) for x in fit_power_law(chain.K_c, chain.K_b))
+    else:
+        K, n = chain.K, chain.n
+    speed = float(np.min(speeds))
+    # Two rings of mass m colliding at relative speed v store m v^2/4 at the peak of K delta^n.
+    delta = ((n + 1.0) * 0.25 * chain.m * speed**2 / K) ** (1.0 / (n + 1.0))
+    force = max(0.25 * K * delta**n, chain.m_gravity * STANDARD_GRAVITY)
+    V = float(solitary_wave_speed(force, K, n, chain.a, chain.m))
+    width = float(solitary_wave_width(n, chain.a))
+    return (1.5 * sensors[1] * chain.a + 0.5 * width) / V
+
+
+def _statics(point: Point) -> dict:
+    ring = point.ring
+    K, n = ring.power_law()
+    return {
+        "R_over_r": point.R_over_r,
+        "R_m": ring.R,
+        "r_m": ring.r,
+        "angle_rad": point.angle,
+        "angle_deg": round(math.degrees(point.angle), 9),  # 60, not 59.99999999999999 (radians(60) rounds)
+        "material": ring.material.name,
+        "model": point.model,
+        "n_rings": point.n_rings,
+        "m_eff_ratio": point.m_eff_ratio,
+        "drop_height_m": point.drop_height,
+        "impact_velocity_m_s": point.speed,
+        "ring_mass_kg": ring.mass,
+        "spacing_m": ring.spacing,
+        "K_c_N_m1.5": ring.K_c,
+        "K_b_N_m": ring.K_b,
+        "crossover_force_N": ring.crossover_force,
+        "K_fit_N_mn": K,
+        "n_fit": n,
+    }
+
+
+def _dynamics(point: Point, run, K: float, n: float) -> dict:
+    from ringchain.theory import solitary_wave_speed
+
+    near, far = point.sensors
+    F_near = run.peak_force(near)
+    return {
+        "sensor_near": near,
+        "sensor_far": far,
+        "peak_force_near_N": F_near,
+        "peak_force_far_N": run.peak_force(far),
+        "arrival_near_s": run.arrival_time(near),
+        "arrival_far_s": run.arrival_time(far),
+        "time_of_flight_s": run.time_of_flight(near, far),
+        "wave_speed_m_s": run.wave_speed(near, far),
+        "V_s_theory_m_s": float(solitary_wave_speed(F_near, K, n, run.chain.a, run.chain.m)),
+        "t_end_s": float(run.t[-1]),
+    }
+
+
+def run_points(points, *, t_end=None, n_samples=DEFAULT_SAMPLES, method=SWEEP_METHOD, **solver):
+    """Rows of points that share a chain (one task of :func:`sweep`): one batch, one row each.
+
+    Every point must have the same :attr:`Point.chain_key`.  ``t_end`` (s) defaults to
+    :func:`default_t_end` at the smallest impact of the points, doubled (up to
+    four times) while a leading pulse has not passed the far sensor by the end; a
+    ``t_end`` given that is too short raises ``ValueError``.  ``n_samples``, ``method``
+    and ``solver`` (e.g. ``dt``, ``rtol``) go to :func:`~ringchain.numerics.simulate_batch`.
+    """
+    points = list(points)
+    keys = {p.chain_key for p in points}
+    if len(keys) != 1:
+        raise ValueError("run_points takes points that share one chain")
+    rows = [_statics(p) for p in points]
+    first = points[0]
+    if not first.dynamic:
+        return rows
+    chain = first.chain()
+    speeds = [p.speed for p in points]
+    retries = 0 if t_end is not None else _MAX_DOUBLINGS
+    if t_end is None:
+        t_end = default_t_end(chain, speeds, first.sensors)
+    impact = {"drop_heights": [p.drop_height for p in points]} if first.drop_height is not None else {
+        "impact_velocities": speeds}  # fmt: skip
+    while True:
+        batch = simulate_batch(chain, t_end, **impact, n_samples=n_samples, method=method, **solver)
+        if all(_pulse_complete(run, first.sensors[1]) for run in batch):
+            break
+        if retries == 0:
+            raise ValueError(
+                f"the pulse is still passing ring {first.sensors[1]} at t_end = {t_end:g} s; give a longer t_end"
+            )
+        retries -= 1
+        t_end *= 2.0
+    # Eq. (vsfm) with the chain's power law, or for the dual-spring chain the one fitted to its springs.
+    K, n = (chain.K, chain.n) if chain.model == "power-law" else (rows[0]["K_fit_N_mn"], rows[0]["n_fit"])
+    for row, point, run in zip(rows, points, batch, strict=True):
+        row.update(_dynamics(point, run, K, n))
+    return rows
+
+
+def _pulse_complete(run, ring: int) -> bool:
+    """Whether the leading pulse at the sensor of ``ring`` falls below its threshold before the end."""
+    return signals.leading_pulse(run.t, run.sensor(ring)).stop < run.t.size
+
+
+class InlineExecutor(cf.Executor):
+    """An Executor that runs each task at once, in the calling process (no pool, plain tracebacks)."""
+
+    def submit(self, fn, /, *args, **kwargs):
+        future = cf.Future()
+        try:
+            future.set_result(fn(*args, **kwargs))
+        except Exception as exc:  # handed to the caller through the future, as any Executor does
+            future.set_exception(exc)
+        return future
+
+
+def _default_executor(n_tasks: int, max_workers: int | None) -> cf.Executor:
+    if max_workers == 0:
+        return InlineExecutor()
+    workers = max_workers or os.cpu_count() or 1
+    # "spawn": a fresh interpreter per worker, the same on every platform and safe with threads.
+    return cf.ProcessPoolExecutor(max(1, min(workers, n_tasks)), mp_context=multiprocessing.get_context("spawn"))
+
+
+def sweep(
+    grid,
+    executor: cf.Executor | None = None,
+    *,
+    batch_size: int = DEFAULT_BATCH_SIZE,
+    max_workers: int | None = None,
+    progress: bool = False,
+    t_end: float | None = None,
+    n_samples: int = DEFAULT_SAMPLES,
+    method: str = SWEEP_METHOD,
+    **solver,
+) -> list[dict]:
+    """Run every point of a grid and return one row (a dict) per point, in grid order.
+
+    Parameters
+    ----------
+    grid : mapping or iterable
+        Axes and values, or points (see :func:`expand`).
+    executor : concurrent.futures.Executor, optional
+        Where the tasks run: any Executor, e.g. a Dask ``Client(...).get_executor()``.
+        Default: a pool of local processes, shut down at the end.
+    batch_size : int, optional
+        Most runs of one chain integrated together in one task.  Part of the grid's
+        definition: it fixes the chunks, so changing it may change the last digits.
+    max_workers : int, optional
+        Processes of the default pool (default: the number of CPUs); 0 runs every task
+        in this process (:class:`InlineExecutor`).
+    progress : bool, optional
+        Show a tqdm progress bar (on stderr).
+    t_end : float, optional
+        Duration of every run, s (default per task, :func:`default_t_end`).
+    n_samples, method, **solver
+        Passed to :func:`~ringchain.numerics.simulate_batch` (default: 1001 samples,
+        fixed-step Verlet with the step it picks for the fastest run of each task).
+
+    Returns
+    -------
+    list of dict
+        Columns with units in their names: the point, the static theory (K_c, K_b,
+        crossover force, fitted K and n of Eq. 4) and, for a point with an impact, the
+        sensor readings and V_s of Eq. (vsfm) at the near sensor's peak force.
+
+    Examples
+    --------
+    >>> rows = sweep({"R_over_r": [6.0, 9.0]}, InlineExecutor())  # static theory only
+    >>> [round(row["n_fit"], 3) for row in rows]
+    [1.225, 1.107]
+    """
+    from tqdm import tqdm
+
+    if isinstance(batch_size, bool) or int(batch_size) != batch_size or batch_size < 1:
+        raise ValueError(f"batch_size must be a positive integer, got {batch_size!r}")
+    if t_end is not None:
+        t_end = float(v.positive("t_end", t_end, "s"))
+    points = expand(grid)
+    groups: dict[tuple, list[int]] = {}
+    for i, point in enumerate(points):
+        groups.setdefault(point.chain_key, []).append(i)
+    tasks = [idx[k : k + int(batch_size)] for idx in groups.values() for k in range(0, len(idx), int(batch_size))]
+    options = {"t_end": t_end, "n_samples": n_samples, "method": method, **solver}
+    own = executor is None
+    if own:
+        executor = _default_executor(len(tasks), max_workers)
+    rows: list[dict | None] = [None] * len(points)
+    try:
+        futures = {executor.submit(run_points, [points[i] for i in task], **options): task for task in tasks}
+        with tqdm(total=len(points), disable=not progress, unit="point", desc="sweep") as bar:
+            for future in cf.as_completed(futures):
+                task = futures[future]
+                for i, row in zip(task, future.result(), strict=True):
+                    rows[i] = row
+                bar.update(len(task))
+    finally:
+        if own:
+            executor.shutdown(cancel_futures=True)
+    return rows
+
+
+def write_csv(rows: Iterable[dict], file=None) -> str | None:
+    """Write rows as CSV: the union of their columns in first-seen order, floats exactly.
+
+    Floats are written as Python's shortest repr (they read back to the same double), so
+    equal rows give byte-identical files.
+
+    Parameters
+    ----------
+    rows : iterable of dict
+    file : str, path or text file, optional
+        Where to write; default: return the CSV text.
+    """
+    rows = list(rows)
+    columns: dict[str, None] = {}
+    for row in rows:
+        columns.update(dict.fromkeys(row))
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    writer.writerow(columns)
+    for row in rows:
+        writer.writerow([_cell(row.get(c)) for c in columns])
+    text = buffer.getvalue()
+    if file is None:
+        return text
+    if hasattr(file, "write"):
+        file.write(text)
+    else:
+        with open(file, "w", newline="") as handle:
+            handle.write(text)
+    return None
+
+
+def _cell(value) -> str:
+    if value is None:
+        return ""
+    if isinstance(value, float | np.floating):
+        return repr(float(value))
+    if isinstance(value, np.integer):
+        return str(int(value))
+    return str(value)

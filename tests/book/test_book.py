@@ -1,0 +1,212 @@
+"""The book: table of contents, citations, figures of the built site, and what a browser shows.
+
+The built site is ``book/_build/html``.  If it is missing or older than any source of the book
+or of the package, the fixture builds it with ``book/build.sh`` (every page executed, warnings
+fatal), which needs ``pip install -e ".[book]"`` and npm.
+"""
+
+from __future__ import annotations
+
+import html.parser
+import importlib.util
+import os
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+BOOK = ROOT / "book"
+SITE = BOOK / "_build" / "html"
+
+#: Pages whose screenshots the issue asks for: the contact chapter and the lattice chapter.
+SCREENSHOT_PAGES = ("contact", "lattice")
+
+
+def toc_files() -> list[str]:
+    return re.findall(r"^\s*(?:-\s*)?(?:file|root):\s*(\S+)\s*$", (BOOK / "_toc.yml").read_text(), flags=re.M)
+
+
+def chapter_sources() -> list[Path]:
+    return sorted(p for p in BOOK.glob("*.md") if p.name != "README.md")
+
+
+def declared_figures(page: Path) -> list[str]:
+    """Names of the figures a page declares in its code cells (``mystnb: figure: name: ...``)."""
+    return re.findall(r"^\s+name:\s*(fig-[\w-]+)\s*$", page.read_text(), flags=re.M)
+
+
+def is_notebook(page: Path) -> bool:
+    return "```{code-cell}" in page.read_text()
+
+
+# --- sources -------------------------------------------------------------------------------------
+
+
+def test_every_chapter_is_in_the_table_of_contents_and_back():
+    listed = toc_files()
+    assert len(listed) == len(set(listed)), "a page is listed twice in _toc.yml"
+    on_disk = {p.stem for p in chapter_sources()}
+    assert set(listed) == on_disk
+    # The nine chapters of the issue, in order, plus the landing page and the bibliography.
+    assert listed == [
+        "index",
+        "quickstart",
+        "contact",
+        "bending",
+        "nonlinearity",
+        "longwave",
+        "solitary",
+        "lattice",
+        "theory_vs_lattice",
+        "paper_notes",
+        "bibliography",
+    ]
+
+
+def test_every_citation_is_in_the_bibliography():
+    keys = set(re.findall(r"^@\w+\{([^,]+),", (BOOK / "references.bib").read_text(), flags=re.M))
+    cited = set()
+    for page in chapter_sources():
+        for group in re.findall(r"\{cite(?::\w+)?\}`([^`]+)`", page.read_text()):
+            cited.update(k.strip() for k in group.split(","))
+    assert cited, "no page cites anything"
+    assert cited <= keys, f"unknown keys: {sorted(cited - keys)}"
+
+
+def test_displayed_equations_come_from_the_package():
+    """No page types a display equation: each one is sympy.latex of an expression of the package."""
+    for page in chapter_sources():
+        text = page.read_text()
+        assert "$$" not in text, page.name
+        assert "```{math}" not in text, page.name
+        assert "\\begin{equation" not in text, page.name
+
+
+def test_mathjax_is_never_committed_and_never_in_static():
+    # Jupyter Book adds a <script> for every .js below book/_static; MathJax lives in _static_mathjax.
+    assert not (BOOK / "_static").exists()
+    ignored = (ROOT / ".gitignore").read_text().split()
+    assert "book/_static_mathjax/" in ignored and "book/_build/" in ignored
+
+
+# --- the built site --------------------------------------------------------------------------------
+
+
+def _newest_source_mtime() -> float:
+    paths = [*BOOK.glob("*.md"), *BOOK.glob("*.yml"), *BOOK.glob("*.py")]
+    paths += [BOOK / "references.bib", BOOK / "matplotlibrc"]
+    paths += [*(ROOT / "theory").glob("*.py"), *(ROOT / "numerics").glob("*.py")]
+    return max(p.stat().st_mtime for p in paths)
+
+
+@pytest.fixture(scope="session")
+def site() -> Path:
+    index = SITE / "index.html"
+    if not index.is_file() or index.stat().st_mtime < _newest_source_mtime():
+        if importlib.util.find_spec("jupyter_book") is None:
+            pytest.skip('the book is not built and Jupyter Book is not installed (pip install -e ".[book]")')
+        env = {k: v for k, v in os.environ.items() if k != "MPLBACKEND"}
+        result = subprocess.run(["bash", str(BOOK / "build.sh")], env=env, capture_output=True, text=True)
+        assert result.returncode == 0, result.stdout[-5000:] + result.stderr[-5000:]
+    return SITE
+
+
+class _Figures(html.parser.HTMLParser):
+    """Collects, for every <figure id=...>, the src of the images inside it."""
+
+    def __init__(self):
+        super().__init__()
+        self.images: dict[str, list[str]] = {}
+        self._open: list[str | None] = []
+
+    def handle_starttag(self, tag, attrs):
+        attrs = dict(attrs)
+        if tag == "figure":
+            self._open.append(attrs.get("id"))
+            if attrs.get("id"):
+                self.images.setdefault(attrs["id"], [])
+        elif tag == "img" and self._open and self._open[-1]:
+            self.images[self._open[-1]].append(attrs.get("src", ""))
+
+    def handle_endtag(self, tag):
+        if tag == "figure" and self._open:
+            self._open.pop()
+
+
+@pytest.mark.slow
+def test_every_page_was_built_and_executed(site):
+    for page in chapter_sources():
+        built = site / f"{page.stem}.html"
+        assert built.is_file(), f"{page.name} produced no page"
+        if is_notebook(page):
+            text = built.read_text()
+            assert 'class="cell_output' in text, f"{page.name}: no cell produced output"
+            assert "Traceback" not in text, f"{page.name}: a cell shows a traceback"
+
+
+@pytest.mark.slow
+def test_every_page_produced_its_figures(site):
+    declared_total = 0
+    for page in chapter_sources():
+        names = declared_figures(page)
+        declared_total += len(names)
+        parser = _Figures()
+        parser.feed((site / f"{page.stem}.html").read_text())
+        for name in names:
+            images = parser.images.get(name)
+            assert images, f"{page.name}: figure {name} has no image"
+            for src in images:
+                image = site / src
+                # A matplotlib figure is tens of kB; an empty or broken one is a few hundred bytes.
+                assert image.is_file() and image.stat().st_size > 5000, f"{page.name}: {name} -> {src}"
+    # Figures 2 and 3 of the paper and the contact-ellipse figure at least.
+    assert declared_total >= 4
+
+
+@pytest.mark.slow
+def test_math_is_served_by_the_site_itself(site):
+    for page in chapter_sources():
+        text = (site / f"{page.stem}.html").read_text()
+        scripts = re.findall(r'<script[^>]*\ssrc="([^"]+)"', text)
+        assert not [s for s in scripts if re.match(r"(https?:)?//", s)], f"{page.name} loads a remote script"
+        if "\\(" in text or "\\[" in text:
+            assert any("_static/mathjax/tex-chtml.js" in s for s in scripts), page.name
+    assert (site / "_static" / "mathjax" / "tex-chtml.js").is_file()
+
+
+# --- what a browser shows ----------------------------------------------------------------------
+
+
+def _chromium() -> str | None:
+    return shutil.which("chromium") or shutil.which("chromium-browser")
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(_chromium() is None, reason="needs the Debian package chromium (apt-get install chromium)")
+def test_browser_shows_typeset_math_and_figures(site, tmp_path):
+    """Headless Chromium renders the contact and lattice chapters from the site served on 127.0.0.1."""
+    from PIL import Image
+
+    result = subprocess.run(
+        ["bash", str(BOOK / "screenshot.sh"), str(tmp_path), *SCREENSHOT_PAGES, "--dom"],
+        capture_output=True,
+        text=True,
+        timeout=600,
+    )
+    assert result.returncode == 0, result.stderr
+    for page in SCREENSHOT_PAGES:
+        dom = (tmp_path / f"{page}.dom.html").read_text()
+        # MathJax replaces every \( ... \) and \[ ... \] by an <mjx-container>; none may be left raw.
+        typeset = dom.count("<mjx-container")
+        assert typeset > 10, f"{page}: only {typeset} typeset formulas"
+        assert "<mjx-merror" not in dom, f"{page}: MathJax reports a TeX error"
+        figures = re.findall(r'<figure[^>]*id="(fig-[\w-]+)"', dom)
+        assert set(figures) == set(declared_figures(BOOK / f"{page}.md")), page
+        picture = Image.open(tmp_path / f"{page}.png").convert("RGB")
+        assert picture.size[0] == 1280
+        # A page with figures and typeset math has thousands of colours; a blank or error page a handful.
+        colours = picture.getcolors(maxcolors=picture.size[0] * picture.size[1])
+        assert len(colours) > 500, f"{page}: screenshot looks empty"

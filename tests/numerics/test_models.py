@@ -1,0 +1,171 @@
+"""The lattice right-hand sides are the paper's Eqs. (power law) and (dual-spring)."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from ringchain.numerics import Chain, Lattice, linear_spring_force, power_law_force
+
+G = 9.81
+
+
+def test_power_law_force_values():
+    assert power_law_force(2.0, K=3.0, n=1.5) == pytest.approx(3.0 * 2.0**1.5, rel=1e-15)
+    # A dashpot inside the bracket adds gamma delta_dot while engaged ...
+    assert power_law_force(1.0, 2.0, K=3.0, n=1.2, gamma=0.5) == pytest.approx(4.0, rel=1e-15)
+    # ... the bracket clips a negative total to zero (never adhesive) ...
+    assert power_law_force(1.0, -10.0, K=3.0, n=1.2, gamma=0.5) == 0.0
+    # ... and an open contact carries nothing, however fast it closes.
+    assert power_law_force(-1e-9, 100.0, K=3.0, n=1.5, gamma=0.5) == 0.0
+    assert power_law_force(0.0, 100.0, K=3.0, n=1.5, gamma=0.5) == 0.0
+
+
+def test_linear_spring_is_bidirectional():
+    assert linear_spring_force(-2.0, K=3.0) == -6.0
+    assert linear_spring_force(2.0, -1.0, K=3.0, gamma=0.5) == 5.5
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "message"),
+    [(dict(K=-1.0, n=1.5), "K must be positive"), (dict(K=1.0, n=0.9), "n must lie in"),
+     (dict(K=1.0, n=1.5, gamma=-1.0), "gamma must be non-negative")],
+)  # fmt: skip
+def test_power_law_force_validates(kwargs, message):
+    with pytest.raises(ValueError, match=message):
+        power_law_force(1.0, **kwargs)
+
+
+@settings(max_examples=50, deadline=None)
+@given(
+    delta=st.floats(-1e-3, 1e-3), rate=st.floats(-10.0, 10.0), n=st.floats(1.0, 2.0), gamma=st.floats(0.0, 100.0)
+)
+def test_contact_never_pushes(delta, rate, n, gamma):
+    assert power_law_force(delta, rate, K=1e7, n=n, gamma=gamma) >= 0.0
+
+
+def paper_power_law(x, u, K, n, gamma, m, m_g, anchored):
+    """Eq. (power law) written as printed, site by site, in the paper's compression form.
+
+    The paper's displacement is minus ours (its axis points towards the impact), so its
+    F(u_{i-1} - u_i) is evaluated at U_{i-1} - U_i with U = -x.
+    """
+    U, dU = -x, -u
+    N = len(x)
+
+    def bracket(d, dd):  # [F(d) + gamma dd]_+, F = K d^n for d > 0 (open contact: no force)
+        return max(K * d**n + gamma * dd, 0.0) if d > 0 else 0.0
+
+    acc = np.empty(N)
+    for i in range(N):
+        below = bracket(U[i - 1] - U[i], dU[i - 1] - dU[i]) if i > 0 else 0.0
+        if i < N - 1:
+            above = bracket(U[i] - U[i + 1], dU[i] - dU[i + 1])
+        else:  # the support: a contact with a site that does not move
+            above = bracket(U[i], dU[i]) if anchored else 0.0
+        acc[i] = (below - above) / m
+    return -acc - G * m_g / m  # back to our axis, gravity pulling towards the impact
+
+
+def paper_dual_spring(x, u, K_c, K_b, gamma_c, gamma_b, m, m_g, anchored):
+    """Eq. (dual-spring) written as printed for cells (u_i, w_i), in the paper's sign.
+
+    Mapping (module docstring of ringchain.numerics.chain): ring j = (w_{j-1}, u_j), so our
+    site 2j is w_{j-1} and site 2j+1 is u_j; w_{N-1} is the fixed support (if anchored).
+    """
+    N = len(x) // 2
+    U, dU = -x, -u  # the paper's axis points towards the impact
+    uu, du = U[1::2], dU[1::2]  # u_0 .. u_{N-1}
+    w = np.concatenate([U[2::2], [0.0]])  # w_0 .. w_{N-2}, and w_{N-1} = support (at rest)
+    dw = np.concatenate([dU[2::2], [0.0]])
+    w_m1, dw_m1 = U[0], dU[0]  # w_{-1}: lower half of ring 0
+
+    def contact(d, dd):
+        return max(K_c * d**1.5 + gamma_c * dd, 0.0) if d > 0 else 0.0
+
+    def bending(d, dd):
+        return K_b * d + gamma_b * dd
+
+    acc_u, acc_w = np.empty(N), np.empty(N)
+    for i in range(N):
+        wp, dwp = (w[i - 1], dw[i - 1]) if i > 0 else (w_m1, dw_m1)
+        f_c = contact(uu[i] - w[i], du[i] - dw[i]) if (i < N - 1 or anchored) else 0.0
+        acc_u[i] = (bending(wp - uu[i], dwp - du[i]) - f_c) / (m / 2)
+        if i < N - 1:
+            acc_w[i] = (f_c - bending(w[i] - uu[i + 1], dw[i] - du[i + 1])) / (m / 2)
+    # w_{-1} (site 0) only has the bending spring of ring 0 above it.
+    acc_wm1 = -bending(w_m1 - uu[0], dw_m1 - du[0]) / (m / 2)
+    ours = np.empty(2 * N)
+    ours[0] = acc_wm1
+    ours[1::2] = acc_u
+    ours[2::2] = acc_w[: N - 1]
+    return -ours - G * m_g / m
+
+
+@pytest.mark.parametrize("support", ["fixed", "free"])
+@pytest.mark.parametrize("gamma", [0.0, 0.7])
+def test_power_law_lattice_is_the_papers_equation(support, gamma):
+    rng = np.random.default_rng(1)
+    chain = Chain.power_law(7, K=2e6, n=1.2, m=0.01, a=0.04, gamma=gamma, m_gravity=0.03, support=support)
+    x = rng.normal(0, 1e-5, 7)
+    u = rng.normal(0, 0.5, 7)
+    expected = paper_power_law(x, u, 2e6, 1.2, gamma, 0.01, 0.03, support == "fixed")
+    # Same arithmetic in a different order: rounding only.
+    np.testing.assert_allclose(chain.lattice.accelerations(x, u, g=G), expected, rtol=1e-11, atol=1e-9)
+
+
+@pytest.mark.parametrize("support", ["fixed", "free"])
+@pytest.mark.parametrize("gammas", [(0.0, 0.0), (0.3, 0.9)])
+def test_dual_spring_lattice_is_the_papers_equation(support, gammas):
+    rng = np.random.default_rng(2)
+    N, K_c, K_b, m, m_g = 6, 7.5e9, 3.3e6, 0.008, 0.022
+    chain = Chain.dual_spring(N, K_c, K_b, m, 0.04, *gammas, m_gravity=m_g, support=support)
+    x = rng.normal(0, 1e-6, 2 * N)
+    u = rng.normal(0, 0.5, 2 * N)
+    expected = paper_dual_spring(x, u, K_c, K_b, *gammas, m, m_g, support == "fixed")
+    np.testing.assert_allclose(chain.lattice.accelerations(x, u, g=G), expected, rtol=1e-11, atol=1e-6)
+
+
+@pytest.mark.parametrize(
+    "chain",
+    [
+        Chain.dual_spring(5, 7.5e9, 3.3e6, 0.008, 0.04, gamma_c=0.2),  # damped: general path
+        # Eight sites, undamped (the fast path): a 64-byte row stride, where NumPy 2.4.6's
+        # np.negative with a strided out= gave wrong values for every run after the first.
+        Chain.dual_spring(4, 7.5e9, 3.3e6, 0.008, 0.04),
+        Chain.power_law(8, 1e9, 1.5, 0.01, 0.02),
+        Chain.power_law(8, 1e9, 1.5, 0.01, 0.02, gamma=0.1),  # eight sites on the general path
+    ],
+    ids=["dual-damped-10", "dual-8", "power-8", "power-damped-8"],
+)
+def test_batched_accelerations_equal_one_by_one(chain):
+    rng = np.random.default_rng(3)
+    lat = chain.lattice
+    x = rng.normal(0, 1e-6, (4, lat.n_sites))
+    u = rng.normal(0, 0.3, (4, lat.n_sites))
+    batch = lat.accelerations(x, u)
+    for k in range(4):
+        np.testing.assert_array_equal(batch[k], lat.accelerations(x[k], u[k]))  # same operations: exact
+
+
+def test_internal_forces_cancel_in_a_free_chain():
+    # Newton's third law: without gravity and support, sum of m a vanishes.
+    rng = np.random.default_rng(4)
+    lat = Chain.dual_spring(8, 7.5e9, 3.3e6, 0.008, 0.04, 0.3, 0.9, support="free").lattice
+    x, u = rng.normal(0, 1e-6, 16), rng.normal(0, 0.3, 16)
+    ma = lat.mass * lat.accelerations(x, u, g=0.0)
+    assert abs(ma.sum()) <= 1e-12 * np.abs(ma).max()  # cancellation to rounding
+
+
+@settings(max_examples=40, deadline=None)
+@given(seed=st.integers(0, 2**32 - 1))
+def test_dashpots_only_take_energy_out(seed):
+    rng = np.random.default_rng(seed)
+    lat = Chain.dual_spring(6, 7.5e9, 3.3e6, 0.008, 0.04, gamma_c=rng.uniform(0, 5), gamma_b=rng.uniform(0, 5)).lattice
+    e = rng.normal(0, 1e-6, (10, lat.n_bonds))
+    e_rate = rng.normal(0, 1.0, (10, lat.n_bonds))
+    assert np.all(lat.dissipation_rate(e, e_rate) >= 0.0)
+
+
+def test_lattice_validates_bond_count():
+    with pytest.raises(ValueError, match="need 2 or 3 bonds"):
+        Lattice(np.ones(3), np.ones(3), np.ones(5), 1.5, np.zeros(5), np.zeros(5), np.zeros(5))

@@ -1,0 +1,432 @@
+"""Compact solitary wave and its speed (paper Sec. IV.C, App. B Eqs. 18-21, Eq. vsfm), and the pre-stretched chain."""
+
+import warnings
+
+import mpmath
+import numpy as np
+import pytest
+import sympy as sp
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from ringchain.theory import (
+    linear_sound_speed,
+    longwave,
+    solitary,
+    solitary_wave_profile,
+    solitary_wave_speed,
+    solitary_wave_speed_from_velocity,
+    solitary_wave_speed_prestressed,
+    solitary_wave_width,
+)
+
+S = solitary.symbols()
+a, n, K, m, c_n, V_s, tau, x = (S[k] for k in ("a", "n", "K", "m", "c_n", "V_s", "tau", "x"))
+X, C_0, C_1, y, s = S["X"], S["C_0"], S["C_1"], S["y"], S["s"]
+xi_0, xi_max, v_max, F_m, F_0 = S["xi_0"], S["xi_max"], S["v_max"], S["F_m"], S["F_0"]
+f = S["f"]
+
+#: The paper's wavenumber of the compact profile (App. B, below Eq. 21).
+PAPER_OMEGA = (n - 1) / (n + 1) * sp.sqrt(6 * (n + 1) / n) / a
+
+
+def assert_same(derived, expected):
+    difference = sp.simplify(derived - expected)
+    if difference != 0:
+        # simplify leaves sqrt(n**2 + 2*n + 1); factoring the bases of powers lets it see n + 1.
+        factored = difference.replace(lambda e: e.is_Pow and e.base.is_Add, lambda e: sp.factor(e.base) ** e.exp)
+        difference = sp.simplify(factored)
+    assert difference == 0
+
+
+# --- Eq. (19) and its constants ---------------------------------------------------------------------
+
+
+def test_twice_integrated_is_eq_19():
+    equation = solitary.twice_integrated()
+    F1, F2 = sp.Derivative(f(tau), tau), sp.Derivative(f(tau), (tau, 2))
+    paper_rhs = f(tau) ** n + n * a**2 / 24 * ((n - 1) * f(tau) ** (n - 2) * F1**2 + 2 * f(tau) ** (n - 1) * F2)
+    assert_same(equation.lhs, (V_s / c_n) ** 2 * f(tau))
+    assert_same(equation.rhs, paper_rhs + C_1 * tau + C_0)
+
+
+def test_travelling_wave_ode_is_the_second_derivative_of_the_potential():
+    H = solitary.travelling_wave_potential()
+    assert sp.expand(sp.diff(H, tau, 2) - solitary.travelling_wave_ode()) == 0
+
+
+def test_integration_constants():
+    xi_inf = S["xi_inf"]
+    constants = solitary.integration_constants()
+    assert constants[C_1] == 0
+    assert_same(constants[C_0], (V_s / c_n) ** 2 * xi_inf - xi_inf**n)
+    assert solitary.integration_constants(0) == {C_1: 0, C_0: 0}  # unstretched chain
+
+
+# --- the oscillator (Eq. 21) --------------------------------------------------------------------------
+
+
+def test_change_of_variables_is_app_b():
+    change = solitary.change_of_variables()
+    assert_same(change["q"], 2 / (n + 1))
+    assert_same(change["y"], X ** ((n + 1) / 2) * (c_n / V_s) ** ((n + 1) / (n - 1)))
+    assert_same(change["mu"], tau / a * sp.sqrt(6 * (n + 1) / n))
+
+
+def test_oscillator_potential_is_app_b():
+    W = y**2 / 2 - (n + 1) / 4 * y ** (4 / (n + 1))
+    assert_same(solitary.oscillator_potential(), W)
+    assert_same(solitary.oscillator_equation().subs(C_0, 0), -sp.diff(W, y))
+
+
+def test_prestressed_potential_has_the_extra_term():
+    extra = solitary.oscillator_potential(prestressed=True) - solitary.oscillator_potential()
+    # App. B: a non-zero C_0 adds C y^(2/(n+1)); derived C = C_0 (n+1)/2 (c_n/V_s)^(2n/(n-1)).
+    assert_same(extra, C_0 * (n + 1) / 2 * s ** (-n / (n - 1)) * y ** (2 / (n + 1)))
+    assert_same(-sp.diff(solitary.oscillator_potential(prestressed=True), y), solitary.oscillator_equation())
+
+
+@pytest.mark.parametrize("n_value", [mpmath.mpf("1.07"), mpmath.sqrt(2), mpmath.mpf("1.5"), mpmath.e])
+def test_sine_hump_has_zero_energy_in_the_oscillator(n_value):
+    # y = B |sin(k mu)|^((n+1)/(n-1)), the paper's profile in the oscillator variables, moves on
+    # the separatrix y_mu^2/2 + W(y) = 0 (W(0) = 0, the far field).  mpmath at 40 digits.
+    W = sp.lambdify((n, y), solitary.oscillator_potential(), "mpmath")
+    with mpmath.workdps(40):
+        k = (n_value - 1) / (n_value + 1)
+        B = ((n_value + 1) / 2) ** ((n_value + 1) / (2 * (n_value - 1)))
+
+        def y_of(z):
+            return B * mpmath.sin(k * z) ** ((n_value + 1) / (n_value - 1))
+
+        for mu in (mpmath.mpf("0.3"), mpmath.mpf(1), mpmath.pi / (2 * k)):
+            energy = mpmath.diff(y_of, mu) ** 2 / 2 + W(n_value, y_of(mu))
+            assert abs(energy) < mpmath.mpf(10) ** -30  # 40-digit arithmetic and differentiation
+
+
+# --- compact solution ---------------------------------------------------------------------------------
+
+
+def test_compact_solution_parameters_are_app_b():
+    sol = solitary.compact_solution()
+    assert_same(sol["p"], 2 / (n - 1))
+    assert_same(sol["omega"], PAPER_OMEGA)
+    assert_same(sol["xi_max"], ((n + 1) / 2 * V_s**2 / c_n**2) ** (1 / (n - 1)))
+
+
+def test_profile_residual_vanishes_for_symbolic_n():
+    assert solitary.profile_residual() == 0
+
+
+@pytest.mark.parametrize("n_value", [mpmath.mpf("1.01"), mpmath.mpf("1.11"), mpmath.sqrt(2), mpmath.mpf(2), mpmath.e])
+def test_paper_profile_solves_eq_19_numerically(n_value):
+    # Independent of the SymPy manipulations: the paper's formula, differentiated by mpmath.
+    with mpmath.workdps(40):
+        a_, c_, V_ = mpmath.mpf("0.04"), mpmath.mpf(3), mpmath.mpf("1.7")
+        omega = (n_value - 1) / (n_value + 1) * mpmath.sqrt(6 * (n_value + 1) / n_value) / a_
+        amplitude = ((n_value + 1) / 2 * V_**2 / c_**2) ** (1 / (n_value - 1))
+
+        def xi(z):
+            return amplitude * abs(mpmath.sin(omega * z)) ** (2 / (n_value - 1))
+
+        for fraction in ("0.05", "0.3", "0.5", "0.9"):
+            z = mpmath.pi / omega * mpmath.mpf(fraction)
+            x0, x1, x2 = xi(z), mpmath.diff(xi, z), mpmath.diff(xi, z, 2)
+            G = x0**n_value + n_value * a_**2 / 24 * (
+                (n_value - 1) * x0 ** (n_value - 2) * x1**2 + 2 * x0 ** (n_value - 1) * x2
+            )
+            residual = (V_ / c_) ** 2 * x0 - G
+            assert abs(residual / ((V_ / c_) ** 2 * x0)) < mpmath.mpf(10) ** -25  # 40-digit differentiation
+
+
+def test_strain_profile_is_app_b():
+    paper = ((n + 1) / 2 * V_s**2 / c_n**2) ** (1 / (n - 1)) * sp.Abs(sp.sin(PAPER_OMEGA * tau)) ** (2 / (n - 1))
+    derived = solitary.strain_profile()
+    for values in ({n: sp.Rational(3, 2)}, {n: sp.Rational(6, 5)}, {n: 3}):
+        assert_same(derived.subs(values), paper.subs(values))
+
+
+def test_velocity_profile_is_minus_v_s_times_strain():
+    assert_same(solitary.velocity_profile(), -V_s * solitary.strain_profile())
+
+
+# --- speeds and width ---------------------------------------------------------------------------------
+
+
+def test_speed_from_strain_is_app_b():
+    assert_same(solitary.speed_from_strain(), sp.sqrt(2 * c_n**2 / (n + 1) * xi_max ** (n - 1)))
+
+
+def test_speed_from_velocity_is_app_b():
+    paper = (2 * c_n**2 / (n + 1)) ** (1 / (n + 1)) * (-v_max) ** ((n - 1) / (n + 1))
+    assert_same(solitary.speed_from_velocity(), paper)
+
+
+def test_speed_from_force_is_eq_vsfm():
+    paper = a * sp.sqrt(2 / (n + 1)) * (K ** (1 / n) / m) ** sp.Rational(1, 2) * F_m ** ((n - 1) / (2 * n))
+    assert_same(solitary.speed_from_force(), paper)
+
+
+def test_support_width_for_hertz_is_five_spacings():
+    width = solitary.support_width()
+    assert_same(width, sp.pi / PAPER_OMEGA)
+    # Nesterenko's Hertz wave xi ~ cos^4(sqrt(10) x/(5 a)): one hump is 5 pi a/sqrt(10) = 4.967 a.
+    assert_same(width.subs(n, sp.Rational(3, 2)), 5 * sp.pi * a / sp.sqrt(10))
+    assert 4.9 < float(width.subs({n: sp.Rational(3, 2), a: 1})) < 5.0
+
+
+def test_centred_force_profile():
+    profile = solitary.centred_force_profile()
+    hump = sp.cos(PAPER_OMEGA * x) ** (2 * n / (n - 1))
+    for n_value in (sp.Rational(3, 2), sp.Rational(11, 10)):
+        values = {n: n_value, a: 1}
+        inside = {**values, x: sp.Rational(1, 3)}
+        assert_same(profile.subs(inside), hump.subs(inside))
+        assert profile.subs({**values, x: 100}) == 0
+    assert profile.subs(x, 0) == 1
+
+
+# --- pre-stretched chain ------------------------------------------------------------------------------
+
+
+def test_first_integral_is_conserved_along_eq_19():
+    lhs, rhs = solitary.first_integral()
+    assert_same(lhs, n * a**2 / 24 * X ** (n - 1) * sp.Symbol("xi_tau", real=True) ** 2)
+    # d/dtau (lhs - rhs) along xi = f(tau) is -f' times the residual of Eq. (19): conserved on solutions.
+    on_path = (lhs - rhs).subs(sp.Symbol("xi_tau", real=True), sp.Derivative(f(tau), tau)).subs(X, f(tau))
+    residual = solitary.eq19_residual(f(tau), sp.Derivative(f(tau), tau), sp.Derivative(f(tau), (tau, 2)), C_1=0)
+    assert_same(sp.diff(on_path, tau) + sp.Derivative(f(tau), tau) * residual, 0)
+
+
+def test_prestressed_speed_is_nesterenko_for_hertz():
+    # Nesterenko's weakly compressed Hertz chain (book Sec. 1.3; Daraio et al., PRE 73, 026610, 2006):
+    # V_s = c_0/(xi_r - 1) [4/15 (3 + 2 xi_r^(5/2) - 5 xi_r)]^(1/2), xi_r = xi_max/xi_0, c_0^2 = 3/2 c_n^2 xi_0^(1/2).
+    half = sp.Rational(3, 2)
+    ratio = xi_max / xi_0
+    c_0_squared = half * c_n**2 * sp.sqrt(xi_0)
+    nesterenko = c_0_squared / (ratio - 1) ** 2 * sp.Rational(4, 15) * (3 + 2 * ratio ** sp.Rational(5, 2) - 5 * ratio)
+    assert_same(solitary.prestressed_speed_squared().subs(n, half), nesterenko)
+
+
+def test_prestressed_speed_without_prestress_is_the_compact_wave():
+    assert_same(sp.limit(solitary.prestressed_speed_squared(), xi_0, 0), solitary.speed_from_strain() ** 2)
+
+
+@pytest.mark.parametrize("n_value", [sp.Rational(11, 10), sp.Rational(3, 2), 2, sp.Rational(7, 3)])
+def test_prestressed_speed_of_a_small_wave_is_the_sound_speed(n_value):
+    speed2 = solitary.prestressed_speed_squared().subs(n, n_value)
+    sound2 = longwave.sound_speed_continuum().subs(S["xi_0"], xi_0) ** 2
+    assert_same(sp.limit(speed2, xi_max, xi_0), sound2.subs(n, n_value))
+
+
+def test_hypergeometric_form_equals_the_elementary_form_for_symbolic_n():
+    z = sp.Symbol("z", positive=True)
+    hypergeometric = solitary.prestressed_speed_hypergeometric().rewrite(sp.hyper)
+    expanded = sp.hyperexpand(hypergeometric.subs(xi_0, (1 - z) * xi_max))
+    elementary = solitary.prestressed_speed_squared().subs(xi_0, (1 - z) * xi_max)
+    assert sp.simplify(sp.powsimp(sp.expand((expanded - elementary) / xi_max ** (n - 1)), force=True)) == 0
+
+
+def test_hypergeometric_form_limits():
+    form = solitary.prestressed_speed_hypergeometric().rewrite(sp.hyper)
+    assert_same(sp.hyperexpand(form.subs(xi_0, xi_max)), n * c_n**2 * xi_max ** (n - 1))
+    assert_same(sp.hyperexpand(form.subs(xi_0, 0)), solitary.speed_from_strain() ** 2)
+
+
+@pytest.mark.parametrize(("n_value", "ratio"), [(1.07, 0.3), (1.5, 0.01), (1.5, 0.999), (2.7, 0.5), (3.0, 0.0)])
+def test_hypergeometric_form_equals_elementary_form(n_value, ratio):
+    # mpmath at 30 digits, independent of the hyperexpand proof inside the derivation.
+    with mpmath.workdps(30):
+        nv, q = mpmath.mpf(n_value), mpmath.mpf(ratio)
+        elementary = 2 * ((1 - q ** (nv + 1)) / (nv + 1) - q**nv * (1 - q)) / (1 - q) ** 2
+        assert abs(nv * mpmath.hyp2f1(1 - nv, 2, 3, 1 - q) / elementary - 1) < mpmath.mpf(10) ** -25
+
+
+def test_prestressed_speed_from_force_limits():
+    speed = solitary.prestressed_speed_from_force().rewrite(sp.hyper)
+    assert_same(sp.hyperexpand(speed.subs(F_0, 0)), solitary.speed_from_force())
+    sound = longwave.sound_speed_from_force()
+    assert_same(sp.hyperexpand(speed.subs(F_m, F_0)), sound)
+
+
+# --- numeric functions ----------------------------------------------------------------------------------
+
+#: (F_m N, K N/m^n, n, a m, m kg): Table I-like rings and round numbers.
+POINTS = [
+    (10.0, 2.284e3 * 1000**1.11, 1.11, 0.04, 0.37 * 0.0265),
+    (3.0, 1e9, 1.5, 0.01, 0.005),
+    (8.0, 1.0, 3.0, 1.0, 1.0),
+]
+
+
+def _exact(expr, symbols_, values):
+    return float(sp.N(expr, 30, subs=dict(zip(symbols_, values, strict=True))))
+
+
+@pytest.mark.parametrize("point", POINTS)
+def test_numeric_speeds_equal_evalf(point):
+    F_m_, K_, n_, a_, m_ = point
+    # Generated double-precision code against the same expression at 30 digits: 1e-13.
+    expected = _exact(solitary.speed_from_force(), (F_m, K, n, a, m), point)
+    assert np.isclose(solitary_wave_speed(*point), expected, rtol=1e-13)
+    v = -0.7
+    c2 = longwave.wave_speed_squared()
+    expected = _exact(solitary.speed_from_velocity().subs(c_n, sp.sqrt(c2)), (v_max, K, n, a, m), (v, K_, n_, a_, m_))
+    assert np.isclose(solitary_wave_speed_from_velocity(v, K_, n_, a_, m_), expected, rtol=1e-13)
+    expected = _exact(solitary.support_width(), (n, a), (n_, a_))
+    assert np.isclose(solitary_wave_width(n_, a_), expected, rtol=1e-13)
+    for F_0_ in (0.0, 0.2 * F_m_, F_m_):
+        values = (F_m_, F_0_, K_, n_, a_, m_)
+        expected = _exact(solitary.prestressed_speed_from_force(), (F_m, F_0, K, n, a, m), values)
+        assert np.isclose(solitary_wave_speed_prestressed(*values), expected, rtol=1e-12)  # scipy hyp2f1: ~1e-13
+
+
+@pytest.mark.parametrize("point", POINTS)
+def test_numeric_speed_equals_paper_formula(point):
+    F_m_, K_, n_, a_, m_ = point
+    paper = a_ * np.sqrt(2 / (n_ + 1)) * np.sqrt(K_ ** (1 / n_) / m_) * F_m_ ** ((n_ - 1) / (2 * n_))
+    assert np.isclose(solitary_wave_speed(*point), paper, rtol=1e-13)  # same formula, rounding only
+
+
+@pytest.mark.parametrize(("n_", "width"), [(1.5, 1.0), (1.11, 0.04), (1.01, 0.04)])
+def test_profile_equals_high_precision_formula(n_, width):
+    F_m_ = 12.0
+    support = solitary_wave_width(n_, width)
+    xs = np.linspace(-0.6, 0.6, 49) * support
+    got = solitary_wave_profile(xs, F_m_, 1e8, n_, width)
+    with mpmath.workdps(30):
+        nv = mpmath.mpf(n_)
+        omega = (nv - 1) / (nv + 1) * mpmath.sqrt(6 * (nv + 1) / nv) / mpmath.mpf(width)
+        expected = [
+            float(F_m_ * mpmath.cos(omega * mpmath.mpf(xv)) ** (2 * nv / (nv - 1)))
+            if abs(omega * xv) < mpmath.pi / 2
+            else 0.0
+            for xv in xs
+        ]
+    # exp(e log cos) with e = 2n/(n-1) = 202 at n = 1.01 amplifies the 1e-16 rounding of cos by e: rtol 1e-12.
+    # At the edge cos -> 0 and the profile's condition number e omega x tan(omega x) is unbounded (a rounding of
+    # x changes F relatively by O(1)), so there the comparison is absolute, 1e-13 F_m.
+    assert np.allclose(got, expected, rtol=1e-12, atol=1e-13 * F_m_)
+
+
+def test_profile_shape():
+    positive = np.linspace(0.01, 3.0, 300)
+    xs = np.concatenate((-positive[::-1], [0.0], positive))
+    F = solitary_wave_profile(xs, 5.0, 1e8, 1.3, 0.04 * 50)
+    half = solitary_wave_width(1.3, 0.04 * 50) / 2
+    assert F.max() == 5.0 and F[300] == 5.0  # peak at x = 0
+    assert np.array_equal(F, F[::-1])  # even in x
+    assert np.all(F[np.abs(xs) >= half] == 0.0) and np.all(F[np.abs(xs) < half] > 0.0)
+
+
+def test_near_linear_exponent_is_finite_and_quiet():
+    n_ = 1.01
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        V = solitary_wave_speed(10.0, 1e8, n_, 0.04, 0.01)
+        width = solitary_wave_width(n_, 0.04)
+        F = solitary_wave_profile(np.linspace(-2 * width, 2 * width, 2001), 10.0, 1e8, n_, 0.04)
+        V_pre = solitary_wave_speed_prestressed(10.0, 1.0, 1e8, n_, 0.04, 0.01)
+    assert np.isfinite(V) and np.isfinite(width) and np.all(np.isfinite(F)) and np.isfinite(V_pre)
+    assert np.isclose(width / 0.04, np.pi * 2.01 / (0.01 * np.sqrt(6 * 2.01 / 1.01)), rtol=1e-12)  # about 183 spacings
+
+
+def test_speed_tends_to_the_linear_sound_speed_as_n_tends_to_one():
+    K_, a_, m_ = 1e5, 0.04, 0.01
+    linear = a_ * np.sqrt(K_ / m_)
+    # V_s/c = sqrt(2/(n+1)) K^((1-n)/(2n)) F^((n-1)/(2n)): relative distance O(n - 1) = 1e-9, times log factors ~ 10.
+    assert np.isclose(solitary_wave_speed(10.0, K_, 1 + 1e-9, a_, m_), linear, rtol=1e-7)
+
+
+def test_broadcasting():
+    F = np.array([1.0, 10.0, 100.0])[:, None]
+    n_ = np.array([1.1, 1.3])
+    assert solitary_wave_speed(F, 1e8, n_, 0.04, 0.01).shape == (3, 2)
+    assert solitary_wave_speed_from_velocity(-F, 1e8, n_, 0.04, 0.01).shape == (3, 2)
+    assert solitary_wave_width(n_, np.array([[0.03], [0.04]])).shape == (2, 2)
+    assert solitary_wave_profile(np.zeros((4, 1)), 2.0, 1e8, n_, 0.04).shape == (4, 2)
+    assert solitary_wave_speed_prestressed(F, 0.5, 1e8, n_, 0.04, 0.01).shape == (3, 2)
+
+
+@pytest.mark.parametrize(
+    ("call", "message"),
+    [
+        (lambda: solitary_wave_speed(10.0, 1e8, 1.0, 0.04, 0.01), "compact solitary wave only for n > 1"),
+        (lambda: solitary_wave_speed(10.0, 1e8, 0.7, 0.04, 0.01), "n must lie in"),
+        (lambda: solitary_wave_width([1.5, 0.9], 0.04), "n > 1"),
+        (lambda: solitary_wave_profile(0.0, 1.0, 1e8, 1.0, 0.04), "n > 1"),
+        (lambda: solitary_wave_speed(0.0, 1e8, 1.5, 0.04, 0.01), "F_m"),
+        (lambda: solitary_wave_speed(1.0, -1e8, 1.5, 0.04, 0.01), "K"),
+        (lambda: solitary_wave_speed(1.0, 1e8, 1.5, 0.0, 0.01), "a"),
+        (lambda: solitary_wave_speed(1.0, 1e8, 1.5, 0.04, 0.0), "m"),
+        (lambda: solitary_wave_speed(np.inf, 1e8, 1.5, 0.04, 0.01), "finite"),
+        (lambda: solitary_wave_speed_from_velocity(0.5, 1e8, 1.5, 0.04, 0.01), "v_max must be negative"),
+        (lambda: solitary_wave_speed_prestressed(1.0, 2.0, 1e8, 1.5, 0.04, 0.01), "F_0 must not exceed F_m"),
+        (lambda: solitary_wave_speed_prestressed(1.0, -2.0, 1e8, 1.5, 0.04, 0.01), "F_0"),
+        (lambda: solitary_wave_profile(np.nan, 1.0, 1e8, 1.5, 0.04), "x must be finite"),
+    ],
+)
+def test_bad_input(call, message):
+    with pytest.raises(ValueError, match=message):
+        call()
+
+
+def test_non_numeric_input():
+    with pytest.raises(TypeError, match="F_m"):
+        solitary_wave_speed("ten", 1e8, 1.5, 0.04, 0.01)
+
+
+# --- properties -----------------------------------------------------------------------------------------
+
+forces = st.floats(1e-3, 1e4)
+exponents = st.floats(1.01, 3.0)
+stiffness = st.floats(1e3, 1e12)
+spacing = st.floats(1e-3, 0.1)
+masses = st.floats(1e-4, 1.0)
+
+
+@settings(derandomize=True, max_examples=60, deadline=None)
+@given(forces, forces, exponents, stiffness, spacing, masses)
+def test_speed_increases_with_force(F1, F2, n_, K_, a_, m_):
+    lo, hi = sorted((F1, F2))
+    if hi > lo * (1 + 1e-6):
+        assert solitary_wave_speed(lo, K_, n_, a_, m_) < solitary_wave_speed(hi, K_, n_, a_, m_)
+
+
+@settings(derandomize=True, max_examples=60, deadline=None)
+@given(forces, exponents, stiffness, spacing, masses)
+def test_velocity_and_force_give_the_same_speed(F_m_, n_, K_, a_, m_):
+    V = solitary_wave_speed(F_m_, K_, n_, a_, m_)
+    xi_peak = (F_m_ / K_) ** (1 / n_) / a_
+    # v_max = -V_s xi_max (Eq. 18); double-precision round trip through powers: 1e-12.
+    assert np.isclose(solitary_wave_speed_from_velocity(-V * xi_peak, K_, n_, a_, m_), V, rtol=1e-12)
+
+
+@settings(derandomize=True, max_examples=60, deadline=None)
+@given(forces, st.floats(0.0, 1.0), exponents, stiffness, spacing, masses)
+def test_prestressed_speed_bounds(F_m_, fraction, n_, K_, a_, m_):
+    F_0_ = fraction * F_m_
+    V = solitary_wave_speed_prestressed(F_m_, F_0_, K_, n_, a_, m_)
+    slack = 1 + 1e-12  # equalities hold at fraction 0 and 1; allow rounding
+    # Between the compact wave of the same peak force and the sound speed at the peak ...
+    assert solitary_wave_speed(F_m_, K_, n_, a_, m_) <= V * slack
+    assert V <= linear_sound_speed(F_m_, K_, n_, a_, m_) * slack
+    # ... and supersonic with respect to the pre-stretched chain.
+    assert linear_sound_speed(F_0_, K_, n_, a_, m_) <= V * slack
+
+
+@settings(derandomize=True, max_examples=40, deadline=None)
+@given(forces, exponents, stiffness, spacing, masses)
+def test_prestressed_limits_numerically(F_m_, n_, K_, a_, m_):
+    compact = solitary_wave_speed(F_m_, K_, n_, a_, m_)
+    # F_0/F_m = 1e-12: V^2 moves by O((F_0/F_m)^(1/n)) <= 1e-12^(1/3) = 1e-4 relative.
+    assert np.isclose(solitary_wave_speed_prestressed(F_m_, 1e-12 * F_m_, K_, n_, a_, m_), compact, rtol=2e-4)
+    sound = linear_sound_speed(F_m_, K_, n_, a_, m_)
+    # F_m/F_0 = 1 + 1e-9: V moves by O(1e-9) relative.
+    assert np.isclose(solitary_wave_speed_prestressed(F_m_, F_m_ / (1 + 1e-9), K_, n_, a_, m_), sound, rtol=1e-8)
+
+
+@settings(derandomize=True, max_examples=40, deadline=None)
+@given(exponents, exponents, spacing)
+def test_width_decreases_with_exponent(n1, n2, a_):
+    lo, hi = sorted((n1, n2))
+    if hi > lo + 1e-6:
+        assert solitary_wave_width(hi, a_) < solitary_wave_width(lo, a_)
