@@ -67,7 +67,7 @@ def _figure(**kwargs):
     """
     from matplotlib.figure import Figure
 
-    fig = Figure(**kwargs)
+    fig = Figure(layout=None, **kwargs)  # explicit: a user's rcParams may turn a layout engine on
     fig.subplots_adjust(left=0.15, right=0.97, bottom=0.14, top=0.9, wspace=0.08)
     return fig
 

@@ -74,7 +74,7 @@ def effective_modulus(E1=None, nu1=None, E2=None, nu2=None):
     nu1 = s["nu"] if nu1 is None else nu1
     E2 = E1 if E2 is None else E2
     nu2 = nu1 if nu2 is None else nu2
-    return sp.simplify(1 / ((1 - nu1**2) / E1 + (1 - nu2**2) / E2))
+    return sp.factor(sp.cancel(1 / ((1 - nu1**2) / E1 + (1 - nu2**2) / E2)))
 
 
 def principal_radii():
@@ -154,10 +154,15 @@ def hertz_elliptical():
     Es = sp.Symbol("E^*", positive=True)
     K, E = sp.elliptic_k(m), sp.elliptic_e(m)
     b_of_a = a * sp.sqrt(1 - m)
-    p0_of_a = sp.solve(sp.Eq(A, p0 * b_of_a * (K - E) / (Es * a**2 * m)), p0)[0]
-    a_of_P = sp.solve(sp.Eq(P, sp.Rational(2, 3) * sp.pi * a * b_of_a * p0_of_a), a)[0]
+    _, p0_of_a = sp.solve_linear(A - p0 * b_of_a * (K - E) / (Es * a**2 * m), symbols=[p0])
+    # The load is a^3 times a factor free of a: solve for a^3, take the real cube root.
+    per_cube = sp.cancel(sp.Rational(2, 3) * sp.pi * a * b_of_a * p0_of_a / a**3)
+    if a in per_cube.free_symbols:  # pragma: no cover - derivation check
+        raise RuntimeError("Johnson's load is not proportional to a^3")
+    a_of_P = (P / per_cube) ** sp.Rational(1, 3)
     delta_of_P = (p0_of_a * b_of_a * K / Es).subs(a, a_of_P)
-    K_c = sp.simplify(P / delta_of_P ** sp.Rational(3, 2))
+    # Every factor is positive (P, A, E*, m in (0, 1), K > E), so powers may be merged freely.
+    K_c = sp.powsimp(sp.powdenest(P / delta_of_P ** sp.Rational(3, 2), force=True), force=True)
     return K_c, Es
 
 

@@ -52,6 +52,7 @@ import numpy as np
 from . import _validate as v
 from . import longwave
 from ._codegen import derived, sp
+from .special import hyp2f1
 
 __all__ = [
     "symbols",
@@ -77,7 +78,6 @@ __all__ = [
     "prestressed_speed_squared",
     "prestressed_speed_hypergeometric",
     "prestressed_speed_from_force",
-    "hyp2f1",
     "stable_profile",
     "solitary_wave_speed",
     "solitary_wave_speed_from_velocity",
@@ -511,32 +511,6 @@ def prestressed_speed_squared():
     energy = sp.solve(rhs.subs(X, xi_0), E, check=False)[0]
     ratio = sp.solve(rhs.subs(E, energy).subs(X, xi_max), s["V_s"] ** 2, check=False)
     return sp.factor(sp.simplify(ratio[0]))
-
-
-def hyp2f1(a, b, c, z):
-    """Gauss's 2F1(a, b; c; z) as a SymPy function that prints to ``scipy.special.hyp2f1``."""
-    return _hyp2f1_class()(a, b, c, z)
-
-
-@functools.cache
-def _hyp2f1_class():
-    def _numpycode(self, printer):
-        args = ", ".join(printer.doprint(arg) for arg in self.args)
-        return f"{printer._module_format('scipy.special.hyp2f1')}({args})"
-
-    def _eval_rewrite_as_hyper(self, a, b, c, z, **kwargs):
-        return sp.hyper([a, b], [c], z)
-
-    def _eval_evalf(self, prec):
-        return self.rewrite(sp.hyper)._eval_evalf(prec)
-
-    attributes = {
-        "nargs": 4,
-        "_numpycode": _numpycode,
-        "_eval_evalf": _eval_evalf,
-        "_eval_rewrite_as_hyper": _eval_rewrite_as_hyper,
-    }
-    return type("hyp2f1", (sp.Function,), attributes)
 
 
 @functools.cache

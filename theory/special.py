@@ -1,4 +1,4 @@
-"""Carlson's symmetric elliptic integrals as SymPy functions that print to SciPy.
+"""Special functions for derivations whose generated code calls SciPy: Carlson's integrals, 2F1.
 
 The elliptical Hertz contact is written by Johnson with the complete elliptic
 integrals K(m) and E(m) (parameter m = e^2).  Its two key combinations,
@@ -19,11 +19,12 @@ from __future__ import annotations
 
 from ._codegen import sp
 
-__all__ = ["carlson_rf", "carlson_rd", "to_carlson"]
+__all__ = ["carlson_rf", "carlson_rd", "hyp2f1", "to_carlson"]
 
 
-def _carlson_class(name: str, scipy_name: str, mpmath_name: str):
-    """A SymPy Function printing to ``scipy.special.<scipy_name>``, evaluating with mpmath."""
+def _scipy_function(name: str, scipy_name: str, nargs: int, mpmath_name: str, **extra):
+    """A SymPy Function of ``nargs`` arguments that prints to ``scipy.special.<scipy_name>``
+    in generated code and evaluates with ``mpmath.<mpmath_name>`` in ``evalf``."""
 
     def _numpycode(self, printer):
         args = ", ".join(printer.doprint(arg) for arg in self.args)
@@ -39,30 +40,40 @@ def _carlson_class(name: str, scipy_name: str, mpmath_name: str):
             values = [mpmath.mpf(arg.evalf(prec_to_dps(prec) + 5)) for arg in self.args]
             return sp.Float(getattr(mpmath, mpmath_name)(*values), prec_to_dps(prec))
 
-    return type(
-        name,
-        (sp.Function,),
-        {"nargs": 3, "is_real": True, "_numpycode": _numpycode, "_eval_evalf": _eval_evalf},
-    )
+    attributes = {"nargs": nargs, "is_real": True, "_numpycode": _numpycode, "_eval_evalf": _eval_evalf}
+    return type(name, (sp.Function,), {**attributes, **extra})
 
 
 _CLASSES: dict = {}
 
 
-def _cls(name, scipy_name, mpmath_name):
+def _cls(name, scipy_name, nargs, mpmath_name, **extra):
     if name not in _CLASSES:
-        _CLASSES[name] = _carlson_class(name, scipy_name, mpmath_name)
+        _CLASSES[name] = _scipy_function(name, scipy_name, nargs, mpmath_name, **extra)
     return _CLASSES[name]
 
 
 def carlson_rf(x, y, z):
     """R_F(x, y, z), Carlson's symmetric integral of the first kind (DLMF 19.16.1)."""
-    return _cls("carlson_rf", "elliprf", "elliprf")(x, y, z)
+    return _cls("carlson_rf", "elliprf", 3, "elliprf")(x, y, z)
 
 
 def carlson_rd(x, y, z):
     """R_D(x, y, z), Carlson's symmetric integral of the second kind (DLMF 19.16.5)."""
-    return _cls("carlson_rd", "elliprd", "elliprd")(x, y, z)
+    return _cls("carlson_rd", "elliprd", 3, "elliprd")(x, y, z)
+
+
+def hyp2f1(a, b, c, z):
+    """Gauss's 2F1(a, b; c; z) (DLMF 15.2.1), printing to ``scipy.special.hyp2f1``.
+
+    ``expr.rewrite(sympy.hyper)`` gives SymPy's own ``hyper`` for symbolic work
+    (e.g. :func:`sympy.hyperexpand`).
+    """
+
+    def _eval_rewrite_as_hyper(self, a, b, c, z, **kwargs):
+        return sp.hyper([a, b], [c], z)
+
+    return _cls("hyp2f1", "hyp2f1", 4, "hyp2f1", _eval_rewrite_as_hyper=_eval_rewrite_as_hyper)(a, b, c, z)
 
 
 def to_carlson(expr, m):

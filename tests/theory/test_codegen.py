@@ -8,20 +8,23 @@ import textwrap
 import numpy as np
 import pytest
 import sympy as sp
-from ringchain.theory import _codegen, contact, ring, series
+from ringchain.theory import _codegen, contact, longwave, ring, series, solitary
 from ringchain.theory._codegen import Derived
 
 ALL_DERIVED = [
     obj
-    for module in (contact, ring, series)
+    for module in (contact, ring, series, longwave, solitary)
     for obj in vars(module).values()
     if isinstance(obj, Derived)
 ]
 
-# A physical sample point for every argument name a derivation uses (SI units).
+# A physical sample point for every argument name a derivation uses (SI units). ``m`` is the
+# contact ellipse's squared eccentricity in contact.py and a ring mass (kg) in the wave modules;
+# 0.3 is admissible for both.
 SAMPLE = {
     "R": 0.02, "r": 0.0025, "theta": 1.2, "m": 0.3, "A": 50.0, "E": 193e9, "nu": 0.29,
     "F": 10.0, "K_c": 7.5e9, "K_b": 3.3e6,
+    "F_m": 20.0, "F_0": 2.0, "K": 8.7e6, "n": 1.11, "a": 0.04, "v_max": -0.3, "x": 0.05,
 }  # fmt: skip
 
 
