@@ -38,7 +38,7 @@ def main(argv=None):
     args = parser.parse_args(argv)
     print(f"{'model':12s} {'solver':7s} {'rings':>6s} {'time (s)':>9s} {'rhs evals':>10s} {'ns/(ring eval)':>15s}")
     for model in ("power-law", "dual-spring"):
-        for method in ("LSODA", "verlet"):
+        for method in ("odeint", "LSODA", "verlet"):
             rows = []
             for n in args.rings:
                 run = chain(model, n)
