@@ -19,8 +19,9 @@ The derivation, step by step (each step a function returning SymPy objects):
    Mechanics, Sec. 4.2, Eqs. 4.39-4.41) with complete elliptic integrals K(m), E(m)
    of the ellipse's eccentricity e^2 = m, eliminated to P = K_c(m, A) delta^(3/2) and
    the shape equation B/A = (E/(1 - m) - K)/(K - E).
-6. The numeric code evaluates step 5 in Carlson's form (:mod:`.special`), so the
-   circular limit m -> 0 is exact in floating point too.
+6. The numeric code evaluates step 5 in Carlson's form (:mod:`.special`): K(m) =
+   R_F(0, 1-m, 1) and (K - E)/m = R_D(0, 1-m, 1)/3, so the circular limit m -> 0 is
+   exact in floating point too.
 
 The effective modulus 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (App. A) is
 :func:`effective_modulus`.
@@ -34,7 +35,7 @@ import numpy as np
 
 from . import _validate as v
 from ._codegen import derived, sp
-from .special import to_carlson
+from .special import carlson_rd, carlson_rf
 
 __all__ = [
     "symbols",
@@ -45,6 +46,8 @@ __all__ = [
     "equivalent_radius_perpendicular",
     "hertz_circular",
     "hertz_elliptical",
+    "hertz_elliptical_monomial",
+    "elliptic_placeholders",
     "ellipse_shape_ratio",
     "hertz_stiffness",
     "contact_ellipse",
@@ -139,31 +142,54 @@ def hertz_circular():
     return sp.simplify(K_c.subs({Re: R_prime, Es: effective_modulus()}))
 
 
-def hertz_elliptical():
-    """K_c of an elliptical contact in terms of the eccentricity m = e^2 and the curvature A.
+def elliptic_placeholders():
+    """Positive symbols K_m = K(m) and D_m = (K(m) - E(m))/m used inside the derivation.
+
+    Working with them keeps the algebra to monomials (fast, no ``simplify``); they are
+    replaced by the elliptic integrals at the end (:func:`hertz_elliptical`), or by
+    Carlson's forms R_F(0, 1-m, 1) and R_D(0, 1-m, 1)/3 for numerics (:mod:`.special`).
+    """
+    return sp.Symbol("K_m", positive=True), sp.Symbol("D_m", positive=True)
+
+
+def hertz_elliptical_monomial():
+    """K_c of an elliptical contact as a monomial in A, E*, K_m = K(m), D_m = (K - E)/m.
 
     Johnson Sec. 4.2 (semi-axes a >= b, b = a sqrt(1 - m), peak pressure p0):
         P = 2/3 pi a b p0,
         delta = p0 b K(m)/E*,
-        A = p0 b (K(m) - E(m))/(E* a^2 m).
-    Eliminating a, b and p0 leaves P = K_c delta^(3/2).  Returns (K_c, E*) with K_c in
-    terms of the symbols m, A and E* (a Symbol named ``E^*``).
+        A = p0 b (K(m) - E(m))/(E* a^2 m) = p0 b D_m/(E* a^2).
+    Eliminating a, b and p0 leaves P = K_c delta^(3/2).  Returns (K_c, E*) with E* a
+    Symbol named ``E^*``.
     """
     s = symbols()
     P, A, m, a, p0 = (s[k] for k in ("P", "A", "m", "a", "p0"))
     Es = sp.Symbol("E^*", positive=True)
-    K, E = sp.elliptic_k(m), sp.elliptic_e(m)
+    K_m, D_m = elliptic_placeholders()
     b_of_a = a * sp.sqrt(1 - m)
-    _, p0_of_a = sp.solve_linear(A - p0 * b_of_a * (K - E) / (Es * a**2 * m), symbols=[p0])
+    _, p0_of_a = sp.solve_linear(A - p0 * b_of_a * D_m / (Es * a**2), symbols=[p0])
     # The load is a^3 times a factor free of a: solve for a^3, take the real cube root.
     per_cube = sp.cancel(sp.Rational(2, 3) * sp.pi * a * b_of_a * p0_of_a / a**3)
     if a in per_cube.free_symbols:  # pragma: no cover - derivation check
         raise RuntimeError("Johnson's load is not proportional to a^3")
     a_of_P = (P / per_cube) ** sp.Rational(1, 3)
-    delta_of_P = (p0_of_a * b_of_a * K / Es).subs(a, a_of_P)
-    # Every factor is positive (P, A, E*, m in (0, 1), K > E), so powers may be merged freely.
+    delta_of_P = (p0_of_a * b_of_a * K_m / Es).subs(a, a_of_P)
+    # Every factor is positive, so powers may be merged freely.
     K_c = sp.powsimp(sp.powdenest(P / delta_of_P ** sp.Rational(3, 2), force=True), force=True)
     return K_c, Es
+
+
+def hertz_elliptical():
+    """K_c of an elliptical contact in terms of m = e^2, the curvature A and E*.
+
+    :func:`hertz_elliptical_monomial` with K_m = K(m) and D_m = (K(m) - E(m))/m: the
+    complete elliptic integrals of Johnson's solution.  Returns (K_c, E*).
+    """
+    m = symbols()["m"]
+    K_c, Es = hertz_elliptical_monomial()
+    K_m, D_m = elliptic_placeholders()
+    K, E = sp.elliptic_k(m), sp.elliptic_e(m)
+    return K_c.subs({K_m: K, D_m: (K - E) / m}), Es
 
 
 def ellipse_shape_ratio():
@@ -186,18 +212,25 @@ def _curvatures():
     return (s["R"], s["r"], s["theta"]), (A, B)
 
 
+def _carlson(expr):
+    """expr with K(m) -> R_F(0, 1-m, 1) and E(m) -> R_F - m R_D(0, 1-m, 1)/3 (DLMF 19.25.1),
+    by way of the placeholders K_m and D_m = (K - E)/m, so that m cancels exactly."""
+    m = symbols()["m"]
+    K_m, D_m = elliptic_placeholders()
+    placeholders = sp.cancel(expr.subs({sp.elliptic_e(m): K_m - m * D_m}).subs({sp.elliptic_k(m): K_m}))
+    return placeholders.subs({K_m: carlson_rf(0, 1 - m, 1), D_m: carlson_rd(0, 1 - m, 1) / 3})
+
+
 @derived
 def _shape_ratio():
-    m = symbols()["m"]
-    return (m,), sp.simplify(to_carlson(ellipse_shape_ratio(), m))
+    return (symbols()["m"],), _carlson(ellipse_shape_ratio())
 
 
 @derived
 def _stiffness_elliptical():
     s = symbols()
     K_c, Es = hertz_elliptical()
-    K_c = sp.simplify(to_carlson(K_c, s["m"]).subs(Es, effective_modulus()))
-    return (s["m"], s["A"], s["E"], s["nu"]), K_c
+    return (s["m"], s["A"], s["E"], s["nu"]), _carlson(K_c).subs(Es, effective_modulus())
 
 
 def minimum_contact_angle(R, r):

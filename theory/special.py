@@ -11,7 +11,7 @@ evaluating them literally loses every digit there.  With Carlson's integrals
     E(m)/(1 - m) - K(m) = m/3 R_D(0, 1, 1 - m),
 
 the factor m cancels symbolically and the generated code is accurate for every
-m in [0, 1).  :func:`to_carlson` performs that rewrite; the tests check the three
+m in [0, 1).  :mod:`.contact` performs that rewrite; the tests check the three
 identities against mpmath.
 """
 
@@ -19,7 +19,7 @@ from __future__ import annotations
 
 from ._codegen import sp
 
-__all__ = ["carlson_rf", "carlson_rd", "hyp2f1", "to_carlson"]
+__all__ = ["carlson_rf", "carlson_rd", "hyp2f1"]
 
 
 def _scipy_function(name: str, scipy_name: str, nargs: int, mpmath_name: str, **extra):
@@ -74,14 +74,3 @@ def hyp2f1(a, b, c, z):
         return sp.hyper([a, b], [c], z)
 
     return _cls("hyp2f1", "hyp2f1", 4, "hyp2f1", _eval_rewrite_as_hyper=_eval_rewrite_as_hyper)(a, b, c, z)
-
-
-def to_carlson(expr, m):
-    """Rewrite ``elliptic_k(m)`` and ``elliptic_e(m)`` in ``expr`` with Carlson's integrals.
-
-    E(m) is replaced by R_F(0, 1-m, 1) - m/3 R_D(0, 1-m, 1), so that K - E becomes
-    m/3 R_D(...) and the factor m cancels on simplification.
-    """
-    rf = carlson_rf(0, 1 - m, 1)
-    rd = carlson_rd(0, 1 - m, 1)
-    return expr.subs({sp.elliptic_k(m): rf, sp.elliptic_e(m): rf - m * rd / 3})
