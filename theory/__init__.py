@@ -11,6 +11,16 @@ Static theory of one contact (paper Sec. II, Eqs. 1-4, App. A):
 - :func:`series_displacement`, :func:`local_exponent`, :func:`crossover_force`,
   :func:`fit_power_law` -- the series law and its power-law reduction (Eqs. 3-4);
 - :class:`Ring`, :class:`Material` -- a ring of the chain and its material.
+
+Long waves (paper Sec. IV.C, App. B; modules :mod:`.longwave` and :mod:`.solitary`):
+
+- :func:`solitary_wave_speed`, :func:`solitary_wave_speed_from_velocity` -- V_s of the
+  compact solitary wave (Eq. vsfm);
+- :func:`solitary_wave_width`, :func:`solitary_wave_profile` -- its support and force profile;
+- :func:`solitary_wave_speed_prestressed`, :func:`linear_sound_speed` -- the wave on a chain
+  pre-stretched by a static force (beyond the paper) and its small-amplitude limit.
+
+The paper's reported numbers (Tables I-II, FE exponents) are data in :mod:`.paper_data`.
 """
 
 from . import paper_data
