@@ -9,3 +9,11 @@ import tempfile
 
 os.environ["RINGCHAIN_CACHE_DIR"] = tempfile.mkdtemp(prefix="ringchain-test-cache-")
 os.environ.setdefault("MPLBACKEND", "Agg")
+
+# Property tests are derandomized (STYLE.md: seeded randomness only): every run, here and in CI,
+# draws the same examples, so a failure reproduces and a green run stays green.  Tests that set
+# their own hypothesis settings inherit this profile for what they leave out.
+from hypothesis import settings  # noqa: E402
+
+settings.register_profile("ringchain", derandomize=True, database=None)
+settings.load_profile("ringchain")

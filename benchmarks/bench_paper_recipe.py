@@ -1,6 +1,6 @@
 """The paper's integration recipe against ringchain's solvers, on the same chain.
 
-Paper Sec. III.B integrates the dual-spring chain (Eq. dual-spring) with
+Paper Sec. III.B integrates the dual-spring chain (Eqs. (5)-(6)) with
 ``scipy.integrate.odeint`` and "a temporal resolution of 10,000 steps per ms".  This
 script runs that recipe on the paper's 20-ring chain (Table I, R/r = 9; K_c and K_b of
 the ring; m_eff/m0 = 0.37; hanging under gravity; 5 cm drop; 2 ms; no dashpots, as the
@@ -37,7 +37,7 @@ STEPS_PER_MS = 10_000  # the paper's output resolution
 
 
 def paper_rhs(chain: Chain, g: float):
-    """Eq. (dual-spring) transcribed ring by ring, as a plain Python loop.
+    """Eqs. (5)-(6) transcribed ring by ring, as a plain Python loop.
 
     State: the 2N site displacements (chain order: lower half w_{j-1}, upper half u_j
     of each ring j) then their velocities; the top ring hangs from a fixed support

@@ -5,7 +5,7 @@ builds the :class:`~ringchain.numerics.models.Lattice` that is integrated.
 
 Site labelling of the dual-spring model
 ---------------------------------------
-The paper (Eq. dual-spring) gives unit cell i two sites of mass m/2, u_i and w_i,
+The paper (Eqs. (5)-(6)) gives unit cell i two sites of mass m/2, u_i and w_i,
 joined by the unilateral Hertz contact F_c(u_i - w_i), while the bidirectional bending
 spring F_b joins w_{i-1} to u_i.  A Hertz contact acts *between* two rings and bending
 acts *inside* one ring, so the paper's cell is not a ring: ring j is the pair
@@ -43,29 +43,50 @@ the slack is taken up, with the free-fall speed sqrt(2 g h) of the real ring
 from __future__ import annotations
 
 import functools
+import math
+import numbers
 from dataclasses import dataclass
 
 import numpy as np
-from ringchain.theory import Ring, n_per_mm_to_si, paper_data
+from ringchain.theory import Ring, linear, n_per_mm_to_si, paper_data
 from ringchain.theory import _validate as v
 
 from .models import STANDARD_GRAVITY, Lattice
 
-__all__ = ["Chain", "MODELS", "SUPPORTS"]
+__all__ = ["Chain", "MODELS", "SUPPORTS", "STIFFNESS_SOURCES"]
 
-#: The two lattice models of paper Sec. III.B.
-MODELS = ("power-law", "dual-spring")
+#: The two lattice models of paper Sec. III.B (named once, in :mod:`ringchain.theory.linear`).
+MODELS = linear.MODELS
 
 #: Boundary at the far end from the impact: hanging from a fixed support, or free.
 SUPPORTS = ("fixed", "free")
 
+#: Sources of the stiffness of :meth:`Chain.from_paper`: the paper's measured power law
+#: (Table I) or the ring's theory (Eqs. 1-4).
+STIFFNESS_SOURCES = ("table", "theory")
+
+
+def _integer(name: str, value) -> int:
+    """``value`` as an int: a whole number (2 or 2.0), not a bool, a string or 2.7 (ValueError naming it)."""
+    if isinstance(value, bool | np.bool_) or not isinstance(value, numbers.Real):
+        raise ValueError(f"{name} must be an integer, got {value!r}")
+    if not math.isfinite(value) or int(value) != value:
+        raise ValueError(f"{name} must be an integer, got {value!r}")
+    return int(value)
+
 
 def _count(name: str, value, minimum: int) -> int:
-    if isinstance(value, bool) or int(value) != value:
-        raise TypeError(f"{name} must be an integer, got {value!r}")
-    if int(value) < minimum:
+    value = _integer(name, value)
+    if value < minimum:
         raise ValueError(f"{name} must be at least {minimum}, got {value}")
-    return int(value)
+    return value
+
+
+def _flag(name: str, value) -> bool:
+    """``value`` as a bool: True or False only (a string such as "no" is refused, not read as true)."""
+    if isinstance(value, bool | np.bool_):
+        return bool(value)
+    raise ValueError(f"{name} must be True or False, got {value!r}")
 
 
 def _choice(name: str, value: str, options) -> str:
@@ -133,6 +154,11 @@ class Chain:
         set_("gamma", float(v.nonnegative("gamma", self.gamma, "N s/m")))
         set_("m_gravity", self.m if self.m_gravity is None else float(v.positive("m_gravity", self.m_gravity, "kg")))
         if self.model == "dual-spring":
+            if self.n != 1.5:
+                raise ValueError(
+                    f"the dual-spring model's contact is Hertz contact, n = 3/2 (Eq. 1); got n = {self.n:g} "
+                    "(a fitted exponent belongs to the power-law model)"
+                )
             if self.K_b is None:
                 raise ValueError("the dual-spring model needs the bending stiffness K_b")
             set_("K_b", float(v.positive("K_b", self.K_b, "N/m")))
@@ -143,7 +169,7 @@ class Chain:
     # -- constructors ------------------------------------------------------------------
     @classmethod
     def power_law(cls, n_rings, K, n, m, a, gamma=0.0, m_gravity=None, *, support="fixed") -> Chain:
-        """Power-law chain, paper Eq. (power law): one mass m per ring, contacts K delta^n.
+        """Power-law chain, paper Eq. (7): one mass m per ring, contacts K delta^n.
 
         Parameters
         ----------
@@ -177,7 +203,7 @@ class Chain:
     def dual_spring(
         cls, n_rings, K_c, K_b, m, a, gamma_c=0.0, gamma_b=0.0, m_gravity=None, *, support="fixed"
     ) -> Chain:
-        """Dual-spring chain, paper Eq. (dual-spring): two masses m/2 per ring.
+        """Dual-spring chain, paper Eqs. (5)-(6): two masses m/2 per ring.
 
         Parameters
         ----------
@@ -273,15 +299,34 @@ class Chain:
 
     @classmethod
     def from_paper(
-        cls, model: str = "power-law", aspect_ratio: float = 9.0, n_rings: int = paper_data.CHAIN_RINGS, **dashpots
+        cls,
+        model: str = "power-law",
+        aspect_ratio: float = 9.0,
+        n_rings: int = paper_data.CHAIN_RINGS,
+        *,
+        stiffness: str | None = None,
+        **dashpots,
     ) -> Chain:
         """The paper's experimental chain: Table I parameters for ``aspect_ratio``.
 
-        The power-law chain takes the measured K (N/mm^n, converted to SI) and n; the
-        dual-spring chain takes K_c and K_b of the ring from the theory (Eqs. 1-2).  Both
-        use the fitted m_eff/m0 as inertial mass and m0 for gravity; the rings are the
-        paper's, r = 2.5 mm, stainless steel.  ``dashpots`` are passed on (default
+        Both models use the fitted m_eff/m0 as inertial mass and m0 for gravity; the rings
+        are the paper's, r = 2.5 mm, stainless steel.  ``dashpots`` are passed on (default
         undamped: the paper does not report its fitted gamma values).
+
+        Parameters
+        ----------
+        model : {"power-law", "dual-spring"}
+        aspect_ratio : float
+            A row of Table I (9, 6 or 5.5).
+        n_rings : int
+        stiffness : {"table", "theory"}, optional
+            "table": the power-law chain takes the measured K (N/mm^n, converted to SI)
+            and n; the dual-spring chain the K_c and K_b whose series law reduces to that
+            power law over 1-100 N
+            (:func:`ringchain.numerics.paper.series_stiffness_for_power_law`).  "theory":
+            the ring's K_c and K_b (Eqs. 1-2), and for the power-law chain the power law
+            fitted to them (Eq. 4).  Default: as the paper did (Sec. III.B), "table" for
+            the power-law chain and "theory" for the dual-spring chain.
 
         Examples
         --------
@@ -291,12 +336,24 @@ class Chain:
         """
         if aspect_ratio not in paper_data.TABLE_I:
             raise ValueError(f"Table I has aspect ratios {sorted(paper_data.TABLE_I)}, got {aspect_ratio!r}")
+        _choice("model", model, MODELS)
+        if stiffness is None:
+            stiffness = "table" if model == "power-law" else "theory"
+        _choice("stiffness", stiffness, STIFFNESS_SOURCES)
         K_mm, n, ratio = paper_data.TABLE_I[aspect_ratio]
         ring = Ring.from_aspect_ratio(aspect_ratio, r=paper_data.TUBE_RADIUS)
+        if stiffness == "theory":
+            return cls.from_ring(ring, n_rings, model, m_eff_ratio=ratio, **dashpots)
+        K_si = float(n_per_mm_to_si(K_mm, n))
         if model == "power-law":
-            K_si = float(n_per_mm_to_si(K_mm, n))
             return cls.from_ring(ring, n_rings, model, m_eff_ratio=ratio, K=K_si, n=n, **dashpots)
-        return cls.from_ring(ring, n_rings, model, m_eff_ratio=ratio, **dashpots)
+        from .paper import series_stiffness_for_power_law
+
+        if "gamma" in dashpots:
+            raise ValueError("K, n and gamma belong to the power-law model; use gamma_c and gamma_b")
+        K_c, K_b = series_stiffness_for_power_law(K_si, n)
+        m0 = ring.mass
+        return cls.dual_spring(n_rings, K_c, K_b, ratio * m0, ring.spacing, m_gravity=m0, **dashpots)
 
     # -- derived quantities -----------------------------------------------------------------
     @property
@@ -357,8 +414,11 @@ class Chain:
         )
 
     def ring_sites(self, i) -> np.ndarray:
-        """Site indices of ring i (one site, or lower and upper half)."""
-        return self.sites_per_ring * np.asarray(i)[..., None] + np.arange(self.sites_per_ring)
+        """Site indices of ring i (one site, or lower and upper half); ``i`` an index or an array of them."""
+        i = np.asarray(i)
+        if i.dtype.kind not in "iu" or np.any((i < 0) | (i >= self.n_rings)):
+            raise ValueError(f"ring indices must be integers in 0..{self.n_rings - 1}, got {i.tolist()!r}")
+        return self.sites_per_ring * i[..., None] + np.arange(self.sites_per_ring)
 
     def static_extension(self, g=STANDARD_GRAVITY, *, first_ring_hanging=True) -> np.ndarray:
         """Bond extensions, m, of the chain hanging at rest from its support.
@@ -374,6 +434,7 @@ class Chain:
             False when ring 0 is held up (lifted for a drop): its weight is then not on
             the chain and its own bonds are unloaded.
         """
+        first_ring_hanging = _flag("first_ring_hanging", first_ring_hanging)
         if self.support != "fixed" and g > 0:
             raise ValueError("a chain with a free far end has no static equilibrium under gravity")
         weights = g * self.lattice.weight_mass

@@ -3,9 +3,9 @@ r"""Equations of motion of the two lattice models of the paper (Sec. III.B), vec
 Both models are a line of point masses ("sites") joined by nearest-neighbour bonds,
 written here in one form, :class:`Lattice`:
 
-- **power-law chain** (paper Eq. power law): one site per ring; every bond is a
+- **power-law chain** (paper Eq. (7)): one site per ring; every bond is a
   unilateral contact with force :func:`power_law_force`, [K delta^n + gamma delta_dot]_+;
-- **dual-spring chain** (paper Eq. dual-spring): two sites of mass m/2 per ring;
+- **dual-spring chain** (paper Eqs. (5)-(6)): two sites of mass m/2 per ring;
   the bonds alternate between the linear, bidirectional bending spring of a ring body
   (:func:`linear_spring_force`, F_b = K_b delta plus its dashpot) and the unilateral
   Hertz contact between rings (:func:`power_law_force` with n = 3/2, K = K_c).
@@ -29,15 +29,16 @@ from dataclasses import dataclass
 
 import numpy as np
 from ringchain.theory import _validate as v
+from ringchain.theory import linear
 
 __all__ = ["STANDARD_GRAVITY", "power_law_force", "linear_spring_force", "Lattice"]
 
-#: Standard acceleration of gravity, m/s^2 (CGPM 1901, exact by definition).
-STANDARD_GRAVITY = 9.80665
+#: Standard acceleration of gravity, m/s^2 (CGPM 1901, exact by definition; defined in :mod:`ringchain.theory.linear`).
+STANDARD_GRAVITY = linear.STANDARD_GRAVITY
 
 
 def power_law_force(delta, delta_rate=0.0, *, K, n, gamma=0.0):
-    """Force of an interlocked contact in tension, with its dashpot (paper Eq. power law).
+    """Force of an interlocked contact in tension, with its dashpot (paper Eq. (7)).
 
     Parameters
     ----------
@@ -77,6 +78,7 @@ def power_law_force(delta, delta_rate=0.0, *, K, n, gamma=0.0):
     K = v.positive("K", K, "N/m^n")
     n = v.in_range("n", n, 1.0, np.inf, closed_low=True, closed_high=False)
     gamma = v.nonnegative("gamma", gamma, "N s/m")
+    _broadcastable(delta=delta, delta_rate=delta_rate, K=K, n=n, gamma=gamma)
     engaged = delta > 0
     force = K * np.where(engaged, delta, 0.0) ** n + gamma * delta_rate
     return np.where(engaged, np.maximum(force, 0.0), 0.0)
@@ -110,7 +112,17 @@ def linear_spring_force(delta, delta_rate=0.0, *, K, gamma=0.0):
     delta_rate = v.as_float("delta_rate", delta_rate)
     K = v.positive("K", K, "N/m")
     gamma = v.nonnegative("gamma", gamma, "N s/m")
+    _broadcastable(delta=delta, delta_rate=delta_rate, K=K, gamma=gamma)
     return K * delta + gamma * delta_rate
+
+
+def _broadcastable(**arrays) -> None:
+    """Raise a ValueError naming the arguments and their shapes if they do not broadcast together."""
+    try:
+        np.broadcast_shapes(*(a.shape for a in arrays.values()))
+    except ValueError:
+        shapes = ", ".join(f"{name} {a.shape}" for name, a in arrays.items() if a.ndim)
+        raise ValueError(f"the arguments' shapes do not broadcast together: {shapes}") from None
 
 
 @dataclass(frozen=True, eq=False)
@@ -196,10 +208,14 @@ class Lattice:
         return out
 
     # -- forces ----------------------------------------------------------------------
-    def bond_forces(self, e, e_rate=None):
-        """Bond forces, N, positive in tension, from extensions (and their rates if damped)."""
+    def bond_forces(self, e, e_rate=None, bonds=None):
+        """Bond forces, N, positive in tension, from extensions (and their rates if damped).
+
+        ``bonds`` (an index array) says which bonds the last axis of ``e`` holds; default
+        every bond.
+        """
         f = np.empty_like(e)
-        self._bond_forces_into(e, e_rate, f, np.empty_like(e))
+        self._bond_forces_into(e, e_rate, f, np.empty_like(e), bonds=bonds)
         return f
 
     def elastic_forces(self, e):
@@ -208,18 +224,22 @@ class Lattice:
         self._bond_forces_into(e, None, f, np.empty_like(e), elastic_only=True)
         return f
 
-    def _bond_forces_into(self, e, e_rate, f, work, elastic_only=False):
+    def _bond_forces_into(self, e, e_rate, f, work, elastic_only=False, bonds=None):
+        K_contact, K_spring, gamma_contact, gamma_spring = (
+            (self.K_contact, self.K_spring, self.gamma_contact, self.gamma_spring) if bonds is None else
+            (self.K_contact[bonds], self.K_spring[bonds], self.gamma_contact[bonds], self.gamma_spring[bonds])
+        )  # fmt: skip
         np.maximum(e, 0.0, out=work)
         np.power(work, self.n, out=work)
-        work *= self.K_contact
+        work *= K_contact
         if self.damped and not elastic_only:
-            work += self.gamma_contact * e_rate
+            work += gamma_contact * e_rate
             np.maximum(work, 0.0, out=work)
             work[e <= 0] = 0.0
         if self._has_springs:
-            np.multiply(e, self.K_spring, out=f)
+            np.multiply(e, K_spring, out=f)
             if self.damped and not elastic_only:
-                f += self.gamma_spring * e_rate
+                f += gamma_spring * e_rate
             f += work
         else:
             f[...] = work

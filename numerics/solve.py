@@ -14,6 +14,9 @@ support in static equilibrium (each contact carries the weight below it,
   taken up: the lift above the hanging position is h plus the static extension of
   contact 0, a few micrometres.
 
+Any other state (a wave packet on a pre-stretched chain, say) is given as
+``initial=(x0, u0)``, the site displacements and velocities.
+
 Solvers.  ``method`` is "odeint" (the default: ODEPACK's LSODA driven by
 :func:`scipy.integrate.odeint`, whose stepping loop runs in Fortran), a method of
 :func:`scipy.integrate.solve_ivp` ("LSODA", the same integrator stepped from Python,
@@ -28,21 +31,35 @@ absolute tolerance.  scipy's error norm is a root mean square over the
 whole state, so in a very long chain, where the pulse occupies a few of many rings, the
 control is looser per active ring than ``rtol`` suggests; Verlet has no such effect.
 A batch of runs of one chain is integrated as one array problem (:func:`simulate_batch`).
+
+Checks.  The settings are validated before any work: ``dt`` must lie below the stability
+limit 2/omega_max of velocity Verlet (omega_max, the fastest linearised mode at four
+times the estimated peak force, :func:`_verlet_step`), ``steps_per_period`` above pi, and
+the tolerances within :data:`TOLERANCE_RANGE`.  The memory the run keeps and, for
+Verlet, its work (steps x sites x runs) are estimated first (:func:`estimate_run`); a
+run that would not fit in the memory available, or would take hours, is refused with a
+message saying how to make it smaller (``rings``: record only the rings read;
+``n_samples``).  During the run the energy budget is watched: a state that turns
+non-finite, or a total energy (dissipated energy included) that drifts from its
+initial value by more than ``max_energy_drift`` times the impact energy, stops the run
+with an :class:`IntegrationError` rather than returning an unstable result.
 """
 
 from __future__ import annotations
 
 import csv
 import functools
+import math
+import os
+import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 from ringchain.theory import _validate as v
-from ringchain.theory import paper_data
-from scipy.integrate import odeint, solve_ivp
+from scipy.integrate import ODEintWarning, odeint, solve_ivp
 
 from . import signals
-from .chain import Chain
+from .chain import Chain, _flag, _integer
 from .models import STANDARD_GRAVITY
 
 __all__ = [
@@ -52,12 +69,17 @@ __all__ = [
     "Simulation",
     "BatchSimulation",
     "EnergyBudget",
-    "paper_experiment",
-    "PaperExperiment",
+    "RunEstimate",
+    "estimate_run",
+    "IntegrationError",
+    "RunTooLargeError",
     "ADAPTIVE_METHODS",
     "DEFAULT_METHOD",
     "DEFAULT_RTOL",
     "VERLET_STEPS_PER_PERIOD",
+    "TOLERANCE_RANGE",
+    "ENERGY_DRIFT_LIMIT",
+    "DEFAULT_MAX_SECONDS",
 ]
 
 #: Default integrator (see benchmarks/bench_paper_recipe.py for the choice).
@@ -79,22 +101,70 @@ VERLET_STEPS_PER_PERIOD = 60
 ADAPTIVE_METHODS = ("odeint", "LSODA", "DOP853", "RK45", "RK23")
 
 
-def _odeint(rhs, y0, t_eval, rtol, atol, bandwidth):
-    """LSODA through :func:`scipy.integrate.odeint`: (states of shape (len(y0), len(t)), nfev).
+#: Range of ``rtol`` of the adaptive methods (``atol``, relative to the run's scales, may
+#: not exceed its top).  Below 1e-13 LSODA refuses the tolerance as beyond double
+#: precision ("illegal input" at 1e-14) and scipy's Runge-Kutta methods raise it to
+#: 2.2e-14; above 1e-3 the error control no longer controls: over 2 ms of the paper's
+#: chain, rtol = 1e-3 leaves sensor errors of 3-8% of the peak and 1e-2 of 15-28%
+#: (measured against rtol = 1e-12; tests/numerics/test_solve.py checks the range's ends).
+TOLERANCE_RANGE = (1e-13, 1e-3)
 
-    The state y0 is at t = 0; odeint's first output time is its initial time, so 0 is
-    put in front of ``t_eval`` when it starts later and its row dropped.  The Jacobian is
-    banded, as for solve_ivp's LSODA.  A failure (too much work, tolerance too small) is
-    an error.
+#: Largest drift of the total energy (dissipated energy included) from its initial
+#: value, as a fraction of the impact energy m v^2/2, before a run is stopped as unstable
+#: or inaccurate.  The default settings drift by ~1e-8 (LSODA) and ~1e-4 (Verlet, 60 steps
+#: per period); an unstable Verlet step grows without bound; rtol = 1e-2 drifts by 7-19%.
+ENERGY_DRIFT_LIMIT = 1e-2
+
+#: Estimated duration (s) above which a run is refused unless ``max_seconds`` is raised
+#: (:func:`estimate_run`).
+DEFAULT_MAX_SECONDS = 3600.0
+
+# Rough cost of one Verlet step: a fixed overhead plus a cost per site and run, measured on
+# a 2-core machine (benchmarks/bench_batch.py gives this machine's numbers); only used to
+# turn a number of steps into an order of magnitude of seconds.
+_SECONDS_PER_STEP = 1.5e-5
+_SECONDS_PER_SITE_STEP = 2e-8
+
+# Most LSODA steps between two samples (odeint's mxstep); a run that needs more fails.
+_MAX_STEPS_PER_SAMPLE = 1_000_000
+
+# Most bytes of full states one adaptive solver call returns; longer records are
+# integrated in consecutive chunks of samples (the solver restarts at each chunk).
+_CHUNK_BYTES = 256 * 2**20
+
+
+class IntegrationError(ValueError):
+    """The integrator failed, or its result is unstable (non-finite, or the energy drifted)."""
+
+
+class RunTooLargeError(ValueError):
+    """A run that would need more memory or time than allowed; the message says how to shrink it."""
+
+
+def _odeint(rhs, y0, t0, times, rtol, atol, bandwidth):
+    """LSODA through :func:`scipy.integrate.odeint` from state ``y0`` at ``t0``.
+
+    Returns the states at ``times`` (shape (len(y0), len(times))) and the number of
+    right-hand-side calls.  odeint's first output time is its initial time, so ``t0`` is
+    put in front of ``times`` when they start later and its row dropped.  The Jacobian is
+    banded, as for solve_ivp's LSODA.  A failure raises :class:`IntegrationError` with
+    ODEPACK's reason.
     """
     lower, upper = bandwidth
-    prepend = t_eval[0] > 0
-    times = np.concatenate([[0.0], t_eval]) if prepend else t_eval
-    y, info = odeint(
-        rhs, y0, times, rtol=rtol, atol=atol, ml=lower, mu=upper, tfirst=True, full_output=True, mxstep=1_000_000
-    )
+    prepend = times[0] > t0
+    grid = np.concatenate([[t0], times]) if prepend else times
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ODEintWarning)  # its message is in the error below
+        y, info = odeint(
+            rhs, y0, grid, rtol=rtol, atol=atol, ml=lower, mu=upper, tfirst=True, full_output=True,
+            mxstep=_MAX_STEPS_PER_SAMPLE,
+        )  # fmt: skip
     if info["message"] != "Integration successful.":
-        raise RuntimeError(f"odeint failed: {info['message']}")
+        raise IntegrationError(
+            f"odeint (LSODA) failed between t = {t0:g} s and {grid[-1]:g} s: {info['message']} "
+            f"(rtol = {rtol:g}); the chain may be too stiff for these tolerances: try method='verlet', "
+            "a larger rtol or atol, or more samples"
+        )
     return y[int(prepend) :].T, int(info["nfe"][-1])
 
 
@@ -102,11 +172,14 @@ def _odeint(rhs, y0, t_eval, rtol, atol, bandwidth):
 def _impact_speeds(impact_velocities, drop_heights, g):
     if impact_velocities is not None and drop_heights is not None:
         raise ValueError("give an impact velocity or a drop height, not both")
-    if drop_heights is not None:
-        h = np.atleast_1d(v.nonnegative("drop_height", drop_heights, "m"))
-        return np.sqrt(2.0 * g * h), True
-    if impact_velocities is not None:
-        return np.atleast_1d(v.nonnegative("impact_velocity", impact_velocities, "m/s")), False
+    for name, values, unit in (("drop_height", drop_heights, "m"), ("impact_velocity", impact_velocities, "m/s")):
+        if values is None:
+            continue
+        values = np.atleast_1d(v.nonnegative(name, values, unit))
+        if values.ndim != 1 or values.size == 0:
+            raise ValueError(f"{name} must be one value or a 1-d array of values (one per run), got shape "
+                             f"{values.shape}")  # fmt: skip
+        return (np.sqrt(2.0 * g * values), True) if name == "drop_height" else (values, False)
     return np.zeros(1), False
 
 
@@ -140,6 +213,7 @@ def initial_state(chain: Chain, *, impact_velocity=None, drop_height=None, gravi
     """
     g = float(v.positive("g", g, "m/s^2"))
     speeds, dropped = _impact_speeds(impact_velocity, drop_height, g)
+    gravity = _flag("gravity", gravity)
     g_static = g if gravity else 0.0
     if gravity and chain.support != "fixed":
         raise ValueError("gravity needs the chain to hang from a fixed support (support='fixed')")
@@ -180,44 +254,137 @@ def _verlet_step(chain: Chain, X, steps_per_period) -> float:
     return 2.0 * np.pi / omega_max / steps_per_period
 
 
-def _verlet(lat, x0, u0, t_eval, t_end, dt, g):
-    """Velocity Verlet (leapfrog form), sampled at ``t_eval`` by cubic Hermite interpolation."""
-    n_steps = max(1, int(np.ceil(t_end / dt)))
+def _energy_budget(lat, x, u, x_start, g, dissipated) -> EnergyBudget:
+    """Energies of states x, u (shape (..., n_sites)), gravity measured from ``x_start``."""
+    e = lat.extension(x)
+    return EnergyBudget(
+        kinetic=lat.kinetic_energy(u),
+        contact=lat.contact_energy(e),
+        bending=lat.spring_energy(e),
+        gravity=lat.gravity_energy(x - x_start, g),
+        dissipated=dissipated,
+    )
+
+
+class _EnergyWatch:
+    """Stops a run whose state turns non-finite or whose total energy drifts (module notes)."""
+
+    def __init__(self, lat, x0, u0, g, scale, limit, advice):
+        self.lat, self.x0, self.g, self.scale, self.limit, self.advice = lat, x0, g, scale, limit, advice
+        self.initial = _energy_budget(lat, x0, u0, x0, g, 0.0).total
+
+    def __call__(self, t, x, u, dissipated=0.0):
+        if not (np.all(np.isfinite(x)) and np.all(np.isfinite(u))):
+            raise IntegrationError(f"the state became non-finite by t = {t:g} s: the integration is unstable; "
+                                   f"{self.advice}")  # fmt: skip
+        if self.limit is None:
+            return
+        total = _energy_budget(self.lat, x, u, self.x0, self.g, dissipated).total
+        drift = float(np.max(np.abs(total - self.initial) / self.scale))
+        if not drift <= self.limit:
+            raise IntegrationError(
+                f"the total energy drifted by {drift:.3g} times the impact energy by t = {t:g} s "
+                f"(max_energy_drift = {self.limit:g}): the integration is unstable or inaccurate; {self.advice}"
+            )
+
+
+#: Energy checks per Verlet run (each costs about one step).
+_WATCHES = 16
+
+
+def _verlet(lat, x0, u0, t_eval, t_end, dt, g, keep, watch):
+    """Velocity Verlet (leapfrog form), sampled at ``t_eval`` by cubic Hermite interpolation.
+
+    Returns x and u of the sites ``keep`` (all if None), shape (B, len(t_eval), K), and stats.
+    """
+    n_steps = max(1, math.ceil(t_end / dt))
     dt = t_end / n_steps
     accelerations_into = lat.stepper(x0.shape[:-1], g)
     x, u = x0.copy(), u0.copy()
     a = np.empty_like(x)
     accelerations_into(x, None, a)
+    sel = slice(None) if keep is None else keep
     T = t_eval.size
-    xs = np.empty((T, *x.shape))
-    us = np.empty((T, *x.shape))
+    xs = np.empty((x.shape[0], T, x[:, sel].shape[-1]))
+    us = np.empty_like(xs)
     # Sample j lies in step k(j): t_k < t_j <= t_{k+1} (t_j = 0 is step "-1": the start).
     step_of = np.ceil(t_eval / dt - 1e-9).astype(int) - 1
     theta = t_eval / dt - step_of
     j = 0
     while j < T and step_of[j] < 0:
-        xs[j], us[j] = x, u
+        xs[:, j], us[:, j] = x[:, sel], u[:, sel]
         j += 1
     half = 0.5 * dt
     u_half = u + half * a  # u at t + dt/2
     kick = np.empty_like(x)
+    check_every = max(1, n_steps // _WATCHES)
     for k in range(n_steps):
-        x_prev, u_prev = (x.copy(), u_half - half * a) if j < T and step_of[j] == k else (None, None)
+        sampling = j < T and step_of[j] == k
+        if sampling:
+            x_prev, u_prev = x[:, sel].copy(), u_half[:, sel] - half * a[:, sel]
         np.multiply(u_half, dt, out=kick)
         x += kick
         accelerations_into(x, None, a)
-        if x_prev is not None:
-            u_now = u_half + half * a
+        if sampling:
+            x_now, u_now = x[:, sel], u_half[:, sel] + half * a[:, sel]
             while j < T and step_of[j] == k:
                 s = theta[j]
                 h00, h10, h01, h11 = 2 * s**3 - 3 * s**2 + 1, s**3 - 2 * s**2 + s, -2 * s**3 + 3 * s**2, s**3 - s**2
                 d00, d10, d01, d11 = 6 * s**2 - 6 * s, 3 * s**2 - 4 * s + 1, -6 * s**2 + 6 * s, 3 * s**2 - 2 * s
-                xs[j] = h00 * x_prev + h10 * dt * u_prev + h01 * x + h11 * dt * u_now
-                us[j] = (d00 * x_prev + d01 * x) / dt + d10 * u_prev + d11 * u_now
+                xs[:, j] = h00 * x_prev + h10 * dt * u_prev + h01 * x_now + h11 * dt * u_now
+                us[:, j] = (d00 * x_prev + d01 * x_now) / dt + d10 * u_prev + d11 * u_now
                 j += 1
+        if (k + 1) % check_every == 0 or k == n_steps - 1:
+            watch((k + 1) * dt, x, u_half + half * a)
         np.multiply(a, dt, out=kick)
         u_half += kick
     return xs, us, {"method": "verlet", "dt": dt, "nfev": n_steps + 1}
+
+
+def _solve_ivp(rhs, method, y0, t0, times, rtol, atol, bandwidth):
+    """A :func:`scipy.integrate.solve_ivp` method from ``y0`` at ``t0``: (states at ``times``, nfev)."""
+    band = dict(zip(("lband", "uband"), bandwidth, strict=True)) if method == "LSODA" else {}
+    sol = solve_ivp(rhs, (t0, times[-1]), y0, method=method, t_eval=times, rtol=rtol, atol=atol, **band)
+    if not sol.success:
+        raise IntegrationError(
+            f"solve_ivp ({method}) stopped before t = {times[-1]:g} s: {sol.message} (rtol = {rtol:g}); "
+            "try method='odeint' or 'verlet', or other tolerances"
+        )
+    return sol.y, sol.nfev
+
+
+def _adaptive(method, lat, y0, t_eval, rtol, atol, n_runs, g, keep, watch):
+    """An adaptive method over ``t_eval``, in chunks of samples of at most :data:`_CHUNK_BYTES` of states.
+
+    Returns x and u of the sites ``keep`` (all if None), shape (B, T, K), the dissipated
+    energy (B, T) and stats.
+    """
+    rhs = lat.first_order_rhs(n_runs, g)
+    B, S, T = n_runs, lat.n_sites, t_eval.size
+    n_xu = 2 * B * S
+    sel = slice(None) if keep is None else keep
+    K = S if keep is None else keep.size
+    xs, us = np.empty((B, T, K)), np.empty((B, T, K))
+    dissipated = np.zeros((B, T))
+    chunk = max(1, _CHUNK_BYTES // (8 * y0.size))
+    t_prev, y_prev, nfev = 0.0, y0, 0
+    for j0 in range(0, T, chunk):
+        times = t_eval[j0 : j0 + chunk]
+        if times[-1] <= t_prev:  # only the initial state is asked for
+            y, calls = y_prev[:, None], 0
+        elif method == "odeint":
+            y, calls = _odeint(rhs, y_prev, t_prev, times, rtol, atol, lat.BANDWIDTH)
+        else:
+            y, calls = _solve_ivp(rhs, method, y_prev, t_prev, times, rtol, atol, lat.BANDWIDTH)
+        nfev += calls
+        states = y[:n_xu].reshape(B, S, 2, -1)
+        xs[:, j0 : j0 + times.size] = states[:, sel, 0, :].transpose(0, 2, 1)
+        us[:, j0 : j0 + times.size] = states[:, sel, 1, :].transpose(0, 2, 1)
+        if y.shape[0] > n_xu:
+            dissipated[:, j0 : j0 + times.size] = y[n_xu:]
+        y_prev, t_prev = y[:, -1].copy(), float(times[-1])
+        watch(t_prev, states[:, :, 0, -1], states[:, :, 1, -1], y[n_xu:, -1] if y.shape[0] > n_xu else 0.0)
+    return xs, us, dissipated, {"method": method, "rtol": rtol, "nfev": nfev}
 
 
 def _check_t_eval(t_eval, t_end, n_samples):
@@ -225,16 +392,302 @@ def _check_t_eval(t_eval, t_end, n_samples):
         return np.linspace(0.0, t_end, _count_samples(n_samples))
     t_eval = v.as_float("t_eval", t_eval)
     if t_eval.ndim != 1 or t_eval.size < 1:
-        raise ValueError("t_eval must be a 1-d array of times")
+        raise ValueError(f"t_eval must be a 1-d array of times, got shape {t_eval.shape}")
     if np.any(np.diff(t_eval) <= 0) or t_eval[0] < 0 or t_eval[-1] > t_end:
-        raise ValueError("t_eval must be increasing and lie within [0, t_end]")
+        raise ValueError(f"t_eval must be increasing and lie within [0, t_end] = [0, {t_end:g}] s")
     return t_eval
 
 
 def _count_samples(n):
-    if int(n) != n or n < 3:
-        raise ValueError(f"n_samples must be an integer >= 3, got {n!r}")
-    return int(n)
+    n = _integer("n_samples", n)
+    if n < 3:
+        raise ValueError(f"n_samples must be at least 3, got {n}")
+    return n
+
+
+def _rtol(value) -> float:
+    value = float(v.as_float("rtol", value))
+    low, high = TOLERANCE_RANGE
+    if not low <= value <= high:
+        raise ValueError(
+            f"rtol must lie in [{low:g}, {high:g}], got {value:g}: below, the tolerance is beyond double precision; "
+            "above, the error control no longer controls (TOLERANCE_RANGE)"
+        )
+    return value
+
+
+# -- what a run will cost ----------------------------------------------------------------------
+@dataclass(frozen=True)
+class RunEstimate:
+    """What a run will take, estimated before it starts (:func:`estimate_run`).
+
+    Attributes
+    ----------
+    method : str
+    runs, sites, samples : int
+        Runs of the batch, lattice sites of the chain, samples of the record.
+    recorded_sites : int
+        Sites whose x and u are kept (all, or those the sensors of ``rings`` need).
+    steps : int or None
+        Verlet steps (None for an adaptive method, which chooses them as it goes).
+    dt : float or None
+        Verlet step, s.
+    memory : int
+        Bytes: the record (x, u and the dissipated energy), the forces derived from it,
+        and the solver's own arrays.
+    """
+
+    method: str
+    runs: int
+    sites: int
+    samples: int
+    recorded_sites: int
+    steps: int | None
+    dt: float | None
+    memory: int
+
+    @property
+    def work(self) -> int | None:
+        """Steps x sites x runs (Verlet), or None."""
+        return None if self.steps is None else self.steps * self.sites * self.runs
+
+    @property
+    def seconds(self) -> float | None:
+        """Rough duration of a Verlet run, s, at the per-step costs measured on a 2-core machine."""
+        if self.steps is None:
+            return None
+        return self.steps * (_SECONDS_PER_STEP + _SECONDS_PER_SITE_STEP * self.sites * self.runs)
+
+    def describe(self, memory=True) -> str:
+        """One line: the run's size, work, rough duration and (unless ``memory`` is False) memory."""
+        size = f"{self.runs} run(s) x {self.sites} sites x {self.samples} samples"
+        work = "" if self.steps is None else (
+            f", {self.steps:.3g} Verlet steps of {self.dt:.3g} s = {self.work:.3g} site-steps (roughly "
+            f"{_duration(self.seconds)})")  # fmt: skip
+        return f"{size}{work}" + (f", {_bytes(self.memory)} of memory" if memory else "")
+
+
+def _bytes(n) -> str:
+    for unit, size in (("GB", 2**30), ("MB", 2**20), ("kB", 2**10)):
+        if n >= size:
+            return f"{n / size:.3g} {unit}"
+    return f"{n:.0f} B"
+
+
+def _duration(seconds) -> str:
+    for unit, size in (("days", 86400.0), ("h", 3600.0), ("min", 60.0)):
+        if seconds >= size:
+            return f"{seconds / size:.3g} {unit}"
+    return f"{seconds:.3g} s"
+
+
+def _available_memory() -> int | None:
+    """Bytes of memory this process can still take: MemAvailable, capped by ulimit -v and a cgroup limit.
+
+    None if none of them can be read.
+    """
+    available = None
+    try:
+        with open("/proc/meminfo") as handle:
+            for line in handle:
+                if line.startswith("MemAvailable:"):
+                    available = int(line.split()[1]) * 1024
+    except (OSError, ValueError, IndexError):
+        try:
+            available = os.sysconf("SC_AVPHYS_PAGES") * os.sysconf("SC_PAGE_SIZE")
+        except (OSError, ValueError, AttributeError):
+            pass
+    try:  # an address-space limit (ulimit -v) less what the process already maps
+        import resource
+
+        soft, _ = resource.getrlimit(resource.RLIMIT_AS)
+        if soft != resource.RLIM_INFINITY:
+            with open("/proc/self/statm") as handle:
+                mapped = int(handle.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
+            available = soft - mapped if available is None else min(available, soft - mapped)
+    except (ImportError, OSError, ValueError):
+        pass
+    try:
+        with open("/sys/fs/cgroup/memory.max") as handle:
+            limit = handle.read().strip()
+        with open("/sys/fs/cgroup/memory.current") as handle:
+            used = int(handle.read().strip())
+        if limit != "max":
+            free = int(limit) - used
+            available = free if available is None else min(available, free)
+    except (OSError, ValueError):
+        pass
+    return available
+
+
+def _sensor_bonds(chain: Chain, rings: np.ndarray):
+    """Bonds read by the sensors of ``rings`` and their weights, each of shape (len(rings), 2).
+
+    The dual-spring sensor is ring j's bending bond 2j; the power-law sensor is the mean
+    of the bonds below (j - 1) and above (j) ring j (see :attr:`Simulation.sensor_force`).
+    A bond that does not exist (below ring 0, above a free top ring) has weight 0.
+    """
+    rings = np.asarray(rings, dtype=int)
+    if chain.model == "dual-spring":
+        bonds = np.stack([2 * rings, 2 * rings], axis=-1)
+        weights = np.broadcast_to([1.0, 0.0], bonds.shape)
+        return bonds, weights
+    n_bonds = chain.lattice.n_bonds
+    below, above = rings - 1, rings
+    has_below, has_above = below >= 0, above < n_bonds
+    bonds = np.stack([np.where(has_below, below, above), np.where(has_above, above, below)], axis=-1)
+    weights = 0.5 * np.stack([has_below, has_above], axis=-1)
+    return bonds, weights
+
+
+def _ring_index(chain: Chain, ring) -> int:
+    i = _integer("ring", ring)
+    if not 0 <= i < chain.n_rings:
+        raise ValueError(f"ring {i} is not in a chain of {chain.n_rings} rings (0..{chain.n_rings - 1})")
+    return i
+
+
+def _sensor_pair(sensors, n_rings=None) -> tuple[int, int]:
+    """Two sensor rings, near then far from the impact, within ``n_rings`` if given (ValueError saying why)."""
+    if isinstance(sensors, str) or np.ndim(sensors) != 1 or len(sensors) != 2:
+        raise ValueError(f"sensors must be two rings, near then far from the impact, got {sensors!r}")
+    near, far = (_integer("sensor ring", s) for s in sensors)
+    if not 0 <= near < far:
+        raise ValueError(f"sensors must be two rings, near then far, counted from 0, got {tuple(sensors)!r}")
+    if n_rings is not None and far >= n_rings:
+        raise ValueError(f"sensor ring {far} is not in a chain of {n_rings} rings (0..{n_rings - 1})")
+    return near, far
+
+
+def _rings(chain: Chain, rings) -> tuple | None:
+    """The rings to record, sorted, or None for all."""
+    if rings is None:
+        return None
+    values = [rings] if np.ndim(rings) == 0 else list(rings)
+    if not values:
+        raise ValueError("rings must name at least one ring (or be None for every ring)")
+    return tuple(sorted({_ring_index(chain, r) for r in values}))
+
+
+def _recorded_sites(chain: Chain, rings) -> np.ndarray | None:
+    """Sites whose x and u the sensors of ``rings`` need (sorted), or None for every site."""
+    if rings is None:
+        return None
+    bonds, weights = _sensor_bonds(chain, np.array(rings))
+    used = bonds[weights > 0]
+    sites = np.concatenate([used, used + 1])
+    return np.unique(sites[sites < chain.n_sites])
+
+
+def _initial_arrays(chain: Chain, initial):
+    """``initial = (x0, u0)`` validated and stacked into two arrays of shape (B, n_sites)."""
+    try:
+        x0, u0 = initial
+    except (TypeError, ValueError):
+        raise TypeError("initial must be a pair (x0, u0): site displacements (m) and velocities (m/s)") from None
+    arrays = []
+    for name, value in (("displacements x0", x0), ("velocities u0", u0)):
+        array = v.as_float(f"initial {name}", value)
+        if array.ndim not in (1, 2) or array.shape[-1] != chain.n_sites:
+            raise ValueError(
+                f"initial {name} must have shape (n_sites,) or (B, n_sites) with n_sites = {chain.n_sites}, "
+                f"got {array.shape}"
+            )
+        arrays.append(np.atleast_2d(array))
+    try:
+        x0, u0 = np.broadcast_arrays(*arrays)
+    except ValueError:
+        raise ValueError(
+            f"initial displacements and velocities give different numbers of runs: {arrays[0].shape[0]} and "
+            f"{arrays[1].shape[0]}"
+        ) from None
+    return np.array(x0, dtype=float), np.array(u0, dtype=float)
+
+
+def _prepare(chain, t_end, impact_velocities, drop_heights, gravity, t_eval, n_samples, method, rtol, atol, dt,
+             steps_per_period, g, rings, initial=None):  # fmt: skip
+    """Validate a run's inputs and estimate its cost; returns (RunEstimate, everything the run needs)."""
+    if not isinstance(chain, Chain):
+        raise TypeError(f"chain must be a Chain, got {type(chain).__name__}")
+    t_end = float(v.positive("t_end", t_end, "s"))
+    t_eval = _check_t_eval(t_eval, t_end, n_samples)
+    g = float(v.positive("g", g, "m/s^2"))
+    gravity = _flag("gravity", gravity)
+    if not isinstance(method, str) or method not in (*ADAPTIVE_METHODS, "verlet"):
+        raise ValueError(f"method must be one of {(*ADAPTIVE_METHODS, 'verlet')}, got {method!r}")
+    if initial is None:
+        x0, u0 = initial_state(chain, impact_velocity=impact_velocities, drop_height=drop_heights, gravity=gravity, g=g)
+    elif impact_velocities is not None or drop_heights is not None:
+        raise ValueError("give an initial state or an impact (impact_velocities, drop_heights), not both")
+    else:
+        x0, u0 = _initial_arrays(chain, initial)
+    B, S = x0.shape
+    scales = _scales(chain, x0, np.max(np.abs(u0), axis=-1), g)  # = the impact speeds for an impact
+    rings = _rings(chain, rings)
+    keep = _recorded_sites(chain, rings)
+    K = S if keep is None else keep.size
+    T = t_eval.size
+    steps = None
+    if method == "verlet":
+        if chain.damped:
+            raise ValueError("Verlet integrates undamped chains only (the dashpots make forces depend on velocity)")
+        X = float(scales[0].max())
+        limit = _verlet_step(chain, X, np.pi)  # 2/omega_max: the stability limit of velocity Verlet
+        if dt is None:
+            sp = float(v.as_float("steps_per_period", steps_per_period))
+            if not sp > np.pi:
+                raise ValueError(
+                    f"steps_per_period must exceed pi, the stability limit of velocity Verlet (omega dt < 2), "
+                    f"got {sp:g} (default {VERLET_STEPS_PER_PERIOD})"
+                )
+            dt = _verlet_step(chain, X, sp)
+        else:
+            dt = float(v.positive("dt", dt, "s"))
+            if dt >= limit:
+                raise ValueError(
+                    f"dt = {dt:g} s is above the stability limit of velocity Verlet on this chain, 2/omega_max = "
+                    f"{limit:.3g} s (omega_max: the fastest linearised mode at four times the estimated peak force); "
+                    f"the default step is {_verlet_step(chain, X, VERLET_STEPS_PER_PERIOD):.3g} s"
+                )
+        steps = max(1, math.ceil(t_end / dt))
+        solver = 8 * 12 * B * S  # state, accelerations, work arrays of the stepper
+    else:
+        rtol = _rtol(rtol)
+        atol = rtol if atol is None else float(v.in_range("atol", atol, 0.0, TOLERANCE_RANGE[1]))
+        n_state = 2 * B * S + (B if chain.lattice.damped else 0)
+        solver = 8 * n_state * (2 * min(T, max(1, _CHUNK_BYTES // (8 * n_state))) + 30)  # output, copies, LSODA
+    derived = (chain.lattice.n_bonds if rings is None else 2 * len(rings)) * 8 * B * T  # forces derived later
+    memory = 8 * B * T * (2 * K + 1) + derived + solver
+    estimate = RunEstimate(method, B, S, T, K, steps, dt, int(memory))
+    prepared = dict(t_end=t_end, t_eval=t_eval, g=g, gravity=gravity, x0=x0, u0=u0, scales=scales, rings=rings,
+                    keep=keep, dt=dt, rtol=rtol, atol=atol)  # fmt: skip
+    return estimate, prepared
+
+
+def estimate_run(chain: Chain, t_end, *, impact_velocities=None, drop_heights=None, gravity=True, t_eval=None,
+                 n_samples=2001, method=DEFAULT_METHOD, rtol=DEFAULT_RTOL, atol=None, dt=None,
+                 steps_per_period=VERLET_STEPS_PER_PERIOD, g=STANDARD_GRAVITY, rings=None,
+                 initial=None) -> RunEstimate:  # fmt: skip
+    """Size, memory and (for Verlet) work and rough duration of a run, before running it.
+
+    Takes the arguments of :func:`simulate_batch` and validates them as it does.
+
+    Returns
+    -------
+    RunEstimate
+        ``memory`` in bytes; ``steps``, ``work`` (steps x sites x runs) and a rough
+        ``seconds`` for Verlet; ``describe()`` puts them in one line.
+
+    Examples
+    --------
+    >>> chain = Chain.dual_spring(100_000, K_c=7.5e9, K_b=3.3e6, m=8.2e-3, a=0.04)
+    >>> full = estimate_run(chain, 2e-3, drop_heights=0.05, method="verlet")
+    >>> sensors = estimate_run(chain, 2e-3, drop_heights=0.05, method="verlet", rings=[6, 12])
+    >>> round(full.memory / 2**30, 1), round(sensors.memory / 2**20, 1)  # GB, MB
+    (9.0, 18.5)
+    """
+    return _prepare(chain, t_end, impact_velocities, drop_heights, gravity, t_eval, n_samples, method, rtol, atol,
+                    dt, steps_per_period, g, rings, initial)[0]  # fmt: skip
 
 
 def simulate_batch(
@@ -252,6 +705,11 @@ def simulate_batch(
     dt=None,
     steps_per_period=VERLET_STEPS_PER_PERIOD,
     g=STANDARD_GRAVITY,
+    rings=None,
+    max_memory=None,
+    max_seconds=DEFAULT_MAX_SECONDS,
+    max_energy_drift=ENERGY_DRIFT_LIMIT,
+    initial=None,
 ) -> BatchSimulation:
     """Integrate B runs of one chain together, as one vectorised array problem.
 
@@ -270,70 +728,82 @@ def simulate_batch(
         Duration, s.
     impact_velocities, drop_heights : array_like, optional
         One run per value (see :func:`initial_state`).
-    gravity, t_eval, n_samples, method, rtol, atol, dt, steps_per_period, g
+    gravity, t_eval, n_samples, method, rtol, atol, dt, steps_per_period, g, rings, max_memory, max_seconds, \
+max_energy_drift
         As in :func:`simulate` (its "Other Parameters").
+    initial : (array_like, array_like), optional
+        Any initial state instead of an impact: site displacements x0 (m) and velocities
+        u0 (m/s), each of shape (n_sites,) or (B, n_sites) (one run per row; a single row
+        is shared), as in :func:`initial_state`; ``gravity`` then only says whether
+        gravity acts.  Not together with ``impact_velocities`` or ``drop_heights``.
 
     Returns
     -------
     BatchSimulation
         ``contact_force`` of shape (B, len(t), n_rings - 1); ``result[i]`` is run i.
+
+    Raises
+    ------
+    RunTooLargeError
+        If the run would need more memory than ``max_memory`` or longer than ``max_seconds``.
+    IntegrationError
+        If the integrator fails, or the run turns unstable (see the module notes).
     """
-    if not isinstance(chain, Chain):
-        raise TypeError(f"chain must be a Chain, got {type(chain).__name__}")
-    t_end = float(v.positive("t_end", t_end, "s"))
-    t_eval = _check_t_eval(t_eval, t_end, n_samples)
-    g = float(v.positive("g", g, "m/s^2"))
-    x0, u0 = initial_state(
-        chain, impact_velocity=impact_velocities, drop_height=drop_heights, gravity=gravity, g=g
-    )
-    speeds = -u0[:, 0]
-    g_dyn = g if gravity else 0.0
+    estimate, run = _prepare(chain, t_end, impact_velocities, drop_heights, gravity, t_eval, n_samples, method, rtol,
+                             atol, dt, steps_per_period, g, rings, initial)  # fmt: skip
+    _check_size(estimate, run["rings"], max_memory, max_seconds)
+    if max_energy_drift is not None:
+        max_energy_drift = float(v.positive("max_energy_drift", max_energy_drift))
     lat = chain.lattice
+    x0, u0, t_eval = run["x0"], run["u0"], run["t_eval"]
     B, S = x0.shape
-    X, V, E = _scales(chain, x0, speeds, g)
-    if method == "verlet":
-        if chain.damped:
-            raise ValueError("Verlet integrates undamped chains only (the dashpots make forces depend on velocity)")
-        if dt is None:
-            dt = _verlet_step(chain, float(X.max()), float(v.positive("steps_per_period", steps_per_period)))
-        dt = float(v.positive("dt", dt, "s"))
-        xs, us, stats = _verlet(lat, x0, u0, t_eval, t_end, dt, g_dyn)
-        xs, us = np.moveaxis(xs, 0, 1), np.moveaxis(us, 0, 1)
-        dissipated = np.zeros((B, t_eval.size))
-    elif method in ADAPTIVE_METHODS:
-        rtol = float(v.positive("rtol", rtol))
-        atol_rel = rtol if atol is None else float(v.positive("atol", atol))
-        n_w = B if lat.damped else 0
-        y0 = np.concatenate([np.stack([x0, u0], axis=-1).ravel(), np.zeros(n_w)])
-        per_site = np.repeat(np.stack([X, V], axis=-1), S, axis=0).ravel()  # x, u interleaved, run by run
-        atol = atol_rel * np.concatenate([per_site, E[:n_w]])
-        rhs = lat.first_order_rhs(B, g_dyn)
-        if method == "odeint":
-            y, nfev = _odeint(rhs, y0, t_eval, rtol, atol, lat.BANDWIDTH)
+    X, V, E = run["scales"]
+    g_dyn = run["g"] if run["gravity"] else 0.0
+    advice = ("take a smaller dt or more steps_per_period" if method == "verlet" else
+              "take a smaller rtol (and atol), or method='verlet'")  # fmt: skip
+    watch = _EnergyWatch(lat, x0, u0, g_dyn, 2.0 * E, max_energy_drift, advice)  # 2 E = m v^2 / 2
+    with np.errstate(over="ignore", invalid="ignore"):  # an unstable run is reported by the watch
+        if method == "verlet":
+            xs, us, stats = _verlet(lat, x0, u0, t_eval, run["t_end"], run["dt"], g_dyn, run["keep"], watch)
+            dissipated = np.zeros((B, t_eval.size))
         else:
-            band = dict(zip(("lband", "uband"), lat.BANDWIDTH, strict=True)) if method == "LSODA" else {}
-            sol = solve_ivp(rhs, (0.0, t_end), y0, method=method, t_eval=t_eval, rtol=rtol, atol=atol, **band)
-            if not sol.success:
-                raise RuntimeError(f"solve_ivp failed: {sol.message}")
-            y, nfev = sol.y, sol.nfev
-        states = y[: 2 * B * S].reshape(B, S, 2, -1)
-        xs = states[:, :, 0, :].transpose(0, 2, 1)
-        us = states[:, :, 1, :].transpose(0, 2, 1)
-        dissipated = y[2 * B * S :] if lat.damped else np.zeros((B, t_eval.size))
-        stats = {"method": method, "rtol": rtol, "nfev": nfev}
-    else:
-        raise ValueError(f"method must be one of {(*ADAPTIVE_METHODS, 'verlet')}, got {method!r}")
+            n_w = B if lat.damped else 0
+            y0 = np.concatenate([np.stack([x0, u0], axis=-1).ravel(), np.zeros(n_w)])
+            per_site = np.repeat(np.stack([X, V], axis=-1), S, axis=0).ravel()  # x, u interleaved, run by run
+            atol = run["atol"] * np.concatenate([per_site, E[:n_w]])
+            xs, us, dissipated, stats = _adaptive(method, lat, y0, t_eval, run["rtol"], atol, B, g_dyn, run["keep"],
+                                                  watch)  # fmt: skip
     heights = None if drop_heights is None else np.atleast_1d(np.asarray(drop_heights, dtype=float))
     return BatchSimulation(
-        chain=chain, t=t_eval, x=np.ascontiguousarray(xs), u=np.ascontiguousarray(us),
-        dissipated=np.ascontiguousarray(dissipated), g=g_dyn, impact_velocity=speeds, drop_height=heights,
-        stats=stats,
+        chain=chain, t=t_eval, x=xs, u=us, dissipated=dissipated, g=g_dyn, impact_velocity=-u0[:, 0],
+        drop_height=heights, stats=stats, rings=run["rings"],
     )  # fmt: skip
 
 
+def _check_size(estimate: RunEstimate, rings, max_memory, max_seconds):
+    """Refuse a run larger than the memory available or longer than ``max_seconds`` (RunTooLargeError)."""
+    limit = _available_memory() if max_memory is None else int(v.positive("max_memory", max_memory, "bytes"))
+    if limit is not None and estimate.memory > limit:
+        smaller = "" if rings is not None else (
+            "; record only the rings you read (rings=[...]: the sensors need 1-3 rings' sites each)")  # fmt: skip
+        raise RunTooLargeError(
+            f"this run needs about {_bytes(estimate.memory)} of memory ({estimate.describe(memory=False)}), more "
+            f"than the {_bytes(limit)} {'available' if max_memory is None else 'allowed (max_memory)'}{smaller}; "
+            "or take fewer samples (n_samples or t_eval) or fewer runs per batch"
+        )
+    if max_seconds is not None:
+        max_seconds = float(v.positive("max_seconds", max_seconds, "s"))
+        if estimate.seconds is not None and estimate.seconds > max_seconds:
+            raise RunTooLargeError(
+                f"this run would take roughly {_duration(estimate.seconds)} ({estimate.describe()}), more than "
+                f"max_seconds = {max_seconds:g} s; shorten t_end, take a larger dt (below the stability limit) "
+                "or fewer runs, or raise max_seconds"
+            )
+
+
 def simulate(chain: Chain, t_end, *, impact_velocity=None, drop_height=None, gravity=True, t_eval=None,
-             **options) -> Simulation:  # fmt: skip
-    """Integrate a chain after an impact on ring 0 (paper Eqs. power law and dual-spring).
+             initial=None, **options) -> Simulation:  # fmt: skip
+    """Integrate a chain after an impact on ring 0 (paper Eqs. (5)-(7)).
 
     Parameters
     ----------
@@ -349,6 +819,11 @@ def simulate(chain: Chain, t_end, *, impact_velocity=None, drop_height=None, gra
         without gravity, starting unstretched.
     t_eval : array_like, optional
         Sample times in [0, t_end], s; default ``n_samples`` evenly spaced.
+    initial : (array_like, array_like), optional
+        Any initial state instead of an impact: site displacements x0 (m, from the
+        configuration with every bond just taut) and velocities u0 (m/s), shape
+        (n_sites,) each; ``gravity`` then only says whether gravity acts.  E.g. a wave
+        packet on a pre-stretched chain.
 
     Other Parameters
     ----------------
@@ -359,19 +834,36 @@ def simulate(chain: Chain, t_end, *, impact_velocity=None, drop_height=None, gra
         Fortran) or a :func:`scipy.integrate.solve_ivp` method; or fixed-step velocity
         Verlet (undamped chains only).
     rtol : float, optional
-        Relative tolerance of the adaptive methods; default :data:`DEFAULT_RTOL`.
+        Relative tolerance of the adaptive methods, in :data:`TOLERANCE_RANGE`; default
+        :data:`DEFAULT_RTOL`.
     atol : float, optional
         Absolute tolerance relative to the run's displacement, velocity and energy
-        scales (default ``rtol``).
+        scales, at most 1e-3 (default ``rtol``).
     dt : float, optional
         Verlet step, s; default a fraction 1/``steps_per_period`` of the period of the
         fastest linearised mode at four times the estimated peak force.  The error of a
         fixed step grows with the distance the wave travels: for hundreds of rings, use
-        more steps per period (tests/numerics/test_theory_vs_lattice.py uses 200).
+        more steps per period (tests/numerics/test_theory_vs_lattice.py uses 200).  Must lie
+        below the stability limit 2/omega_max.
     steps_per_period : float, optional
-        See ``dt``; default :data:`VERLET_STEPS_PER_PERIOD`.
+        See ``dt``; default :data:`VERLET_STEPS_PER_PERIOD`; must exceed pi (stability).
     g : float, optional
         Gravity, m/s^2; default :data:`STANDARD_GRAVITY`.
+    rings : sequence of int, optional
+        Record only what the sensors of these rings need (the ring's sites, and for the
+        power-law model its neighbours'), not every ring: for long chains, whose full
+        record (2 x samples x sites doubles) does not fit in memory.  The sensor helpers
+        then work for these rings only.  Default: every ring.
+    max_memory : int, optional
+        Bytes the run may take (record, forces derived from it, solver arrays); default
+        the memory available.  A larger run is refused with :class:`RunTooLargeError`.
+    max_seconds : float, optional
+        Longest rough duration of a Verlet run (:attr:`RunEstimate.seconds`), s; default
+        :data:`DEFAULT_MAX_SECONDS`; None for no limit.
+    max_energy_drift : float, optional
+        Largest drift of the total energy, as a fraction of the impact energy, before the
+        run is stopped with :class:`IntegrationError`; default :data:`ENERGY_DRIFT_LIMIT`;
+        None to check only that the state stays finite.
 
     Returns
     -------
@@ -389,11 +881,13 @@ def simulate(chain: Chain, t_end, *, impact_velocity=None, drop_height=None, gra
     """
     if np.ndim(impact_velocity) or np.ndim(drop_height):
         raise ValueError("simulate takes one impact; use simulate_batch for several")
+    if initial is not None and len(_initial_arrays(chain, initial)[0]) != 1:
+        raise ValueError("simulate takes one initial state of shape (n_sites,); use simulate_batch for several")
     batch = simulate_batch(
         chain, t_end,
         impact_velocities=None if impact_velocity is None else [impact_velocity],
         drop_heights=None if drop_height is None else [drop_height],
-        gravity=gravity, t_eval=t_eval, **options,
+        gravity=gravity, t_eval=t_eval, initial=initial, **options,
     )  # fmt: skip
     return batch[0]
 
@@ -426,7 +920,11 @@ class EnergyBudget:
 
 @dataclass(frozen=True, eq=False)
 class _Record:
-    """Arrays of one run (shape (T, ...)) or a batch (shape (B, T, ...)) and what they give."""
+    """Arrays of one run (shape (T, ...)) or a batch (shape (B, T, ...)) and what they give.
+
+    ``x`` and ``u`` hold every site, or, if the run recorded only some ``rings``, the sites
+    their sensors need (:attr:`sites`, in order).
+    """
 
     chain: Chain
     t: np.ndarray
@@ -437,10 +935,48 @@ class _Record:
     impact_velocity: np.ndarray | float
     drop_height: np.ndarray | float | None
     stats: dict = field(default_factory=dict, repr=False)
+    rings: tuple | None = None
+
+    @functools.cached_property
+    def sites(self) -> np.ndarray:
+        """Lattice sites held by ``x`` and ``u``, in order."""
+        keep = _recorded_sites(self.chain, self.rings)
+        return np.arange(self.chain.n_sites) if keep is None else keep
+
+    def _require_all(self, what: str) -> None:
+        if self.rings is not None:
+            raise ValueError(
+                f"{what} needs every ring, but this run recorded rings {list(self.rings)} only "
+                "(simulate with rings=None to keep them all)"
+            )
+
+    def _columns(self, sites) -> np.ndarray:
+        """Columns of ``x`` holding the lattice ``sites`` (all recorded: see :meth:`_sensor`)."""
+        return sites if self.rings is None else np.searchsorted(self.sites, sites)
+
+    def _bond_force_of(self, bonds) -> np.ndarray:
+        """Forces of the lattice ``bonds`` (1-d array), N, shape (..., T, len(bonds)), from the recorded sites."""
+        lat = self.chain.lattice
+        upper = bonds + 1
+        anchor = upper >= lat.n_sites  # the support's bond: its upper end does not move
+        lower_cols, upper_cols = self._columns(bonds), self._columns(np.where(anchor, bonds, upper))
+
+        def extension(x):
+            return np.where(anchor, 0.0, x[..., upper_cols]) - x[..., lower_cols]
+
+        return lat.bond_forces(extension(self.x), extension(self.u) if lat.damped else None, bonds=bonds)
+
+    def _sensor(self, rings) -> np.ndarray:
+        """Sensor forces of ``rings`` (1-d array), N, shape (..., T, len(rings)); see :attr:`sensor_force`."""
+        bonds, weights = _sensor_bonds(self.chain, rings)
+        unique, index = np.unique(bonds, return_inverse=True)
+        forces = self._bond_force_of(unique)[..., index.reshape(bonds.shape)]
+        return np.sum(forces * weights, axis=-1)
 
     @functools.cached_property
     def bond_force(self) -> np.ndarray:
         """Force in every lattice bond, N, positive in tension."""
+        self._require_all("bond_force")
         lat = self.chain.lattice
         e = lat.extension(self.x)
         return lat.bond_forces(e, lat.extension(self.u) if lat.damped else None)
@@ -475,37 +1011,27 @@ class _Record:
         m a = F_above - F_below - m_g g, so T = (F_below + F_above)/2.  Ring 0 has no
         force below it; the top ring has the support (or nothing) above it.
         """
-        if self.chain.model == "dual-spring":
-            return self.bending_force
-        f = self.bond_force
-        pad = [(0, 0)] * (f.ndim - 1) + [(1, 0 if self.chain.support == "fixed" else 1)]
-        padded = np.pad(f, pad)
-        return 0.5 * (padded[..., :-1] + padded[..., 1:])
+        self._require_all("sensor_force")
+        return self._sensor(np.arange(self.chain.n_rings))
 
     @property
     def ring_displacement(self) -> np.ndarray:
         """Displacement of the centre of mass of each ring, m; shape (..., T, n_rings)."""
+        self._require_all("ring_displacement")
         k = self.chain.sites_per_ring
         return self.x.reshape(*self.x.shape[:-1], -1, k).mean(axis=-1)
 
     @property
     def ring_velocity(self) -> np.ndarray:
         """Velocity of the centre of mass of each ring, m/s; shape (..., T, n_rings)."""
+        self._require_all("ring_velocity")
         k = self.chain.sites_per_ring
         return self.u.reshape(*self.u.shape[:-1], -1, k).mean(axis=-1)
 
     def energy(self) -> EnergyBudget:
         """Kinetic, contact, bending, gravity and dissipated energy, J (see :class:`EnergyBudget`)."""
-        lat = self.chain.lattice
-        e = lat.extension(self.x)
-        x_start = self.x[..., :1, :]
-        return EnergyBudget(
-            kinetic=lat.kinetic_energy(self.u),
-            contact=lat.contact_energy(e),
-            bending=lat.spring_energy(e),
-            gravity=lat.gravity_energy(self.x - x_start, self.g),
-            dissipated=self.dissipated,
-        )
+        self._require_all("energy")
+        return _energy_budget(self.chain.lattice, self.x, self.u, self.x[..., :1, :], self.g, self.dissipated)
 
 
 @dataclass(frozen=True, eq=False)
@@ -514,34 +1040,46 @@ class Simulation(_Record):
 
     Forces are derived on demand: ``contact_force`` (T, n_rings - 1), ``sensor_force``
     (T, n_rings), ``bending_force`` and ``support_force``; the sensor helpers read the
-    leading pulse of the sensor force of a ring (:mod:`ringchain.numerics.signals`).
+    leading pulse of the sensor force of a ring (:mod:`ringchain.numerics.signals`,
+    which raises a :class:`~ringchain.numerics.signals.PulseError` when there is no
+    complete, resolved pulse to read).  A run that recorded only some ``rings`` has the
+    sensor helpers for those rings only.
     """
 
     def sensor(self, ring: int) -> np.ndarray:
         """Sensor force of ring ``ring`` (index from the impact end), N, shape (T,)."""
-        return self.sensor_force[:, self._ring(ring)]
+        return self._sensor(np.array([self._ring(ring)]))[..., 0]
 
-    def _ring(self, i) -> int:
-        i = int(i)
-        if not 0 <= i < self.chain.n_rings:
-            raise IndexError(f"ring {i} is not in a chain of {self.chain.n_rings} rings")
+    def _ring(self, ring) -> int:
+        i = _ring_index(self.chain, ring)
+        if self.rings is not None and i not in self.rings:
+            raise ValueError(f"ring {i} was not recorded: this run kept rings {list(self.rings)} only (rings=...)")
         return i
 
     def peak_force(self, ring: int, threshold=None) -> float:
-        """Peak of the leading pulse read by the sensor in ``ring``, N."""
+        """Peak of the leading pulse read by the sensor in ``ring``, N (static tension included)."""
         return signals.peak(self.t, self.sensor(ring), threshold)[1]
 
     def arrival_time(self, ring: int, threshold=None) -> float:
         """Time of the leading peak at the sensor in ``ring``, s, from the impact."""
         return signals.arrival_time(self.t, self.sensor(ring), threshold)
 
+    def _pair(self, near, far) -> tuple[int, int]:
+        near, far = self._ring(near), self._ring(far)
+        if not near < far:
+            raise ValueError(f"the far ring must lie further from the impact than the near one, got near = {near}, "
+                             f"far = {far}")  # fmt: skip
+        return near, far
+
     def time_of_flight(self, near: int, far: int, threshold=None) -> float:
-        """Time between the leading peaks at two sensors, s."""
+        """Time between the leading peaks at two sensors, s (``near`` < ``far``, counted from the impact)."""
+        near, far = self._pair(near, far)
         return signals.time_of_flight(self.t, self.sensor(near), self.sensor(far), threshold)
 
     def wave_speed(self, near: int, far: int, threshold=None) -> float:
         """(far - near) a over the time of flight, m/s (as measured in the paper)."""
-        distance = (self._ring(far) - self._ring(near)) * self.chain.a
+        near, far = self._pair(near, far)
+        distance = (far - near) * self.chain.a
         return signals.wave_speed(self.t, self.sensor(near), self.sensor(far), distance, threshold)
 
     def pulse_width(self, ring: int, threshold=None) -> float:
@@ -574,88 +1112,17 @@ class BatchSimulation(_Record):
             chain=self.chain, t=self.t, x=self.x[i], u=self.u[i], dissipated=self.dissipated[i], g=self.g,
             impact_velocity=float(self.impact_velocity[i]),
             drop_height=None if self.drop_height is None else float(self.drop_height[i]), stats=self.stats,
+            rings=self.rings,
         )  # fmt: skip
 
     def __iter__(self):
         return (self[i] for i in range(len(self)))
 
 
-# -- the paper's experiment -------------------------------------------------------------------
-@dataclass(frozen=True)
-class PaperExperiment:
-    """What the paper measured on its 20-ring chain, for one drop and one model.
+def __getattr__(name):
+    # The paper's experiment lives in ringchain.numerics.paper; kept importable from here.
+    if name in ("paper_experiment", "PaperExperiment"):
+        from . import paper
 
-    Attributes
-    ----------
-    model : str
-    drop_height : float
-        m.
-    impact_velocity : float
-        sqrt(2 g h), m/s.
-    sensors : tuple of int
-        Rings holding the sensors, counted from the impact (ring 0 is the dropped ring).
-    peak_forces : tuple of float
-        Leading-pulse peak at each sensor, N.
-    arrival_times : tuple of float
-        Leading-pulse peak times, s after the impact.
-    time_of_flight : float
-        Between the two sensors, s.
-    wave_speed : float
-        Sensor distance over time of flight, m/s.
-    simulation : Simulation
-    """
-
-    model: str
-    drop_height: float
-    impact_velocity: float
-    sensors: tuple
-    peak_forces: tuple
-    arrival_times: tuple
-    time_of_flight: float
-    wave_speed: float
-    simulation: Simulation = field(repr=False)
-
-
-def paper_experiment(
-    drop_height, model="power-law", *, t_end=2e-3, sensors=paper_data.SENSOR_RINGS, **options
-) -> PaperExperiment:
-    """Simulate the paper's drop experiment (Sec. III) and read its two sensors.
-
-    The chain is :meth:`Chain.from_paper` for R/r = 9 (Table I: K = 2284 N/mm^n,
-    n = 1.11, m_eff/m0 = 0.37; the dual-spring model takes K_c and K_b of that ring),
-    20 rings hanging under gravity from a fixed support, sensors in rings 6 and 12.
-
-    Parameters
-    ----------
-    drop_height : float
-        Free-fall height of the lowest ring, m.
-    model : {"power-law", "dual-spring"}
-    t_end : float, optional
-        Duration, s (default 2 ms: the leading pulse passes ring 12 within about 1 ms for
-        drops of 1 mm and more).
-    sensors : tuple of int, optional
-        Two rings, from the impact.
-    **options
-        Passed to :func:`simulate` (e.g. ``method``, ``rtol``); ``gamma``/``gamma_c``/
-        ``gamma_b`` are passed to :meth:`Chain.from_paper`.
-
-    Returns
-    -------
-    PaperExperiment
-
-    Examples
-    --------
-    >>> run = paper_experiment(0.05, "power-law")
-    >>> 10 < run.peak_forces[0] < 1000, 1e-4 < run.time_of_flight < 1e-3  # N, s
-    (True, True)
-    """
-    dashpots = {k: options.pop(k) for k in ("gamma", "gamma_c", "gamma_b") if k in options}
-    chain = Chain.from_paper(model, **dashpots)
-    sim = simulate(chain, t_end, drop_height=drop_height, gravity=True, **options)
-    near, far = sensors
-    return PaperExperiment(
-        model=model, drop_height=float(drop_height), impact_velocity=float(sim.impact_velocity),
-        sensors=(near, far), peak_forces=(sim.peak_force(near), sim.peak_force(far)),
-        arrival_times=(sim.arrival_time(near), sim.arrival_time(far)), time_of_flight=sim.time_of_flight(near, far),
-        wave_speed=sim.wave_speed(near, far), simulation=sim,
-    )  # fmt: skip
+        return getattr(paper, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

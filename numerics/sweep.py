@@ -6,7 +6,7 @@ height or an impact velocity).  For each point :func:`sweep` reports the static 
 of the contact (K_c, K_b, crossover force, fitted power law, paper Eqs. 1-4) and, when
 there is an impact, what the paper measured on its chain (Sec. III.A): the peak forces
 at two sensor rings, their arrival times, the time of flight and wave speed, beside the
-solitary-wave speed of Eq. (vsfm) at the measured peak force.
+solitary-wave speed of Eq. (8) at the measured peak force.
 
 Scale.  Points that share a chain (everything but the impact) are integrated together
 by :func:`~ringchain.numerics.simulate_batch`, in chunks of ``batch_size`` runs, so a
@@ -17,6 +17,11 @@ without any code change::
 
     from distributed import Client
     rows = sweep(grid, executor=Client("tcp://scheduler:8786").get_executor())
+
+Cost.  Each task records only its two sensor rings, and every task's work (Verlet steps x
+sites x runs) is estimated before the first one starts: a sweep with a task longer than
+``max_seconds`` is refused with the estimate (:func:`estimate_task`).  The default
+duration (:func:`default_t_end`) stays finite as n -> 1.
 
 Determinism.  The grid fixes the chunks (in grid order, independent of the executor and
 of the number of workers) and the rows come back in grid order, so the same grid gives
@@ -31,8 +36,6 @@ import functools
 import io
 import itertools
 import math
-import multiprocessing
-import os
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, fields
 
@@ -41,9 +44,10 @@ from ringchain.theory import PAPER_TUBE_RADIUS, Ring, paper_data
 from ringchain.theory import _validate as v
 
 from . import signals
-from .chain import MODELS, Chain, _choice, _count
+from .chain import MODELS, Chain, _choice, _count, _flag
+from .executors import InlineExecutor, default_executor
 from .models import STANDARD_GRAVITY
-from .solve import simulate_batch
+from .solve import DEFAULT_MAX_SECONDS, RunTooLargeError, _duration, _sensor_pair, estimate_run, simulate_batch
 
 __all__ = [
     "Point",
@@ -53,6 +57,7 @@ __all__ = [
     "run_points",
     "write_csv",
     "default_t_end",
+    "estimate_task",
     "InlineExecutor",
     "DEFAULT_BATCH_SIZE",
     "DEFAULT_SAMPLES",
@@ -135,21 +140,17 @@ class Point:
         set_("n_rings", _count("n_rings", self.n_rings, 2))
         if self.drop_height is not None and self.impact_velocity is not None:
             raise ValueError("give a drop height or an impact velocity, not both")
-        if self.drop_height is not None:
-            set_("drop_height", float(v.positive("drop height", self.drop_height, "m")))
-        if self.impact_velocity is not None:
-            set_("impact_velocity", float(v.positive("impact velocity", self.impact_velocity, "m/s")))
-        sensors = tuple(int(s) for s in self.sensors)
-        if len(sensors) != 2 or not 0 <= sensors[0] < sensors[1]:
-            raise ValueError(f"sensors must be two rings, near then far, counted from 0, got {self.sensors!r}")
-        set_("sensors", sensors)
+        for name, unit in (("drop_height", "m"), ("impact_velocity", "m/s")):
+            value = getattr(self, name)
+            if isinstance(value, bool | np.bool_):
+                raise ValueError(f"{name.replace('_', ' ')} must be a number (in {unit}), got {value!r}")
+            if value is not None:
+                set_(name, float(v.positive(name.replace("_", " "), value, unit)))
+        set_("sensors", _sensor_pair(self.sensors))
         ring = self.ring  # validates R > 2 r, the angle and the material, with errors that say why
         if self.dynamic:
             ring.check_chain()
-            if sensors[1] >= self.n_rings:
-                raise ValueError(
-                    f"sensor ring {sensors[1]} is not in a chain of {self.n_rings} rings (0..{self.n_rings - 1})"
-                )
+            _sensor_pair(self.sensors, self.n_rings)
 
     @property
     def ring(self) -> Ring:
@@ -210,6 +211,8 @@ def expand(grid) -> list[Point]:
         names = list(grid)
         values = [_values(name, grid[name]) for name in names]
         return [Point(**dict(zip(names, combo, strict=True))) for combo in itertools.product(*values)]
+    if isinstance(grid, str) or not isinstance(grid, Iterable):
+        raise TypeError(f"a grid is a mapping of axes or an iterable of points, got {grid!r}")
     points = []
     for item in grid:
         if isinstance(item, Point):
@@ -230,7 +233,7 @@ def _check_axes(mapping):
 
 def _values(name, value) -> list:
     if name == "sensors":  # a pair is one value, a list of pairs several
-        return [value] if np.ndim(value) == 1 else list(value)
+        return list(value) if np.ndim(value) == 2 else [value]
     if isinstance(value, str) or np.ndim(value) == 0:
         return [value]
     values = list(value)
@@ -243,7 +246,7 @@ def _values(name, value) -> list:
 def default_t_end(chain: Chain, speeds, sensors) -> float:
     """Duration that lets the leading pulse pass the far sensor, s.
 
-    The time the long-wave solitary wave of the chain's power law (Eq. vsfm) needs to
+    The time the long-wave solitary wave of the chain's power law (Eq. (8)) needs to
     carry its front 1.5 times the distance to ring ``sensors[1]`` plus half a wave width
     (:func:`ringchain.theory.solitary_wave_width`), at a force estimate below the actual
     peak (so the estimated speed is low and the duration long): a quarter of the peak
@@ -252,9 +255,20 @@ def default_t_end(chain: Chain, speeds, sensors) -> float:
     chain the power law is the one fitted to its contact and bending springs in series
     (Eq. 4).  :func:`run_points` doubles the duration if a pulse is still passing the far
     sensor at the end.
+
+    The half width is capped at the chain's length: as n -> 1 the long-wave width grows
+    without bound (~ a/(n - 1)), but no pulse wider than the chain passes the sensor before
+    its reflection from the support comes back, and the capped duration stays finite
+    (without the cap, 79 s of simulated time at R/r = 100, 2.5e3 s at R/r = 200).
     """
     from ringchain.theory import fit_power_law, solitary_wave_speed, solitary_wave_width
 
+    if not isinstance(chain, Chain):
+        raise TypeError(f"chain must be a Chain, got {type(chain).__name__}")
+    speeds = np.atleast_1d(v.positive("speeds", speeds, "m/s"))
+    if speeds.size == 0:
+        raise ValueError("speeds must hold at least one impact speed (m/s)")
+    far = _sensor_pair(sensors, chain.n_rings)[1]
     if chain.model == "dual-spring":
         K, n = (float(x) for x in fit_power_law(chain.K_c, chain.K_b))
     else:
@@ -264,8 +278,8 @@ def default_t_end(chain: Chain, speeds, sensors) -> float:
     delta = ((n + 1.0) * 0.25 * chain.m * speed**2 / K) ** (1.0 / (n + 1.0))
     force = max(0.25 * K * delta**n, chain.m_gravity * STANDARD_GRAVITY)
     V = float(solitary_wave_speed(force, K, n, chain.a, chain.m))
-    width = float(solitary_wave_width(n, chain.a))
-    return (1.5 * sensors[1] * chain.a + 0.5 * width) / V
+    width = min(float(solitary_wave_width(n, chain.a)), chain.n_rings * chain.a)
+    return (1.5 * far * chain.a + 0.5 * width) / V
 
 
 def _statics(point: Point) -> dict:
@@ -312,14 +326,29 @@ def _dynamics(point: Point, run, K: float, n: float) -> dict:
     }
 
 
+def _batch(points, t_end, n_samples, method, solver):
+    """The chain of points that share one, its duration and the arguments of :func:`simulate_batch`."""
+    first = points[0]
+    chain = first.chain()
+    if t_end is None:
+        t_end = default_t_end(chain, [p.speed for p in points], first.sensors)
+    if first.drop_height is not None:
+        impact = {"drop_heights": [p.drop_height for p in points]}
+    else:
+        impact = {"impact_velocities": [p.speed for p in points]}
+    return chain, t_end, dict(impact, n_samples=n_samples, method=method, rings=first.sensors, **solver)
+
+
 def run_points(points, *, t_end=None, n_samples=DEFAULT_SAMPLES, method=SWEEP_METHOD, **solver):
     """Rows of points that share a chain (one task of :func:`sweep`): one batch, one row each.
 
     Every point must have the same :attr:`Point.chain_key`.  ``t_end`` (s) defaults to
     :func:`default_t_end` at the smallest impact of the points, doubled (up to
     four times) while a leading pulse has not passed the far sensor by the end; a
-    ``t_end`` given that is too short raises ``ValueError``.  ``n_samples``, ``method``
-    and ``solver`` (e.g. ``dt``, ``rtol``) go to :func:`~ringchain.numerics.simulate_batch`.
+    ``t_end`` given that is too short raises
+    :class:`~ringchain.numerics.signals.TruncatedPulseError`.  Only the two sensor rings
+    are recorded.  ``n_samples``, ``method`` and ``solver`` (e.g. ``dt``, ``rtol``,
+    ``max_seconds``) go to :func:`~ringchain.numerics.simulate_batch`.
     """
     points = list(points)
     keys = {p.chain_key for p in points}
@@ -329,53 +358,42 @@ def run_points(points, *, t_end=None, n_samples=DEFAULT_SAMPLES, method=SWEEP_ME
     first = points[0]
     if not first.dynamic:
         return rows
-    chain = first.chain()
-    speeds = [p.speed for p in points]
     retries = 0 if t_end is not None else _MAX_DOUBLINGS
-    if t_end is None:
-        t_end = default_t_end(chain, speeds, first.sensors)
-    impact = {"drop_heights": [p.drop_height for p in points]} if first.drop_height is not None else {
-        "impact_velocities": speeds}  # fmt: skip
+    chain, t_end, arguments = _batch(points, t_end, n_samples, method, solver)
     while True:
-        batch = simulate_batch(chain, t_end, **impact, n_samples=n_samples, method=method, **solver)
-        if all(_pulse_complete(run, first.sensors[1]) for run in batch):
+        batch = simulate_batch(chain, t_end, **arguments)
+        try:
+            for run in batch:
+                signals.leading_pulse(run.t, run.sensor(first.sensors[1]))
             break
-        if retries == 0:
-            raise ValueError(
-                f"the pulse is still passing ring {first.sensors[1]} at t_end = {t_end:g} s; give a longer t_end"
-            )
+        except (signals.TruncatedPulseError, signals.NoPulseError) as exc:
+            # An impact always sends a pulse: none at the far sensor means it has not got there yet.
+            if retries == 0:
+                raise signals.TruncatedPulseError(
+                    f"the pulse is still passing ring {first.sensors[1]} at t_end = {t_end:g} s; give a longer t_end "
+                    f"({exc})"
+                ) from None
         retries -= 1
         t_end *= 2.0
-    # Eq. (vsfm) with the chain's power law, or for the dual-spring chain the one fitted to its springs.
+    # Eq. (8) with the chain's power law, or for the dual-spring chain the one fitted to its springs.
     K, n = (chain.K, chain.n) if chain.model == "power-law" else (rows[0]["K_fit_N_mn"], rows[0]["n_fit"])
     for row, point, run in zip(rows, points, batch, strict=True):
         row.update(_dynamics(point, run, K, n))
     return rows
 
 
-def _pulse_complete(run, ring: int) -> bool:
-    """Whether the leading pulse at the sensor of ``ring`` falls below its threshold before the end."""
-    return signals.leading_pulse(run.t, run.sensor(ring)).stop < run.t.size
+def estimate_task(points, *, t_end=None, n_samples=DEFAULT_SAMPLES, method=SWEEP_METHOD, **solver):
+    """:class:`~ringchain.numerics.RunEstimate` of :func:`run_points` on ``points`` (None if static).
 
-
-class InlineExecutor(cf.Executor):
-    """An Executor that runs each task at once, in the calling process (no pool, plain tracebacks)."""
-
-    def submit(self, fn, /, *args, **kwargs):
-        future = cf.Future()
-        try:
-            future.set_result(fn(*args, **kwargs))
-        except Exception as exc:  # handed to the caller through the future, as any Executor does
-            future.set_exception(exc)
-        return future
-
-
-def _default_executor(n_tasks: int, max_workers: int | None) -> cf.Executor:
-    if max_workers == 0:
-        return InlineExecutor()
-    workers = max_workers or os.cpu_count() or 1
-    # "spawn": a fresh interpreter per worker, the same on every platform and safe with threads.
-    return cf.ProcessPoolExecutor(max(1, min(workers, n_tasks)), mp_context=multiprocessing.get_context("spawn"))
+    The first attempt only: a default duration doubled by :func:`run_points` doubles the work.
+    """
+    points = list(points)
+    if not points[0].dynamic:
+        return None
+    chain, t_end, arguments = _batch(points, t_end, n_samples, method, solver)
+    for option in ("max_memory", "max_seconds", "max_energy_drift"):
+        arguments.pop(option, None)
+    return estimate_run(chain, t_end, **arguments)
 
 
 def sweep(
@@ -388,6 +406,7 @@ def sweep(
     t_end: float | None = None,
     n_samples: int = DEFAULT_SAMPLES,
     method: str = SWEEP_METHOD,
+    max_seconds: float | None = DEFAULT_MAX_SECONDS,
     **solver,
 ) -> list[dict]:
     """Run every point of a grid and return one row (a dict) per point, in grid order.
@@ -404,7 +423,11 @@ def sweep(
         definition: it fixes the chunks, so changing it may change the last digits.
     max_workers : int, optional
         Processes of the default pool (default: the number of CPUs); 0 runs every task
-        in this process (:class:`InlineExecutor`).
+        in this process (:class:`InlineExecutor`).  The pool starts its workers with
+        "spawn", which imports a calling script again in every worker: in a script, call
+        :func:`sweep` under ``if __name__ == "__main__":`` (a call outside it raises
+        ``RuntimeError`` before any worker starts; see
+        :mod:`ringchain.numerics.executors`).
     progress : bool, optional
         Show a tqdm progress bar (on stderr).
     t_end : float, optional
@@ -412,13 +435,18 @@ def sweep(
     n_samples, method, **solver
         Passed to :func:`~ringchain.numerics.simulate_batch` (default: 1001 samples,
         fixed-step Verlet with the step it picks for the fastest run of each task).
+    max_seconds : float, optional
+        Longest rough duration of one task (:func:`estimate_task`), s; the work of every
+        task is estimated before any starts, and a sweep with a longer task is refused
+        with :class:`~ringchain.numerics.RunTooLargeError` giving the estimate.  None: no
+        limit.
 
     Returns
     -------
     list of dict
         Columns with units in their names: the point, the static theory (K_c, K_b,
         crossover force, fitted K and n of Eq. 4) and, for a point with an impact, the
-        sensor readings and V_s of Eq. (vsfm) at the near sensor's peak force.
+        sensor readings and V_s of Eq. (8) at the near sensor's peak force.
 
     Examples
     --------
@@ -428,19 +456,23 @@ def sweep(
     """
     from tqdm import tqdm
 
-    if isinstance(batch_size, bool) or int(batch_size) != batch_size or batch_size < 1:
-        raise ValueError(f"batch_size must be a positive integer, got {batch_size!r}")
+    try:
+        batch_size = _count("batch_size", batch_size, 1)
+    except ValueError:
+        raise ValueError(f"batch_size must be a positive integer, got {batch_size!r}") from None
+    progress = _flag("progress", progress)
     if t_end is not None:
         t_end = float(v.positive("t_end", t_end, "s"))
     points = expand(grid)
     groups: dict[tuple, list[int]] = {}
     for i, point in enumerate(points):
         groups.setdefault(point.chain_key, []).append(i)
-    tasks = [idx[k : k + int(batch_size)] for idx in groups.values() for k in range(0, len(idx), int(batch_size))]
-    options = {"t_end": t_end, "n_samples": n_samples, "method": method, **solver}
+    tasks = [idx[k : k + batch_size] for idx in groups.values() for k in range(0, len(idx), batch_size)]
+    options = {"t_end": t_end, "n_samples": n_samples, "method": method, "max_seconds": max_seconds, **solver}
+    _check_work([[points[i] for i in task] for task in tasks], options)
     own = executor is None
     if own:
-        executor = _default_executor(len(tasks), max_workers)
+        executor = default_executor(len(tasks), max_workers)
     rows: list[dict | None] = [None] * len(points)
     try:
         futures = {executor.submit(run_points, [points[i] for i in task], **options): task for task in tasks}
@@ -450,10 +482,39 @@ def sweep(
                 for i, row in zip(task, future.result(), strict=True):
                     rows[i] = row
                 bar.update(len(task))
+    except cf.BrokenExecutor as exc:
+        raise RuntimeError(
+            f"a worker of the sweep died ({exc}); a process may have run out of memory. "
+            "Run with max_workers=0 to see the error in this process."
+        ) from exc
     finally:
         if own:
             executor.shutdown(cancel_futures=True)
     return rows
+
+
+def _check_work(tasks, options) -> None:
+    """Estimate every task before any starts; refuse the sweep if one would take longer than max_seconds."""
+    limit = options["max_seconds"]
+    if limit is None:
+        return
+    limit = float(v.positive("max_seconds", limit, "s"))
+    worst, total = None, 0.0
+    for points in tasks:
+        estimate = estimate_task(points, **options)
+        if estimate is None or estimate.seconds is None:
+            continue
+        total += estimate.seconds
+        if worst is None or estimate.seconds > worst[1].seconds:
+            worst = (points[0], estimate)
+    if worst is not None and worst[1].seconds > limit:
+        point, estimate = worst
+        raise RunTooLargeError(
+            f"the sweep's largest task (R/r = {point.R_over_r:g}, {point.model}, {point.n_rings} rings) would take "
+            f"roughly {_duration(estimate.seconds)}: {estimate.describe()}; all {len(tasks)} tasks about "
+            f"{_duration(total)}; more than max_seconds = {limit:g} s. Give a shorter t_end or a larger dt, drop the "
+            "point, or raise max_seconds"
+        )
 
 
 def write_csv(rows: Iterable[dict], file=None) -> str | None:

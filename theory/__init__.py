@@ -7,6 +7,8 @@ see :mod:`ringchain.theory._codegen`).
 Static theory of one contact (paper Sec. II, Eqs. 1-4, App. A):
 
 - :func:`hertz_stiffness` -- K_c of two tori, circular or elliptical contact (Eq. 1);
+- :func:`torus_gap`, :func:`contact_patches` -- the exact gap of two tori beyond its quadratic
+  (Hertz) part, and the two contact points it has below theta_min (:mod:`.contact`, Sec. 4);
 - :func:`bending_stiffness` -- K_b of one ring by Castigliano (Eq. 2);
 - :func:`series_displacement`, :func:`local_exponent`, :func:`crossover_force`,
   :func:`fit_power_law` -- the series law and its power-law reduction (Eqs. 3-4);
@@ -15,27 +17,54 @@ Static theory of one contact (paper Sec. II, Eqs. 1-4, App. A):
 Long waves (paper Sec. IV.C, App. B; modules :mod:`.longwave` and :mod:`.solitary`):
 
 - :func:`solitary_wave_speed`, :func:`solitary_wave_speed_from_velocity` -- V_s of the
-  compact solitary wave (Eq. vsfm);
+  compact solitary wave (Eq. (8));
 - :func:`solitary_wave_width`, :func:`solitary_wave_profile` -- its support and force profile;
 - :func:`solitary_wave_speed_prestressed`, :func:`linear_sound_speed` -- the wave on a chain
   pre-stretched by a static force (beyond the paper) and its small-amplitude limit.
 
+Linear waves and what the pulse carries (beyond the paper; modules :mod:`.linear` and :mod:`.pulse`):
+
+- :func:`dispersion`, :func:`band_edges`, :func:`sound_speed` -- both lattice models linearised
+  about a static force: branches, band edges (where the trailing oscillations sit), long-wave speed;
+- :func:`linear_travel_time` -- a small pulse through the hanging chain, whose weight grades the speed;
+- :func:`solitary_wave_energy`, :func:`solitary_wave_momentum` -- invariants of the compact wave;
+- :func:`impact_amplitude` -- the peak force launched by a striker at speed v0 (F_m ~ v0^(2n/(n+1))).
+
+Rings that bend (beyond the paper; module :mod:`.curved_beam`):
+
+- :func:`ring_frequencies`, :func:`inextensional_frequency` -- natural frequencies of a free ring as
+  a thick curved beam, and the classical thin-ring ones (Hoppe in plane, Michell out of plane);
+  the exact curved elements of :class:`ringchain.numerics.RingModel` come from the same module.
+
 The paper's reported numbers (Tables I-II, FE exponents) are data in :mod:`.paper_data`.
 """
 
-from . import paper_data
-from .contact import contact_ellipse, hertz_stiffness, minimum_contact_angle
+from . import curved_beam, paper_data
+from .contact import (
+    contact_ellipse,
+    contact_modulus,
+    contact_patches,
+    hertz_stiffness,
+    minimum_contact_angle,
+    smallest_patch_angle,
+    torus_gap,
+)
+from .curved_beam import inextensional_frequency, ring_frequencies
 from .geometry import MIN_CHAIN_ASPECT_RATIO, PAPER_TUBE_RADIUS, Ring
+from .linear import BandEdges, band_edges, dispersion, linear_travel_time, sound_speed
 from .longwave import linear_sound_speed
 from .materials import MATERIALS, STAINLESS_STEEL_304, Material, get_material
+from .pulse import impact_amplitude, solitary_wave_energy, solitary_wave_momentum
 from .ring import bending_stiffness
 from .series import (
     DEFAULT_FORCE_WINDOW,
     crossover_force,
     fit_power_law,
+    fit_power_law_to_curve,
     local_exponent,
     n_per_mm_to_si,
     series_displacement,
+    series_extension,
     si_to_n_per_mm,
 )
 from .solitary import (
@@ -51,11 +80,17 @@ __all__ = [
     "hertz_stiffness",
     "contact_ellipse",
     "minimum_contact_angle",
+    "contact_patches",
+    "smallest_patch_angle",
+    "torus_gap",
+    "contact_modulus",
     "bending_stiffness",
     "series_displacement",
     "local_exponent",
     "crossover_force",
     "fit_power_law",
+    "fit_power_law_to_curve",
+    "series_extension",
     "n_per_mm_to_si",
     "si_to_n_per_mm",
     "DEFAULT_FORCE_WINDOW",
@@ -72,4 +107,15 @@ __all__ = [
     "solitary_wave_profile",
     "solitary_wave_speed_prestressed",
     "linear_sound_speed",
+    "dispersion",
+    "band_edges",
+    "BandEdges",
+    "sound_speed",
+    "linear_travel_time",
+    "solitary_wave_energy",
+    "solitary_wave_momentum",
+    "impact_amplitude",
+    "curved_beam",
+    "ring_frequencies",
+    "inextensional_frequency",
 ]

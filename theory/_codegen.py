@@ -13,6 +13,22 @@ Cache location: ``$RINGCHAIN_CACHE_DIR`` if set, else ``$XDG_CACHE_HOME/ringchai
 else ``~/.cache/ringchain``.  Set ``RINGCHAIN_CACHE_DIR`` to an empty string to
 disable the disk cache (every process then derives).  An unwritable cache
 directory is not an error: the code is then derived in every process.
+
+Entries.  One file per derivation, ``<module>.<name>-<key>.py``: a first line with the
+SHA-256 of the rest (and of the derivation's name and key), comment lines saying what
+the code was generated from (derivation, key, SymPy and NumPy versions, arguments, a
+SHA-256 of the expression's ``srepr``), then the generated function.  An entry that is
+missing, unreadable, truncated, edited, or copied from another derivation fails the
+checksum (or, written by a broken generator, does not load) and is derived again and
+replaced: a damaged cache costs one derivation, never a wrong or failed call.  Entries
+are written to a temporary file in the same directory and renamed into place, so a
+reader never sees half an entry; the temporary file is removed if anything fails (a
+full disk, say).  They are created with the permissions ``open()`` would give a new
+file, 0o666 less the umask (0o644 under the usual umask 022, 0o664 under 002 for a
+cache shared by a group, 0o600 under 077), and never modified in place.
+
+:func:`cache_info` and :func:`clear_cache` (``ringchain cache info`` and
+``ringchain cache clear``) report on and empty the cache.
 """
 
 from __future__ import annotations
@@ -24,16 +40,25 @@ import importlib.metadata
 import inspect
 import os
 import re
-import tempfile
+import secrets
 import threading
 import types
 from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 
-__all__ = ["Derived", "derived", "cache_dir", "source_key", "sp"]
+__all__ = ["Derived", "derived", "cache_dir", "source_key", "sp", "CacheInfo", "cache_info", "clear_cache"]
 
 _PACKAGE_DIR = Path(__file__).resolve().parent
 _FUNC_NAME = "_lambdifygenerated"
+
+#: First bytes of a cache entry; the SHA-256 checksum of the entry follows on the same line.
+_MAGIC = b"# ringchain generated code v1 sha256="
+
+#: Names of cache entries (``contact._stiffness_elliptical-<20 hex digits>.py``) and of the
+#: temporary files they are written through: the only files :func:`clear_cache` removes.
+_ENTRY_NAME = re.compile(r"[A-Za-z_]\w*(?:\.[A-Za-z_]\w*)*-[0-9a-f]{20}\.py")
+_TEMP_NAME = re.compile(r"\.tmp-[\w.-]+\.py")
 
 
 class _LazySympy(types.ModuleType):
@@ -49,27 +74,43 @@ sp = _LazySympy("sympy")
 
 
 @functools.cache
+def _versions() -> tuple[tuple[str, str], ...]:
+    """(distribution, version) of the libraries that generated code depends on."""
+    versions = []
+    for dist in ("sympy", "numpy"):
+        try:
+            versions.append((dist, importlib.metadata.version(dist)))
+        except importlib.metadata.PackageNotFoundError:  # pragma: no cover - vendored installs
+            versions.append((dist, "unknown"))
+    return tuple(versions)
+
+
+@functools.cache
 def source_key() -> str:
     """Hash of every ``.py`` file of the theory package plus the SymPy/NumPy versions."""
     digest = hashlib.sha256()
     for path in sorted(_PACKAGE_DIR.glob("*.py")):
         digest.update(path.name.encode())
         digest.update(path.read_bytes())
-    for dist in ("sympy", "numpy"):
-        try:
-            digest.update(importlib.metadata.version(dist).encode())
-        except importlib.metadata.PackageNotFoundError:  # pragma: no cover - vendored installs
-            digest.update(b"unknown")
+    for _, version in _versions():
+        digest.update(version.encode())
     return digest.hexdigest()[:20]
 
 
 def cache_dir() -> Path | None:
     """The directory of generated code, or ``None`` when the disk cache is disabled."""
+    return _cache_location()[0]
+
+
+def _cache_location() -> tuple[Path | None, str]:
+    """The cache directory (None: disabled) and where that choice comes from."""
     env = os.environ.get("RINGCHAIN_CACHE_DIR")
     if env is not None:
-        return Path(env) if env else None
-    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
-    return Path(base) / "ringchain"
+        return (Path(env) if env else None), "RINGCHAIN_CACHE_DIR"
+    xdg = os.environ.get("XDG_CACHE_HOME")
+    if xdg:
+        return Path(xdg) / "ringchain", "XDG_CACHE_HOME"
+    return Path(os.path.expanduser("~")) / ".cache" / "ringchain", "default"
 
 
 def _namespace(source: str) -> dict:
@@ -136,14 +177,27 @@ class Derived:
         return directory / f"{self.name}-{source_key()}.py"
 
     def source(self) -> str:
-        """Generated source: from the disk cache if present, else derived and stored."""
+        """Generated source: from the disk cache if a valid entry is there, else derived and stored."""
         path = self.cache_path
-        if path is not None and path.is_file():
-            return path.read_text()
-        text = generate_source(*self.expression())
+        text = None if path is None else _read_entry(path, self.name)
+        return self._derive_and_store(path) if text is None else text
+
+    def _derive_and_store(self, path: Path | None) -> str:
+        args, expr = self.expression()
+        text = generate_source(args, expr)
         if path is not None:
-            _write_atomic(path, text)
+            _write_atomic(path, _entry(self.name, args, expr, text))
         return text
+
+    def _load(self) -> Callable:
+        path = self.cache_path
+        text = None if path is None else _read_entry(path, self.name)
+        if text is not None:
+            try:
+                return _compile(text, self.name)
+            except Exception:  # an entry that passes its checksum yet does not load (a broken generator): rebuild
+                pass
+        return _compile(self._derive_and_store(path), self.name)
 
     @property
     def func(self) -> Callable:
@@ -151,7 +205,7 @@ class Derived:
         if self._func is None:
             with self._lock:
                 if self._func is None:
-                    self._func = _compile(self.source(), self.name)
+                    self._func = self._load()
         return self._func
 
     def __call__(self, *args):
@@ -163,13 +217,163 @@ def derived(build: Callable) -> Derived:
     return Derived(build)
 
 
-def _write_atomic(path: Path, text: str) -> None:
+# -- cache entries -----------------------------------------------------------------------------------
+def _checksum(name: str, body: bytes) -> bytes:
+    """SHA-256 (hex) of an entry's body, bound to the derivation's name and the source key."""
+    return hashlib.sha256(f"{name}\n{source_key()}\n".encode() + body).hexdigest().encode()
+
+
+def _entry(name: str, args, expr, text: str) -> bytes:
+    """A cache entry: checksum line, what the code was generated from, the generated source."""
+    versions = ", ".join(f"{dist} {version}" for dist, version in _versions())
+    expression = hashlib.sha256(sp.srepr(expr).encode()).hexdigest()
+    body = (
+        f"# derivation: {name}\n"
+        f"# source key: {source_key()} (theory/*.py, {versions})\n"
+        f"# arguments: {', '.join(str(a) for a in args)}\n"
+        f"# expression sha256: {expression} (of its srepr)\n"
+        f"{text}"
+    ).encode()
+    return _MAGIC + _checksum(name, body) + b"\n" + body
+
+
+def _read_entry(path: Path, name: str) -> str | None:
+    """The generated source stored at ``path``, or None if it is missing, unreadable or fails its checksum."""
+    try:
+        data = path.read_bytes()
+    except OSError:  # missing, unreadable, a directory...
+        return None
+    head, newline, body = data.partition(b"\n")
+    if not newline or head != _MAGIC + _checksum(name, body):
+        return None
+    try:
+        return body.decode()
+    except UnicodeDecodeError:  # pragma: no cover - a checksummed entry is the UTF-8 that was written
+        return None
+
+
+def _write_atomic(path: Path, data: bytes) -> None:
+    """Write ``data`` to ``path`` through a temporary file renamed into place; never raises OSError.
+
+    The temporary file is created by ``os.open(..., 0o666)``, so the kernel applies the
+    umask (and any default ACL) as for any new file, and it is removed if anything fails.
+    """
+    tmp = path.with_name(f".tmp-{path.stem}-{os.getpid()}-{secrets.token_hex(4)}.py")
+    fd = None
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=".tmp-", suffix=".py")
-        with os.fdopen(fd, "w") as handle:
-            handle.write(text)
+        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
+        view = memoryview(data)
+        while view:
+            view = view[os.write(fd, view) :]
+        os.close(fd)
+        fd = None
         os.replace(tmp, path)
-    except OSError:
+    except BaseException as exc:
+        if fd is not None:
+            os.close(fd)
+        try:
+            tmp.unlink()
+        except OSError:
+            pass
+        if not isinstance(exc, OSError):
+            raise
         # A read-only or full cache directory only costs speed; the code is still correct.
-        pass
+
+
+# -- cache maintenance -------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class CacheInfo:
+    """What :func:`cache_info` reports about the disk cache of generated code.
+
+    Attributes
+    ----------
+    path : Path or None
+        The cache directory; None when the cache is disabled (``RINGCHAIN_CACHE_DIR=""``).
+    origin : str
+        Where the location comes from: ``"RINGCHAIN_CACHE_DIR"``, ``"XDG_CACHE_HOME"`` or ``"default"``.
+    key : str
+        The key of the current source (:func:`source_key`); entries under other keys are stale.
+    exists, writable : bool
+        Whether the directory exists, and whether this process can create entries in it
+        (for a missing directory: whether it can be created).
+    current, stale, temporary : int
+        Entries under the current key, entries under other keys (left by other versions of
+        the code), and temporary files left by interrupted writes.
+    size : int
+        Bytes in all of them.
+    """
+
+    path: Path | None
+    origin: str
+    key: str
+    exists: bool = False
+    writable: bool = False
+    current: int = 0
+    stale: int = 0
+    temporary: int = 0
+    size: int = 0
+
+
+def _cache_files(directory: Path):
+    """(path, kind) of the cache's own files in ``directory``: kind "entry" or "temporary"."""
+    try:
+        children = list(directory.iterdir())
+    except OSError:
+        return
+    for path in sorted(children):
+        if _ENTRY_NAME.fullmatch(path.name) and path.is_file():
+            yield path, "entry"
+        elif _TEMP_NAME.fullmatch(path.name) and path.is_file():
+            yield path, "temporary"
+
+
+def _writable(directory: Path) -> bool:
+    """Whether this process may create files in ``directory`` (or create it)."""
+    probe = directory
+    while not probe.exists():
+        if probe.parent == probe:
+            return False
+        probe = probe.parent
+    return probe.is_dir() and os.access(probe, os.W_OK | os.X_OK)
+
+
+def cache_info() -> CacheInfo:
+    """Location, key, writability and contents of the disk cache of generated code."""
+    directory, origin = _cache_location()
+    key = source_key()
+    if directory is None:
+        return CacheInfo(None, origin, key)
+    counts = {"current": 0, "stale": 0, "temporary": 0}
+    size = 0
+    for path, kind in _cache_files(directory):
+        if kind == "entry":
+            kind = "current" if path.stem.endswith(f"-{key}") else "stale"
+        counts[kind] += 1
+        try:
+            size += path.stat().st_size
+        except OSError:  # pragma: no cover - removed meanwhile
+            pass
+    return CacheInfo(directory, origin, key, directory.is_dir(), _writable(directory), size=size, **counts)
+
+
+def clear_cache() -> tuple[int, int]:
+    """Remove every entry and leftover temporary file of the cache; returns (files removed, bytes).
+
+    Only files named as the cache names them are removed, so a cache directory that also
+    holds other files (``RINGCHAIN_CACHE_DIR`` pointed at a shared folder) keeps them; the
+    directory itself stays.  Raises ``OSError`` if a file cannot be removed.
+    """
+    directory = cache_dir()
+    removed = size = 0
+    if directory is None:
+        return removed, size
+    for path, _ in _cache_files(directory):
+        try:
+            nbytes = path.stat().st_size
+            path.unlink()
+        except FileNotFoundError:  # removed meanwhile (another process clearing or replacing it)
+            continue
+        removed += 1
+        size += nbytes
+    return removed, size

@@ -3,7 +3,7 @@
 A :class:`Ring` is a solid torus of major radius R and tube radius r, of some
 material, interlocked with its neighbours at a contact angle theta between ring
 planes.  It gives the mass m0, the spacing a = 2(R - r) of adjacent centres
-(paper Eq. vsfm), the contact and bending stiffnesses (Eqs. 1-2), the crossover
+(paper Eq. (8)), the contact and bending stiffnesses (Eqs. 1-2), the crossover
 force and the power-law fit (Eqs. 3-4).
 """
 
@@ -28,6 +28,10 @@ MIN_CHAIN_ASPECT_RATIO = 3.0
 #: Tube radius of the paper's rings, m (Fig. 2 caption).
 PAPER_TUBE_RADIUS = 2.5e-3
 
+#: Relative tolerance of the chain limit R >= 3 r: a few units of double-precision rounding, so
+#: that radii given as decimals (0.3 and 0.1) at the limit are not refused for their last bit.
+_ROUNDING = 4 * np.finfo(float).eps
+
 
 @dataclass(frozen=True)
 class Ring:
@@ -44,7 +48,8 @@ class Ring:
     angle : float, optional
         Contact angle theta between adjacent ring planes, rad; pi/2 is the paper's case.
     thin : bool, optional
-        Use the thin-ring bending stiffness instead of the curved-beam one.
+        Use the thin-ring bending stiffness instead of the curved-beam one (``True`` or
+        ``False``; anything else raises ``TypeError``).
 
     Examples
     --------
@@ -61,18 +66,25 @@ class Ring:
 
     def __post_init__(self):
         object.__setattr__(self, "material", get_material(self.material))
-        R = float(v.positive("R", self.R, "m"))
-        r = float(v.positive("r", self.r, "m"))
-        object.__setattr__(self, "R", R)
-        object.__setattr__(self, "r", r)
-        object.__setattr__(self, "angle", float(v.as_float("angle", self.angle)))
+        for name in ("R", "r", "angle"):
+            value = v.as_float(name, getattr(self, name))
+            if value.size != 1:
+                raise ValueError(f"{name} of a Ring must be one number, got an array of shape {value.shape}")
+            object.__setattr__(self, name, float(value.reshape(())))
+        object.__setattr__(self, "thin", v.boolean("thin", self.thin))
         # Validates R > 2 r and the angle, with errors that say why.
-        hertz_stiffness(R, r, self.material.E, self.material.nu, self.angle)
+        hertz_stiffness(self.R, self.r, self.material.E, self.material.nu, self.angle)
+        bending_stiffness(self.R, self.r, self.material.E, self.material.nu, thin=self.thin)
+        v.finite_result(self.mass, "the ring's mass", "radii and density")
 
     @classmethod
     def from_aspect_ratio(cls, aspect_ratio, r=PAPER_TUBE_RADIUS, **kwargs) -> Ring:
         """A ring with R = aspect_ratio * r (default r = 2.5 mm, the paper's tube radius)."""
-        return cls(R=float(aspect_ratio) * r, r=r, **kwargs)
+        aspect_ratio, r = v.positive("aspect_ratio", aspect_ratio), v.positive("r", r, "m")
+        with np.errstate(all="ignore"):
+            R = aspect_ratio * r
+        v.finite_result(R, "R = aspect_ratio * r", "aspect ratio and tube radius")
+        return cls(R=R, r=r, **kwargs)
 
     @property
     def aspect_ratio(self) -> float:
@@ -81,21 +93,26 @@ class Ring:
 
     @property
     def can_form_chain(self) -> bool:
-        """Whether R/r >= 3, so that each ring can hold both neighbours."""
-        return self.aspect_ratio >= MIN_CHAIN_ASPECT_RATIO
+        """Whether R >= 3 r, so that each ring can hold both neighbours.
+
+        Equality within the rounding of the inputs counts as equality: ``Ring(0.3, 0.1)``, whose
+        R/r is 2.9999999999999996 in floating point, is the limiting ring R = 3 r.
+        """
+        return bool(self.R >= MIN_CHAIN_ASPECT_RATIO * self.r * (1.0 - _ROUNDING))
 
     def check_chain(self) -> None:
         """Raise ``ValueError`` if this ring cannot be a link of an interlocked chain."""
         if not self.can_form_chain:
             raise ValueError(
-                f"R/r = {self.aspect_ratio:g} < {MIN_CHAIN_ASPECT_RATIO:g}: the hole of a ring, 2(R - r) across, "
-                "cannot pass the wires of two neighbours (4 r), so these rings cannot form a chain"
+                f"R/r = {v.show(self.aspect_ratio)} is below {MIN_CHAIN_ASPECT_RATIO:g}: the hole of a ring, "
+                "2(R - r) across, cannot pass the wires of two neighbours (4 r), so these rings cannot form a chain"
             )
 
     @property
     def volume(self) -> float:
         """Torus volume 2 pi^2 R r^2 (Pappus), m^3."""
-        return 2.0 * np.pi**2 * self.R * self.r**2
+        with np.errstate(all="ignore"):
+            return float(2.0 * np.pi**2 * np.float64(self.R) * self.r * self.r)
 
     @property
     def mass(self) -> float:

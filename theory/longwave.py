@@ -1,6 +1,6 @@
 r"""Long-wave (continuum) limit of the power-law chain: Nesterenko's expansion (paper App. B).
 
-The lattice is the power-law chain of the paper (Eq. power law without dashpots) in the
+The lattice is the power-law chain of the paper (Eq. (7) without dashpots) in the
 tension convention of the project: the extension of contact i is u_{i+1} - u_i and
 
     m u_i'' = K (u_{i+1} - u_i)^n - K (u_i - u_{i-1})^n,        A = K/m.
@@ -8,7 +8,7 @@ tension convention of the project: the extension of contact i is u_{i+1} - u_i a
 The derivation, step by step (each step a function returning SymPy objects):
 
 1. :func:`neighbour_displacements` -- Taylor series of u_{i+1}, u_{i-1} in the spacing
-   a (App. B, Eq. disp_expansion), from :func:`sympy.series` of u(x + h, t).
+   a (App. B, Eqs. (B1)-(B3), from :func:`sympy.series` of u(x + h, t).
 2. :func:`extension_parts` -- u_{i+1} - u_i = N + phi, u_i - u_{i-1} = N + psi with
    N = a u_x; :func:`binomial_expansion` -- (N + phi)^n to third order in phi/N.
 3. :func:`power_difference` -- phi - psi, phi^2 - psi^2, phi^3 - psi^3 to the order
@@ -16,7 +16,7 @@ The derivation, step by step (each step a function returning SymPy objects):
    is needed through a^(k+3) for u_tt to be exact to relative order eps^2
    (:data:`RELATIVE_ORDER`); phi^4 - psi^4 starts at a^9, beyond that order, which is why
    the binomial series stops at the cube.
-4. :func:`displacement_equation` -- App. B Eq. (15) for u_tt, assembled from steps 2-3;
+4. :func:`displacement_equation` -- App. B Eq. (B15) for u_tt, assembled from steps 2-3;
    :func:`displacement_equation_direct` -- the same by expanding the lattice force
    directly in a (an independent route, used as a check).
 5. :func:`flux` and :func:`displacement_equation_conservative` -- the conservative form
@@ -24,12 +24,12 @@ The derivation, step by step (each step a function returning SymPy objects):
    difference f(x + a/2) - f(x - a/2) of the contact force f = K (u(x + a/2) -
    u(x - a/2))^n at the contact points, and the central difference
    f(x + a/2) - f(x - a/2) = d/dx [a f + a^3/24 f_xx] + O(a^5) puts it in flux form.
-6. :func:`strain_equation` -- App. B Eq. (17) for the strain xi = u_x, with
+6. :func:`strain_equation` -- App. B Eq. (B17) for the strain xi = u_x, with
    c_n^2 = A a^(n+1) (:func:`wave_speed_squared`).
 7. Linear sound speed of a pre-stretched chain (static strain xi_0, static contact
    extension delta_0 = a xi_0, static force F_0 = K delta_0^n), derived twice: from the
    linearised lattice (:func:`lattice_dispersion`, :func:`sound_speed_lattice`) and from
-   Eq. (17) linearised about xi_0 (:func:`continuum_dispersion`,
+   Eq. (B17) linearised about xi_0 (:func:`continuum_dispersion`,
    :func:`sound_speed_continuum`); both give c_0 = a sqrt(n K delta_0^(n-1)/m).
 
 The expansion assumes u_x > 0 (every contact in tension), so powers of a u_x split into
@@ -44,6 +44,7 @@ import numpy as np
 
 from . import _validate as v
 from ._codegen import derived, sp
+from ._forms import power_law, power_law_value
 
 __all__ = [
     "RELATIVE_ORDER",
@@ -68,6 +69,7 @@ __all__ = [
     "sound_speed_lattice",
     "continuum_dispersion",
     "sound_speed_continuum",
+    "static_extension",
     "sound_speed_from_force",
     "linear_sound_speed",
 ]
@@ -137,7 +139,7 @@ def _taylor(shift):
 
 @functools.cache
 def neighbour_displacements():
-    """(u_{i-1}, u_{i+1}): Taylor polynomials in a through a^5 (App. B, Eq. disp_expansion)."""
+    """(u_{i-1}, u_{i+1}): Taylor polynomials in a through a^5 (App. B, Eqs. (B1)-(B3)."""
     a = symbols()["a"]
     return _taylor(-a), _taylor(a)
 
@@ -153,7 +155,7 @@ def extension_parts():
 
 
 def binomial_expansion(N=None, e=None, terms=4):
-    """(N + e)^n to ``terms`` terms in e/N (the binomial series of App. B, Eqs. 6-7).
+    """(N + e)^n to ``terms`` terms in e/N (the binomial series of App. B, Eqs. (B6)-(B7)).
 
     With the default symbols ``N`` and ``e`` it returns
     N^n + n N^(n-1) e + n(n-1)/2 N^(n-2) e^2 + n(n-1)(n-2)/6 N^(n-3) e^3.
@@ -188,7 +190,7 @@ def _truncate(expr, through, leading=0, divide=False):
 
 
 def power_difference(k, through=None):
-    """phi^k - psi^k through a^through (default k + 1 + RELATIVE_ORDER, what Eq. 15 needs).
+    """phi^k - psi^k through a^through (default k + 1 + RELATIVE_ORDER, what Eq. (B15) needs).
 
     N^(n-k) (phi^k - psi^k) is a^(n-k) (phi^k - psi^k); the leading term of u_tt is a^(n+1),
     so relative order eps^2 needs phi^k - psi^k through a^(k + 3).
@@ -200,7 +202,7 @@ def power_difference(k, through=None):
 
 @functools.cache
 def displacement_equation():
-    """Right-hand side of u_tt, App. B Eq. (15), assembled from the binomial series.
+    """Right-hand side of u_tt, App. B Eq. (B15), assembled from the binomial series.
 
     u_tt = A sum_k C_k N^(n-k) (phi^k - psi^k), k = 1..3, with C_k the binomial
     coefficients of :func:`binomial_expansion` and the power differences of
@@ -220,7 +222,7 @@ def displacement_equation():
 
 @functools.cache
 def displacement_equation_direct():
-    """u_tt from the lattice force expanded directly in a (a check of Eq. 15 by another route).
+    """u_tt from the lattice force expanded directly in a (a check of Eq. (B15) by another route).
 
     A [(N + phi)^n - (N + psi)^n] = A N^n [(1 + phi/N)^n - (1 + psi/N)^n], the bracket
     expanded with :func:`sympy.series` in a, through relative order eps^2.
@@ -261,7 +263,7 @@ def central_difference(order=4):
 
 @functools.cache
 def flux():
-    """G with u_tt = A a^(n+1) d/dx G (the conservative form of App. B, below Eq. 15).
+    """G with u_tt = A a^(n+1) d/dx G (the conservative form of App. B, below Eq. (B15)).
 
     The central difference a F' + a^3/24 F''' = d/dx (a F + a^3/24 F'') of the contact
     force F = f (:func:`contact_force_at_midpoint`) gives the flux a f + a^3/24 f_xx;
@@ -285,14 +287,14 @@ def flux():
 
 @functools.cache
 def displacement_equation_conservative():
-    """A a^(n+1) d/dx G, evaluated: must equal Eq. (15) (:func:`displacement_equation`)."""
+    """A a^(n+1) d/dx G, evaluated: must equal Eq. (B15) (:func:`displacement_equation`)."""
     s = symbols()
     a, n = s["a"], s["n"]
     return sp.collect(_truncate(s["A"] * a ** (n + 1) * sp.diff(flux(), s["x"]), RELATIVE_ORDER, leading=n + 1), a)
 
 
 def wave_speed_squared():
-    """c_n^2 = A a^(n+1) = K a^(n+1)/m (App. B, below Eq. 17)."""
+    """c_n^2 = A a^(n+1) = K a^(n+1)/m (App. B, below Eq. (B17))."""
     s = symbols()
     return s["K"] / s["m"] * s["a"] ** (s["n"] + 1)
 
@@ -306,7 +308,7 @@ def strain_flux():
 
 @functools.cache
 def strain_equation():
-    """App. B Eq. (17): xi_tt = c_n^2 d^2/dx^2 {xi^n + n a^2/24 [...]} as a SymPy ``Eq``.
+    """App. B Eq. (B17): xi_tt = c_n^2 d^2/dx^2 {xi^n + n a^2/24 [...]} as a SymPy ``Eq``.
 
     Differentiating u_tt = c_n^2 d/dx G in x and writing xi = u_x.  The right-hand side
     is returned unevaluated (``Derivative`` of the strain flux), as printed in the paper.
@@ -357,7 +359,7 @@ def sound_speed_lattice():
 
 @functools.cache
 def continuum_dispersion():
-    """omega^2(q) of Eq. (17) linearised about the static strain xi_0.
+    """omega^2(q) of Eq. (B17) linearised about the static strain xi_0.
 
     xi = xi_0 + epsilon eta with eta = exp(i(q x - omega t)); to first order in epsilon,
     omega^2 = c_n^2 n xi_0^(n-1) (q^2 - a^2 q^4/12): the long-wave expansion of
@@ -381,17 +383,24 @@ def sound_speed_continuum():
 
 
 @functools.cache
+def static_extension():
+    """delta_0(F_0) = (F_0/K)^(1/n): the contact extension that carries the static force F_0 = K delta_0^n."""
+    s = symbols()
+    return sp.solve(sp.Eq(s["F_0"], s["K"] * s["delta_0"] ** s["n"]), s["delta_0"])[0]
+
+
+@functools.cache
 def sound_speed_from_force():
     """c_0(F_0) = a sqrt(n K^(1/n) F_0^((n-1)/n)/m): :func:`sound_speed_lattice` with F_0 = K delta_0^n."""
     s = symbols()
-    delta_0 = sp.solve(sp.Eq(s["F_0"], s["K"] * s["delta_0"] ** s["n"]), s["delta_0"])[0]
-    return sp.powsimp(sp.simplify(sound_speed_lattice().subs(s["delta_0"], delta_0)), force=True)
+    return sp.powsimp(sp.simplify(sound_speed_lattice().subs(s["delta_0"], static_extension())), force=True)
 
 
 @derived
 def _sound_speed():
+    """(log C, p) of the power law c_0 = C F_0^p (:func:`sound_speed_from_force`)."""
     s = symbols()
-    return (s["F_0"], s["K"], s["n"], s["a"], s["m"]), sound_speed_from_force()
+    return (s["K"], s["n"], s["a"], s["m"]), power_law(sound_speed_from_force(), s["F_0"])
 
 
 def linear_sound_speed(F_0, K, n, a, m):
@@ -419,7 +428,7 @@ def linear_sound_speed(F_0, K, n, a, m):
     -----
     Long-wave limit of the dispersion relation of the lattice linearised about the
     static extension delta_0 (:func:`lattice_dispersion`); the same speed follows from
-    App. B Eq. (17) linearised about xi_0 = delta_0/a (:func:`sound_speed_continuum`).
+    App. B Eq. (B17) linearised about xi_0 = delta_0/a (:func:`sound_speed_continuum`).
     It is the limit F_m -> F_0 of
     :func:`~ringchain.theory.solitary_wave_speed_prestressed`.
 
@@ -433,6 +442,13 @@ def linear_sound_speed(F_0, K, n, a, m):
     n = v.positive("n", n)
     a = v.positive("a", a, "m")
     m = v.positive("m", m, "kg")
+    v.broadcast_shape(F_0=F_0, K=K, n=n, a=a, m=m)
     if np.any((F_0 == 0) & (n < 1)):
         raise ValueError("F_0 = 0 with n < 1 gives an infinite sound speed; give F_0 > 0")
-    return _sound_speed(F_0, K, n, a, m)
+    with np.errstate(all="ignore"):
+        log_coefficient, exponent = _sound_speed(K, n, a, m)
+        # exp(log C + p log F_0) where F_0 > 0; C 0^p at F_0 = 0: 0 for n > 1, C for the linear chain.
+        stretched = power_law_value(log_coefficient, exponent, np.where(F_0 > 0, F_0, 1.0))
+        unstretched = np.where(exponent == 0, np.exp(log_coefficient), 0.0)
+        speed = np.where(F_0 > 0, stretched, unstretched)
+    return v.finite_result(speed, "c_0", "static force and chain parameters (K, n, a, m)")

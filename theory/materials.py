@@ -9,6 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from . import _validate as v
+from .contact import contact_modulus
 
 __all__ = ["Material", "STAINLESS_STEEL_304", "MATERIALS", "get_material"]
 
@@ -38,9 +39,15 @@ class Material:
     source: str
 
     def __post_init__(self):
-        v.positive("E", self.E, "Pa")
-        v.in_range("nu", self.nu, -1.0, 0.5, closed_high=False)
-        v.positive("rho", self.rho, "kg/m^3")
+        checked = {
+            "E": v.positive("E", self.E, "Pa"),
+            "nu": v.in_range("nu", self.nu, -1.0, 0.5, closed_high=False),
+            "rho": v.positive("rho", self.rho, "kg/m^3"),
+        }
+        for name, value in checked.items():
+            if value.size != 1:
+                raise ValueError(f"{name} of a material must be one number, got an array of shape {value.shape}")
+            object.__setattr__(self, name, float(value.reshape(())))
 
     @property
     def G(self) -> float:
@@ -49,8 +56,12 @@ class Material:
 
     @property
     def E_star(self) -> float:
-        """Contact modulus of two bodies of this material, E/(2(1 - nu^2)), Pa (App. A)."""
-        return self.E / (2.0 * (1.0 - self.nu**2))
+        """Contact modulus of two bodies of this material, Pa (App. A).
+
+        1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 with both bodies of this material, from the
+        derivation (:func:`ringchain.theory.contact.effective_modulus`): E/(2(1 - nu^2)).
+        """
+        return float(contact_modulus(self.E, self.nu))
 
 
 #: AISI 304 austenitic stainless steel, annealed (the paper's rings are "stainless steel";

@@ -15,6 +15,7 @@ __all__ = [
     "CHAIN_RINGS",
     "SENSOR_RINGS",
     "ARRIVAL_TIMES_AS_PRINTED",
+    "EQUATION_NUMBERS",
 ]
 
 #: Tube radius of all the paper's rings, m (Fig. 2 caption).
@@ -50,3 +51,28 @@ SENSOR_RINGS = (6, 12)
 #: Arrival times at the downstream sensor, as printed in Sec. III.A (the paper says "s";
 #: see the book's notes on the paper for why they cannot be seconds).
 ARRIVAL_TIMES_AS_PRINTED = {"low amplitude": 0.426, "high amplitude": 0.348}
+
+#: The paper's printed equation numbers by the label in its LaTeX source (revtex numbers the main
+#: text 1-8 and each appendix A1..., B1...).  Code and book cite the printed numbers.
+EQUATION_NUMBERS = {
+    "eq:Fc": "1",
+    "eq:Fb": "2",
+    "eq:dxF": "3",
+    "eq:Fdx": "4",
+    "eq: dual-spring": "5-6",
+    "eq: power law": "7",
+    "eq:vsfm": "8",
+    "eq:one": "A1",
+    "eq:whole": "A2",
+    "subeq:1": "A2a",
+    "subeq:2": "A2b",
+    "eq:three": "A3",
+    "eq:disp_expansion": "B1-B3",
+    "6": "B6",
+    "7": "B7",
+    "15": "B15",
+    "17": "B17",
+    "18": "B18",
+    "19": "B19",
+    "21": "B21",
+}

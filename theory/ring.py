@@ -205,7 +205,8 @@ def bending_stiffness(R, r, E, nu, thin=False):
     thin : bool, optional
         ``True``: thin-ring theory, bending energy only (k1 = k2 = 1, J = I).
         ``False`` (default): curved-beam energy with normal force, coupling and shear,
-        Roark's thick-ring factors alpha = e/R, beta = 2F(1 + nu) e/R.
+        Roark's thick-ring factors alpha = e/R, beta = 2F(1 + nu) e/R.  Anything but a
+        boolean (a string such as ``"no"`` is truthy) raises ``TypeError``.
 
     Returns
     -------
@@ -226,8 +227,14 @@ def bending_stiffness(R, r, E, nu, thin=False):
     """
     R = v.positive("R", R, "m")
     r = v.positive("r", r, "m")
-    if np.any(r >= R):
-        raise ValueError(f"r must be smaller than R for a ring (got R/r = {np.min(R / r):g})")
     E = v.positive("E", E, "Pa")
     nu = v.in_range("nu", nu, -1.0, 0.5, closed_high=False)
-    return (_stiffness_thin if thin else _stiffness_thick)(R, r, E, nu)
+    thin = v.boolean("thin", thin)
+    v.broadcast_shape(R=R, r=r, E=E, nu=nu)
+    if np.any(r >= R):
+        with np.errstate(all="ignore"):
+            ratio = np.min(R / r)
+        raise ValueError(f"r must be smaller than R for a ring (got R/r = {v.show(ratio)})")
+    with np.errstate(all="ignore"):
+        K_b = (_stiffness_thin if thin else _stiffness_thick)(R, r, E, nu)
+    return v.finite_result(K_b, "K_b", "radii and elastic constants")

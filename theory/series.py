@@ -21,6 +21,8 @@ import numpy as np
 
 from . import _validate as v
 from ._codegen import derived, sp
+from ._forms import log_monomial
+from .special import exp_of_log
 
 __all__ = [
     "symbols",
@@ -30,7 +32,11 @@ __all__ = [
     "local_exponent_expr",
     "crossover_force_expr",
     "local_exponent_at_crossover",
+    "bending_share",
+    "local_exponent_of_share",
     "series_displacement",
+    "series_extension",
+    "fit_power_law_to_curve",
     "local_exponent",
     "crossover_force",
     "fit_power_law",
@@ -89,6 +95,40 @@ def local_exponent_at_crossover():
     return sp.simplify(local_exponent_expr().subs(F, crossover_force_expr()))
 
 
+def series_extension_expr():
+    """delta = delta_c + delta_b(F) for any contact law: Eq. (3) with the contact's extension kept as a symbol."""
+    s = symbols()
+    return total_extension().subs(contact_extension(), s["delta_c"])
+
+
+@derived
+def _series_extension():
+    s = symbols()
+    return (s["delta_c"], s["F"], s["K_b"]), series_extension_expr()
+
+
+def bending_share():
+    """w = delta_b/(delta_c + delta_b): the share of the extension taken by ring bending (0 to 1)."""
+    return sp.simplify(bending_extension() / total_extension())
+
+
+def local_exponent_of_share():
+    """(n(w), w): the local exponent as a function of the bending share w alone, n = 3/(2 + w).
+
+    Solves w = delta_b/delta for F and substitutes into :func:`local_exponent_expr`; the
+    stiffnesses cancel (checked).  From w = 0 (all contact, n = 3/2) to w = 1 (all bending,
+    n = 1); at the crossover w = 1/2 and n = 6/5.
+    """
+    s = symbols()
+    w = sp.Symbol("w", positive=True)
+    ratio = sp.Symbol("phi", positive=True)  # delta_b/delta_c = w/(1 - w)
+    (force,) = sp.solve(sp.Eq(bending_extension() / contact_extension(), ratio), s["F"])
+    exponent = sp.simplify(local_exponent_expr().subs(s["F"], force).subs(ratio, w / (1 - w)))
+    if exponent.has(s["K_c"], s["K_b"]):  # pragma: no cover - derivation check
+        raise RuntimeError("the local exponent depends on more than the bending share")
+    return exponent, w
+
+
 @derived
 def _displacement():
     s = symbols()
@@ -97,14 +137,27 @@ def _displacement():
 
 @derived
 def _exponent():
+    """n(w) with w = 1/(1 + delta_c/delta_b) and delta_c/delta_b = exp(log of the monomial): no
+    intermediate overflow for any positive F, K_c, K_b (exp overflowing gives w = 0, n = 3/2)."""
     s = symbols()
-    return (s["F"], s["K_c"], s["K_b"]), local_exponent_expr()
+    exponent, w = local_exponent_of_share()
+    share = 1 / (1 + exp_of_log(log_monomial(contact_extension() / bending_extension())))
+    return (s["F"], s["K_c"], s["K_b"]), exponent.subs(w, share)
+
+
+@derived
+def _log_displacement_terms():
+    """ln delta_c and ln delta_b (the two terms of Eq. (3), each a monomial), for ln delta = logaddexp."""
+    s = symbols()
+    terms = sp.Add.make_args(total_extension())
+    return (s["F"], s["K_c"], s["K_b"]), tuple(log_monomial(term) for term in terms)
 
 
 @derived
 def _crossover():
+    """F* = exp(log of the monomial K_b^3/K_c^2): representable whenever F* is."""
     s = symbols()
-    return (s["K_c"], s["K_b"]), crossover_force_expr()
+    return (s["K_c"], s["K_b"]), exp_of_log(log_monomial(crossover_force_expr()))
 
 
 def _stiffnesses(K_c, K_b):
@@ -135,7 +188,39 @@ def series_displacement(F, K_c, K_b):
     """
     F = v.nonnegative("F", F, "N")
     K_c, K_b = _stiffnesses(K_c, K_b)
-    return _displacement(F, K_c, K_b)
+    v.broadcast_shape(F=F, K_c=K_c, K_b=K_b)
+    with np.errstate(all="ignore"):
+        delta = _displacement(F, K_c, K_b)
+    return v.finite_result(delta, "delta", "force and stiffnesses")
+
+
+def series_extension(delta_c, F, K_b):
+    """Extension of a contact of any law in series with one ring's bending (paper Eq. 3).
+
+    Parameters
+    ----------
+    delta_c : array_like
+        Extension (approach) of the contact at force F, m, >= 0 -- e.g. from a numerical
+        contact curve (:func:`ringchain.numerics.contact_curve`).
+    F : array_like
+        Force, N, >= 0.
+    K_b : array_like
+        Bending stiffness of the ring, N/m.
+
+    Returns
+    -------
+    ndarray
+        delta = delta_c + F/K_b in m.
+
+    Examples
+    --------
+    >>> float(series_extension(1e-6, 2.0, 1e6))  # 1 um + 2 N / (1 N/um)
+    3e-06
+    """
+    delta_c = v.nonnegative("delta_c", delta_c, "m")
+    F = v.nonnegative("F", F, "N")
+    K_b = v.positive("K_b", K_b, "N/m")
+    return _series_extension(delta_c, F, K_b)
 
 
 def local_exponent(F, K_c, K_b):
@@ -155,11 +240,20 @@ def local_exponent(F, K_c, K_b):
 
     Notes
     -----
-    Derivative of paper Eq. (3); with s = (F*/F)^(1/3), n = (s + 1)/(2 s/3 + 1).
+    Derivative of paper Eq. (3); with the bending share w = delta_b/delta of the extension,
+    n = 3/(2 + w) (:func:`local_exponent_of_share`), evaluated so that no force or
+    stiffness, however large or small, overflows it.
+
+    Examples
+    --------
+    >>> round(float(local_exponent(8.0, 1.0, 4.0)), 12)  # delta_c = 4, delta_b = 2: w = 1/3, n = 9/7
+    1.285714285714
     """
     F = v.positive("F", F, "N")
     K_c, K_b = _stiffnesses(K_c, K_b)
-    return _exponent(F, K_c, K_b)
+    v.broadcast_shape(F=F, K_c=K_c, K_b=K_b)
+    with np.errstate(all="ignore"):
+        return _exponent(F, K_c, K_b)
 
 
 def crossover_force(K_c, K_b):
@@ -176,7 +270,10 @@ def crossover_force(K_c, K_b):
         F* in N.  Below F* the contact dominates (n -> 3/2), above it bending (n -> 1).
     """
     K_c, K_b = _stiffnesses(K_c, K_b)
-    return _crossover(K_c, K_b)
+    v.broadcast_shape(K_c=K_c, K_b=K_b)
+    with np.errstate(all="ignore"):
+        force = _crossover(K_c, K_b)
+    return v.finite_result(force, "F*", "stiffnesses")
 
 
 @functools.cache
@@ -214,19 +311,86 @@ def fit_power_law(K_c, K_b, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DEFAULT_FORCE_W
     K_c, K_b = _stiffnesses(K_c, K_b)
     F_min = v.positive("F_min", F_min, "N")
     F_max = v.positive("F_max", F_max, "N")
+    v.broadcast_shape(K_c=K_c, K_b=K_b, F_min=F_min, F_max=F_max)
     if np.any(F_max <= F_min):
-        raise ValueError(f"the force window needs F_min < F_max, got [{F_min}, {F_max}] N")
+        raise ValueError(
+            f"the force window needs F_min < F_max, got F_min = {v.show(F_min)} N and F_max = {v.show(F_max)} N"
+        )
     nodes, weights = _gauss_legendre()
     lo, hi = np.log(F_min)[..., None], np.log(F_max)[..., None]
     log_F = 0.5 * (hi - lo) * nodes + 0.5 * (hi + lo)
-    log_delta = np.log(_displacement(np.exp(log_F), K_c[..., None], K_b[..., None]))
-    w = weights / weights.sum()
-    mean_x = np.sum(w * log_delta, axis=-1)
-    mean_y = np.sum(w * log_F, axis=-1)
-    cov = np.sum(w * (log_delta - mean_x[..., None]) * (log_F - mean_y[..., None]), axis=-1)
-    var = np.sum(w * (log_delta - mean_x[..., None]) ** 2, axis=-1)
-    n = cov / var
-    return np.exp(mean_y - n * mean_x), n
+    with np.errstate(all="ignore"):
+        # ln delta = ln(delta_c + delta_b) from the logarithms of the two terms: no overflow.
+        log_delta = np.logaddexp(*_log_displacement_terms(np.exp(log_F), K_c[..., None], K_b[..., None]))
+    K, n = _log_least_squares(log_F, log_delta, weights)
+    reason = "stiffnesses and force window (a window narrower than rounding has no slope)"
+    return v.finite_result(K, "the fitted K", reason), v.finite_result(n, "the fitted n", reason)
+
+
+def _log_least_squares(log_F, log_delta, weights, n=None):
+    """(K, n) minimising sum w (ln F - ln K - n ln delta)^2 along the last axis (n fixed if given)."""
+    with np.errstate(all="ignore"):
+        w = weights / weights.sum()
+        mean_x = np.sum(w * log_delta, axis=-1)
+        mean_y = np.sum(w * log_F, axis=-1)
+        if n is None:
+            cov = np.sum(w * (log_delta - mean_x[..., None]) * (log_F - mean_y[..., None]), axis=-1)
+            var = np.sum(w * (log_delta - mean_x[..., None]) ** 2, axis=-1)
+            n = cov / var
+        return np.exp(mean_y - n * mean_x), n
+
+
+def fit_power_law_to_curve(F, delta, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DEFAULT_FORCE_WINDOW[1], n=None):
+    """Power law F = K delta^n fitted to a tabulated force-extension curve over [F_min, F_max] (Eq. 4).
+
+    Parameters
+    ----------
+    F : array_like
+        Forces of the curve, N, > 0, strictly increasing; the window must lie within them.
+    delta : array_like
+        Extensions at those forces, m, > 0, increasing.
+    F_min, F_max : float, optional
+        Force window, N (default :data:`DEFAULT_FORCE_WINDOW`, 1 N to 100 N).
+    n : float, optional
+        Fix the exponent (e.g. 1.5 for an effective Hertz constant) and fit K alone.
+
+    Returns
+    -------
+    K : float
+        Prefactor in N/m^n.
+    n : float
+        Exponent.
+
+    Notes
+    -----
+    The same least squares as :func:`fit_power_law`: equal weight per decade of force, by
+    64-point Gauss-Legendre quadrature in ln F, with ln delta interpolated linearly in ln F
+    between the curve's points (an error of second order in their spacing).
+
+    Examples
+    --------
+    >>> F = np.geomspace(0.5, 200.0, 9)
+    >>> K, n = fit_power_law_to_curve(F, (F / 3.0) ** (1 / 1.25))
+    >>> round(float(K), 6), round(float(n), 6)
+    (3.0, 1.25)
+    """
+    F = v.positive("F", F, "N")
+    delta = v.positive("delta", delta, "m")
+    if F.ndim != 1 or F.shape != delta.shape or F.size < 2 or np.any(np.diff(F) <= 0):
+        raise ValueError("F and delta must be 1-D arrays of the same length (>= 2), F strictly increasing")
+    F_min, F_max = float(F_min), float(F_max)
+    if not 0 < F_min < F_max:
+        raise ValueError(f"the force window needs 0 < F_min < F_max, got [{F_min:g}, {F_max:g}] N")
+    if F_min < F[0] * (1 - 1e-12) or F_max > F[-1] * (1 + 1e-12):
+        raise ValueError(
+            f"the force window [{F_min:g}, {F_max:g}] N must lie within the curve's [{F[0]:g}, {F[-1]:g}] N"
+        )
+    nodes, weights = _gauss_legendre()
+    lo, hi = np.log(F_min), np.log(F_max)
+    log_F = 0.5 * (hi - lo) * nodes + 0.5 * (hi + lo)
+    log_delta = np.interp(log_F, np.log(F), np.log(delta))
+    K, n = _log_least_squares(log_F, log_delta, weights, n)
+    return float(K), float(n)
 
 
 def n_per_mm_to_si(K, n):
@@ -249,9 +413,23 @@ def n_per_mm_to_si(K, n):
     >>> float(n_per_mm_to_si(2.0, 1.5) / 1000**1.5)
     2.0
     """
-    return v.as_float("K", K) * 1000.0 ** v.as_float("n", n)
+    return _convert(K, n, 1.0)
 
 
 def si_to_n_per_mm(K, n):
-    """Inverse of :func:`n_per_mm_to_si`: K in N/m^n to N/mm^n."""
-    return v.as_float("K", K) * 1000.0 ** (-v.as_float("n", n))
+    """Inverse of :func:`n_per_mm_to_si`: K in N/m^n to N/mm^n.
+
+    Examples
+    --------
+    >>> float(si_to_n_per_mm(2.0 * 1000**1.5, 1.5))
+    2.0
+    """
+    return _convert(K, n, -1.0)
+
+
+def _convert(K, n, direction):
+    K, n = v.as_float("K", K), v.as_float("n", n)
+    v.broadcast_shape(K=K, n=n)
+    with np.errstate(all="ignore"):
+        converted = K * 1000.0 ** (direction * n)
+    return v.finite_result(converted, "the converted K", "prefactor and exponent")

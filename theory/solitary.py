@@ -1,35 +1,35 @@
-r"""Compact solitary wave of the power-law chain and its speed (paper Sec. IV.C, App. B Eqs. 18-21).
+r"""Compact solitary wave of the power-law chain and its speed (paper Sec. IV.C, App. B Eqs. (B18)-(B21)).
 
-Continues :mod:`.longwave` from the strain equation (Eq. 17).  Step by step:
+Continues :mod:`.longwave` from the strain equation (Eq. (B17)).  Step by step:
 
-1. :func:`travelling_wave_ode` -- xi(x, t) = xi(tau), tau = x - V_s t turns Eq. (17)
+1. :func:`travelling_wave_ode` -- xi(x, t) = xi(tau), tau = x - V_s t turns Eq. (B17)
    into d^2/dtau^2 [V_s^2 xi - c_n^2 G(xi)] = 0 (:func:`travelling_wave_potential`);
-   :func:`twice_integrated` integrates twice (``dsolve``) to Eq. (19) with constants
-   C_1, C_0; :func:`integration_constants` evaluates Eq. (19) on a uniform state
+   :func:`twice_integrated` integrates twice (``dsolve``) to Eq. (B19) with constants
+   C_1, C_0; :func:`integration_constants` evaluates Eq. (B19) on a uniform state
    xi -> xi_inf: boundedness for all tau forces C_1 = 0, and C_0 = (V_s/c_n)^2 xi_inf -
    xi_inf^n, which vanishes on an unstretched chain (xi_inf = 0).
 2. :func:`change_of_variables` -- xi = (y/sigma)^q, tau = mu/kappa.  The exponent
    q = 2/(n+1) is derived as the one that removes xi_tau^2 from the equation, kappa and
    sigma as the scales that make the coefficients of y and of y^((3-n)/(n+1)) equal to
    -1 and 1; :func:`oscillator_equation` and :func:`oscillator_potential` give
-   y_mumu = -W'(y) with W = y^2/2 - (n+1)/4 y^(4/(n+1)) + C (n+1)/2 y^(2/(n+1)) (Eq. 21;
+   y_mumu = -W'(y) with W = y^2/2 - (n+1)/4 y^(4/(n+1)) + C (n+1)/2 y^(2/(n+1)) (Eq. (B21);
    the last term, from C_0, is the pre-stretched chain's).
-3. :func:`compact_solution` -- the ansatz xi = A |sin(omega tau)|^p in Eq. (19): its
+3. :func:`compact_solution` -- the ansatz xi = A |sin(omega tau)|^p in Eq. (B19): its
    residual is a sum of powers |sin|^p, |sin|^(n p) and |sin|^(n p - 2); a nontrivial
    balance needs n p - 2 = p, so p = 2/(n-1), and the two remaining coefficients fix
    omega and A.  :func:`profile_residual` substitutes the result back: the residual
    simplifies to 0 for symbolic n > 1 (SymPy proves it; the tests repeat the check
    with mpmath at 40 digits for irrational n, independently of the SymPy
-   manipulations).  Every term of Eq. (19) is a multiple of |sin|^p, so all vanish at
+   manipulations).  Every term of Eq. (B19) is a multiple of |sin|^p, so all vanish at
    the edges of a hump, and one hump glued to xi = 0 outside (the compact solitary
-   wave) satisfies Eq. (19) at every tau.
+   wave) satisfies Eq. (B19) at every tau.
 4. Speeds and profiles: :func:`speed_from_strain` (V_s(xi_max)),
    :func:`velocity_profile` (v = u_t = -V_s xi, so xi_max = -v_max/V_s),
    :func:`speed_from_velocity`, :func:`force_profile` (F = K (a xi)^n, delta ~ a xi),
-   :func:`speed_from_force` (paper Eq. vsfm), :func:`support_width` (pi/omega),
+   :func:`speed_from_force` (paper Eq. (8)), :func:`support_width` (pi/omega),
    :func:`centred_force_profile`.
 5. Pre-stretched chain (beyond the paper): a static strain xi_0 > 0 far from the wave.
-   :func:`first_integral` -- with w(xi) = xi_tau^2, Eq. (19) is linear in w and
+   :func:`first_integral` -- with w(xi) = xi_tau^2, Eq. (B19) is linear in w and
    xi^(n-1) is its integrating factor: n a^2/24 xi^(n-1) xi_tau^2 = P(xi) + E.
    :func:`prestressed_speed_squared` -- xi_tau = 0 at xi_0 and at the peak xi_max gives
    V_s^2 = 2 c_n^2 [(xi_max^(n+1) - xi_0^(n+1))/(n+1) - xi_0^n (xi_max - xi_0)]/(xi_max - xi_0)^2;
@@ -52,6 +52,8 @@ import numpy as np
 from . import _validate as v
 from . import longwave
 from ._codegen import derived, sp
+from ._forms import power_law, power_law_value
+from .series import _gauss_legendre
 from .special import hyp2f1
 
 __all__ = [
@@ -78,6 +80,9 @@ __all__ = [
     "prestressed_speed_squared",
     "prestressed_speed_hypergeometric",
     "prestressed_speed_from_force",
+    "prestress_factor",
+    "prestress_factor_elementary",
+    "prestress_factor_integral",
     "stable_profile",
     "solitary_wave_speed",
     "solitary_wave_speed_from_velocity",
@@ -91,7 +96,7 @@ __all__ = [
 def symbols():
     """Symbols of :mod:`.longwave` plus tau, V_s, the travelling-wave unknowns and amplitudes.
 
-    ``X``, ``X_tau``, ``X_tautau`` stand for xi, xi_tau, xi_tautau in Eq. (19); ``s`` is
+    ``X``, ``X_tau``, ``X_tautau`` stand for xi, xi_tau, xi_tautau in Eq. (B19); ``s`` is
     (V_s/c_n)^2; ``v_max`` is negative (the signed peak ring velocity of a tension wave
     running towards +x).
     """
@@ -143,11 +148,11 @@ def _from_ratio(expr):
     return sp.powsimp(sp.powdenest(expr.subs(s["s"], _speed_ratio_squared()), force=True), force=True)
 
 
-# --- 1. travelling wave and Eq. (19) ----------------------------------------------------------
+# --- 1. travelling wave and Eq. (B19) ----------------------------------------------------------
 
 
 def _travelling(expr):
-    """expr with xi(x, t) -> f(tau), tau = x - V_s t (chain rule of Eq. 18)."""
+    """expr with xi(x, t) -> f(tau), tau = x - V_s t (chain rule of Eq. (B18))."""
     s = symbols()
     x, t, tau, V_s, f = s["x"], s["t"], s["tau"], s["V_s"], s["f"]
     return expr.subs(s["xi"], f(x - V_s * t)).doit().subs(x, tau + V_s * t).doit()
@@ -155,7 +160,7 @@ def _travelling(expr):
 
 @functools.cache
 def travelling_wave_ode():
-    """Eq. (17) for xi = f(tau), as an expression equal to zero."""
+    """Eq. (B17) for xi = f(tau), as an expression equal to zero."""
     equation = longwave.strain_equation()
     return sp.expand(_travelling(equation.lhs - equation.rhs))
 
@@ -172,7 +177,7 @@ def travelling_wave_potential():
 
 @functools.cache
 def twice_integrated():
-    """Eq. (19): (V_s/c_n)^2 xi = G(xi) + C_1 tau + C_0, as a SymPy ``Eq`` in f(tau).
+    """Eq. (B19): (V_s/c_n)^2 xi = G(xi) + C_1 tau + C_0, as a SymPy ``Eq`` in f(tau).
 
     H'' = 0 is solved by ``dsolve``: H = c_n^2 (C_0 + C_1 tau) (constants renamed and
     scaled by c_n^2); dividing by c_n^2 gives the paper's form.
@@ -189,7 +194,7 @@ def twice_integrated():
 
 
 def eq19_residual(X=None, X_tau=None, X_tautau=None, C_0=None, C_1=None):
-    """lhs - rhs of Eq. (19) with xi, xi_tau, xi_tautau, C_0, C_1 replaced (symbols by default)."""
+    """lhs - rhs of Eq. (B19) with xi, xi_tau, xi_tautau, C_0, C_1 replaced (symbols by default)."""
     s = symbols()
     tau, f = s["tau"], s["f"]
     equation = twice_integrated()
@@ -204,7 +209,7 @@ def eq19_residual(X=None, X_tau=None, X_tautau=None, C_0=None, C_1=None):
 
 @functools.cache
 def integration_constants(xi_inf=None):
-    """{C_1: 0, C_0: (V_s/c_n)^2 xi_inf - xi_inf^n}: Eq. (19) on a uniform state xi -> xi_inf.
+    """{C_1: 0, C_0: (V_s/c_n)^2 xi_inf - xi_inf^n}: Eq. (B19) on a uniform state xi -> xi_inf.
 
     The residual must vanish for every tau, so its coefficients of tau^1 and tau^0 do.
     ``xi_inf = 0`` (unstretched chain) gives C_0 = 0; the default is the symbol xi_inf.
@@ -216,7 +221,7 @@ def integration_constants(xi_inf=None):
     return sp.solve(equations, [s["C_1"], s["C_0"]], dict=True)[0]
 
 
-# --- 2. nonlinear oscillator (Eq. 21) ------------------------------------------------------------
+# --- 2. nonlinear oscillator (Eq. (B21)) ------------------------------------------------------------
 
 
 def _tidy(expr):
@@ -296,7 +301,7 @@ def change_of_variables():
 
 
 def oscillator_equation():
-    """y_mumu(y) of Eq. (21), C_0 kept: -y + y^((3-n)/(n+1)) - C_0 s^(-n/(n-1)) y^((1-n)/(n+1)).
+    """y_mumu(y) of Eq. (B21), C_0 kept: -y + y^((3-n)/(n+1)) - C_0 s^(-n/(n-1)) y^((1-n)/(n+1)).
 
     Written with s = (V_s/c_n)^2 (symbol ``s``).
     """
@@ -360,14 +365,14 @@ def compact_solution():
     """Exponent p, wavenumber omega and amplitude xi_max of xi = xi_max |sin(omega tau)|^p.
 
     Returns a dict with p = 2/(n-1), omega = (n-1)/(n+1) sqrt(6(n+1)/n)/a and
-    xi_max = ((n+1)/2 (V_s/c_n)^2)^(1/(n-1)), each solved from Eq. (19) with C_0 = C_1 = 0
+    xi_max = ((n+1)/2 (V_s/c_n)^2)^(1/(n-1)), each solved from Eq. (B19) with C_0 = C_1 = 0
     (see the module docstring, step 3).
     """
     return {key: _from_ratio(value) for key, value in _compact_solution_ratio().items() if key != "xi_max_power"}
 
 
 def strain_profile():
-    """xi(tau) = xi_max |sin(omega tau)|^(2/(n-1)) (App. B, below Eq. 21), one hump compact."""
+    """xi(tau) = xi_max |sin(omega tau)|^(2/(n-1)) (App. B, below Eq. (B21)), one hump compact."""
     s = symbols()
     sol = compact_solution()
     return sol["xi_max"] * sp.Abs(sp.sin(sol["omega"] * s["tau"])) ** sol["p"]
@@ -375,7 +380,7 @@ def strain_profile():
 
 @functools.cache
 def profile_residual():
-    """Residual of Eq. (19) (C_0 = C_1 = 0) for :func:`strain_profile` on the hump: 0 for symbolic n.
+    """Residual of Eq. (B19) (C_0 = C_1 = 0) for :func:`strain_profile` on the hump: 0 for symbolic n.
 
     On 0 < omega tau < pi, |sin| = sin; the residual, reduced with cos^2 = 1 - sin^2, is
     collected in powers of sin and each coefficient simplified.
@@ -409,7 +414,7 @@ def speed_from_strain():
 
 
 def velocity_profile():
-    """v = u_t = -V_s xi: the ring velocity of the travelling wave u(x - V_s t) (chain rule, Eq. 18)."""
+    """v = u_t = -V_s xi: the ring velocity of the travelling wave u(x - V_s t) (chain rule, Eq. (B18))."""
     s = symbols()
     U = sp.Function("U")
     u = U(s["x"] - s["V_s"] * s["t"])
@@ -441,7 +446,7 @@ def force_profile():
 
 @functools.cache
 def speed_from_force():
-    """V_s(F_m): paper Eq. (vsfm), from F_m = K (a xi_max)^n and :func:`speed_from_strain`."""
+    """V_s(F_m): paper Eq. (8), from F_m = K (a xi_max)^n and :func:`speed_from_strain`."""
     s = symbols()
     xi_peak = sp.solve(sp.Eq(s["F_m"], s["K"] * (s["a"] * s["xi_max"]) ** s["n"]), s["xi_max"], check=False)[0]
     speed = speed_from_strain().subs(s["xi_max"], xi_peak).subs(s["c_n"], sp.sqrt(longwave.wave_speed_squared()))
@@ -476,7 +481,7 @@ def centred_force_profile():
 def first_integral():
     """(lhs, rhs) of n a^2/24 xi^(n-1) xi_tau^2 = P(xi) + E, C_1 = 0 and C_0 kept; E a symbol.
 
-    With w(xi) = xi_tau^2, xi_tautau = w'(xi)/2 and Eq. (19) becomes
+    With w(xi) = xi_tau^2, xi_tautau = w'(xi)/2 and Eq. (B19) becomes
     b [(n-1) xi^(n-2) w + xi^(n-1) w'] = (V_s/c_n)^2 xi - xi^n - C_0, b = n a^2/24;
     the integrating factor exp(int (n-1)/xi) = xi^(n-1) makes the left side
     b d/dxi (xi^(n-1) w), and the right side integrates to P(xi).
@@ -484,7 +489,7 @@ def first_integral():
     s = symbols()
     X, n = s["X"], s["n"]
     w = sp.Function("w")
-    residual = eq19_residual(X, sp.sqrt(w(X)), sp.diff(w(X), X) / 2, C_1=0)  # lhs - rhs of Eq. 19
+    residual = eq19_residual(X, sp.sqrt(w(X)), sp.diff(w(X), X) / 2, C_1=0)  # lhs - rhs of Eq. (B19)
     dispersive = sp.expand(-(residual - residual.subs(w(X), 0).doit()).doit())  # b[...] part
     source = sp.expand(residual.subs(w(X), 0).doit())  # (V/c)^2 xi - xi^n - C_0
     w_coefficient, w_prime_coefficient = dispersive.coeff(w(X)), dispersive.coeff(sp.diff(w(X), X))
@@ -551,6 +556,63 @@ def prestressed_speed_from_force():
     return _tidy(sp.sqrt(speed2))
 
 
+@functools.cache
+def prestress_factor():
+    """G^2 = V_s^2(xi_max, xi_0)/V_s^2(xi_max, 0) = n (n+1)/2 2F1(1 - n, 2; 3; 1 - w), w = xi_0/xi_max.
+
+    :func:`prestressed_speed_hypergeometric` over the compact wave's :func:`speed_from_strain`
+    squared; a function of n and w alone (checked).  Returns (G^2, w) with w a Symbol.
+    """
+    s = symbols()
+    w = sp.Symbol("w", positive=True)
+    ratio = prestressed_speed_hypergeometric().subs(s["xi_0"], w * s["xi_max"]) / speed_from_strain() ** 2
+    ratio = sp.powsimp(sp.expand_power_base(sp.simplify(ratio), force=True), force=True)
+    if ratio.has(s["xi_max"], s["c_n"]):  # pragma: no cover - derivation check
+        raise RuntimeError("the pre-stretch factor depends on more than n and xi_0/xi_max")
+    return ratio, w
+
+
+@functools.cache
+def prestress_factor_elementary():
+    """G^2 = (1 - q (1 + n Z))/Z^2 with q = F_0/F_m = w^n and Z = 1 - w: the elementary form.
+
+    From :func:`prestressed_speed_squared` over the compact wave's speed squared, with
+    w^n = q (F = K (a xi)^n) and w = 1 - Z.  Accurate where the numerator is not small:
+    its terms are at most 1, so its relative rounding error is a few 1e-16 divided by its
+    value; as F_0 -> F_m (Z -> 0) it is 0/0.  Returns (G^2, q, Z) with q, Z Symbols.
+    """
+    s = symbols()
+    n = s["n"]
+    w, q, Z = (sp.Symbol(name, positive=True) for name in ("w", "q", "Z"))
+    ratio = prestressed_speed_squared().subs(s["xi_0"], w * s["xi_max"]) / speed_from_strain() ** 2
+    ratio = sp.expand_power_exp(sp.expand(sp.powsimp(sp.expand_power_base(sp.simplify(ratio), force=True))))
+    closed = sp.factor(sp.simplify(ratio.subs(w**n, q).subs(w, 1 - Z)))
+    if closed.has(w, s["xi_max"], s["c_n"]):  # pragma: no cover - derivation check
+        raise RuntimeError(f"the elementary pre-stretch factor is not a function of q and Z: {closed}")
+    return closed, q, Z
+
+
+@functools.cache
+def prestress_factor_integral():
+    """(integrand, t): G^2 = int_0^1 integrand dt, from Euler's integral of 2F1 (DLMF 15.6.1).
+
+    2F1(a, b; c; z) = Gamma(c)/(Gamma(b) Gamma(c - b)) int_0^1 t^(b-1) (1 - t)^(c-b-1) (1 - z t)^(-a) dt
+    with a = 1 - n, b = 2, c = 3, times n (n+1)/2 (:func:`prestress_factor`): the integrand
+    n (n+1) t (1 - Z t)^(n-1), Z = 1 - w.  Smooth on [0, 1] wherever the elementary form
+    loses digits (Z small), so Gauss-Legendre quadrature evaluates it there.
+    """
+    factor, w = prestress_factor()
+    hypergeometric = next(iter(factor.atoms(sp.Function)))
+    a, b, c, argument = hypergeometric.args
+    t, Z = sp.Symbol("t", positive=True), sp.Symbol("Z", positive=True)
+    weight = sp.gamma(c) / (sp.gamma(b) * sp.gamma(c - b)) * t ** (b - 1) * (1 - t) ** (c - b - 1)
+    euler = weight * (1 - argument * t) ** (-a)
+    integrand = sp.simplify((factor / hypergeometric * euler).subs(w, 1 - Z))
+    if argument.subs(w, 1 - Z) != Z or integrand.has(w):  # pragma: no cover - derivation check
+        raise RuntimeError("the pre-stretch factor is not 2F1 of 1 - w")
+    return integrand, t, Z
+
+
 # --- numeric functions ----------------------------------------------------------------------------
 
 
@@ -563,15 +625,14 @@ def _in_si(expr):
 @derived
 def _speed():
     s = symbols()
-    return (s["F_m"], s["K"], s["n"], s["a"], s["m"]), speed_from_force()
+    return (s["K"], s["n"], s["a"], s["m"]), power_law(speed_from_force(), s["F_m"])
 
 
 @derived
 def _speed_from_velocity():
     s = symbols()
-    speed = sp.Symbol("v_speed", positive=True)  # -v_max, so that powers may be merged
-    expr = _in_si(speed_from_velocity().subs(s["v_max"], -speed)).subs(speed, -s["v_max"])
-    return (s["v_max"], s["K"], s["n"], s["a"], s["m"]), expr
+    speed = sp.Symbol("v_speed", positive=True)  # |v_max| = -v_max
+    return (s["K"], s["n"], s["a"], s["m"]), power_law(_in_si(speed_from_velocity().subs(s["v_max"], -speed)), speed)
 
 
 @derived
@@ -604,10 +665,66 @@ def _profile():
     return (s["x"], s["F_m"], s["K"], s["n"], s["a"]), stable_profile()
 
 
-@derived
-def _speed_prestressed():
+def _prestress_in_forces(expr, q, Z):
+    """expr(q, Z) with q = F_0/F_m and Z = 1 - q^(1/n) = -expm1(log(q)/n) (accurate for q -> 1)."""
+    from sympy.codegen.cfunctions import expm1
+
     s = symbols()
-    return (s["F_m"], s["F_0"], s["K"], s["n"], s["a"], s["m"]), prestressed_speed_from_force()
+    ratio = s["F_0"] / s["F_m"]
+    values = {Z: -expm1(sp.log(ratio) / s["n"])}
+    if q is not None:
+        values[q] = ratio
+    return expr.subs(values)
+
+
+@derived
+def _prestress_elementary():
+    s = symbols()
+    closed, q, Z = prestress_factor_elementary()
+    numerator, denominator = sp.fraction(sp.factor(closed))
+    return (s["F_m"], s["F_0"], s["n"]), tuple(_prestress_in_forces(e, q, Z) for e in (numerator, denominator))
+
+
+@derived
+def _prestress_integrand():
+    """The integrand at t = x in [0, 1], with (1 - Z t)^(n-1) = exp((n - 1) log1p(-Z t))."""
+    from sympy.codegen.cfunctions import log1p
+
+    s = symbols()
+    integrand, t, Z = prestress_factor_integral()
+    base = 1 - Z * t
+    power = next(p for p in integrand.atoms(sp.Pow) if p.base in (base, sp.expand(base)))
+    stable = integrand.subs(power, sp.exp(power.exp * log1p(-Z * t)))
+    if stable.has(power):  # pragma: no cover - derivation check
+        raise RuntimeError("the integrand's power was not rewritten")
+    return (s["x"], s["F_m"], s["F_0"], s["n"]), _prestress_in_forces(stable.subs(t, s["x"]), None, Z)
+
+
+#: The elementary pre-stretch factor is used where its numerator is at least this: its
+#: relative rounding error is then below about 12 x 1e-16; below it, quadrature.
+_ELEMENTARY_FROM = 0.25
+#: Gauss-Legendre points for the pre-stretch factor: where the numerator is below
+#: _ELEMENTARY_FROM the integrand is analytic well beyond [0, 1] (its singularity, at
+#: t = 1/Z >= 2, or its exponent (n - 1) Z <= 1 keep it smooth), and 12 points integrate
+#: it to below 1e-16.
+_QUADRATURE_POINTS = 12
+
+
+def _prestress(F_m, F_0, n):
+    """sqrt(G^2): the pre-stretched speed over the compact wave's, broadcast over the arguments."""
+    with np.errstate(all="ignore"):
+        numerator, denominator = _prestress_elementary(F_m, F_0, n)
+        shape = np.broadcast_shapes(np.shape(numerator), np.shape(denominator))
+        factor = np.array(np.broadcast_to(numerator / denominator, shape), dtype=float)
+        near = np.broadcast_to(~(numerator >= _ELEMENTARY_FROM), shape)
+        if np.any(near):
+            F_m_, F_0_, n_ = (np.broadcast_to(value, shape)[near] for value in (F_m, F_0, n))
+            points, weights = _gauss_legendre(_QUADRATURE_POINTS)
+            total = 0.0
+            for point, weight in zip(0.5 * (points + 1.0), 0.5 * weights, strict=True):
+                total = total + weight * _prestress_integrand(point, F_m_, F_0_, n_)
+            factor[near] = total
+        return np.sqrt(factor)
 
 
 def _exponent(n):
@@ -628,8 +745,18 @@ def _chain(K, n, a, m=None):
     return out
 
 
+def _chain_speed(function, variable, K, n, a, m):
+    """exp(log C + p log variable) for a derived power law (log C, p) of the chain (K, n, a, m)."""
+    with np.errstate(all="ignore"):
+        log_coefficient, exponent = function(K, n, a, m)
+        return power_law_value(log_coefficient, exponent, variable)
+
+
+_CHAIN = "force, velocity and chain parameters (K, n, a, m)"
+
+
 def solitary_wave_speed(F_m, K, n, a, m):
-    """Speed of the compact solitary wave of peak contact force F_m (paper Eq. vsfm).
+    """Speed of the compact solitary wave of peak contact force F_m (paper Eq. (8)).
 
     Parameters
     ----------
@@ -651,9 +778,11 @@ def solitary_wave_speed(F_m, K, n, a, m):
 
     Notes
     -----
-    Derived from the lattice (App. B Eqs. 15-21; :func:`speed_from_force`), with the
+    Derived from the lattice (App. B Eqs. (B15)-(B21); :func:`speed_from_force`), with the
     long-wave estimate delta_max = a xi_max of the peak contact extension.  As n -> 1
-    it tends to the linear sound speed a sqrt(K/m).
+    it tends to the linear sound speed a sqrt(K/m).  Evaluated as exp(log C + p log F_m)
+    from the derived power law V_s = C F_m^p, so no intermediate product overflows;
+    raises ``ValueError`` if V_s itself is beyond double precision.
 
     Examples
     --------
@@ -661,18 +790,22 @@ def solitary_wave_speed(F_m, K, n, a, m):
     1.414214
     """
     F_m = v.positive("F_m", F_m, "N")
-    return _speed(F_m, *_chain(K, n, a, m))
+    chain = _chain(K, n, a, m)
+    v.broadcast_shape(F_m=F_m, K=chain[0], n=chain[1], a=chain[2], m=chain[3])
+    return v.finite_result(_chain_speed(_speed, F_m, *chain), "V_s", _CHAIN)
 
 
 def solitary_wave_speed_from_velocity(v_max, K, n, a, m):
-    """Speed of the compact solitary wave from its signed peak ring velocity v_max (App. B).
+    """Speed of the compact solitary wave from its peak ring velocity v_max (App. B).
 
     Parameters
     ----------
     v_max : array_like
-        Signed peak ring velocity, m/s, < 0: in the tension convention (axis pointing away
-        from the impact) the rings of a wave running towards +x move towards -x,
-        u_t = -V_s xi.  Pass ``-abs(v)`` for a measured speed v.
+        Peak ring velocity, m/s, nonzero.  Only its magnitude enters: the sign says which way
+        the wave runs.  In the paper's convention (App. B, tension positive, the axis pointing
+        away from the impact) the rings of a wave running towards +x move towards -x,
+        u_t = -V_s xi, so the signed v_max of App. B is negative; a measured peak speed
+        |v_max| > 0 gives the same V_s, and so does a wave running towards -x (v_max > 0).
     K, n, a, m : array_like
         Chain: prefactor (N/m^n), exponent (> 1), spacing (m), mass (kg), as in
         :func:`solitary_wave_speed`.
@@ -680,25 +813,32 @@ def solitary_wave_speed_from_velocity(v_max, K, n, a, m):
     Returns
     -------
     ndarray
-        V_s = (2 c_n^2/(n+1))^(1/(n+1)) (-v_max)^((n-1)/(n+1)) with c_n^2 = K a^(n+1)/m, m/s.
+        V_s = (2 c_n^2/(n+1))^(1/(n+1)) |v_max|^((n-1)/(n+1)) with c_n^2 = K a^(n+1)/m, m/s.
 
     Notes
     -----
-    From xi_max = -v_max/V_s (Eq. 18) and V_s^2 = 2 c_n^2 xi_max^(n-1)/(n+1)
-    (:func:`speed_from_velocity`).
+    From xi_max = -v_max/V_s (Eq. (B18)) and V_s^2 = 2 c_n^2 xi_max^(n-1)/(n+1)
+    (:func:`speed_from_velocity`).  Accepting the magnitude is the choice that cannot
+    mislead: V_s depends only on |v_max|, a measured peak speed is positive, and the
+    signed value of App. B is negative; ``v_max = 0`` (no wave) raises ``ValueError``.
 
     Examples
     --------
     >>> round(float(solitary_wave_speed_from_velocity(-1.0, 1.0, 3.0, 1.0, 1.0)), 6)  # (1/2)^(1/4)
     0.840896
+    >>> round(float(solitary_wave_speed_from_velocity(1.0, 1.0, 3.0, 1.0, 1.0)), 6)  # the magnitude: same speed
+    0.840896
     """
     v_max = v.as_float("v_max", v_max)
-    if np.any(v_max >= 0):
+    speed = np.abs(v_max)
+    if speed.size and not speed.min() > 0:
         raise ValueError(
-            f"v_max must be negative (m/s), got {v_max if v_max.size == 1 else 'values >= 0'}: it is the signed "
-            "peak ring velocity, -V_s xi_max < 0 for a tension wave running away from the impact"
+            "v_max must be nonzero (m/s), got 0: it is the peak ring velocity of the wave (either sign; "
+            "App. B's signed value is negative for a wave running away from the impact)"
         )
-    return _speed_from_velocity(v_max, *_chain(K, n, a, m))
+    chain = _chain(K, n, a, m)
+    v.broadcast_shape(v_max=v_max, K=chain[0], n=chain[1], a=chain[2], m=chain[3])
+    return v.finite_result(_chain_speed(_speed_from_velocity, speed, *chain), "V_s", _CHAIN)
 
 
 def solitary_wave_width(n, a):
@@ -724,7 +864,10 @@ def solitary_wave_width(n, a):
     """
     n = _exponent(n)
     a = v.positive("a", a, "m")
-    return _width(n, a)
+    v.broadcast_shape(n=n, a=a)
+    with np.errstate(all="ignore"):
+        width = _width(n, a)
+    return v.finite_result(width, "the width", "exponent and spacing")
 
 
 def solitary_wave_profile(x, F_m, K, n, a):
@@ -764,7 +907,10 @@ def solitary_wave_profile(x, F_m, K, n, a):
     x = v.as_float("x", x)
     F_m = v.positive("F_m", F_m, "N")
     K, n, a = _chain(K, n, a)
-    return _profile(x, F_m, K, n, a)
+    v.broadcast_shape(x=x, F_m=F_m, K=K, n=n, a=a)
+    with np.errstate(all="ignore"):
+        profile = _profile(x, F_m, K, n, a)
+    return v.finite_result(profile, "the profile", "positions, force and chain parameters")
 
 
 def solitary_wave_speed_prestressed(F_m, F_0, K, n, a, m):
@@ -788,12 +934,17 @@ def solitary_wave_speed_prestressed(F_m, F_0, K, n, a, m):
 
     Notes
     -----
-    Eq. (19) with C_0 set by the static strain xi_0 = (F_0/K)^(1/n)/a and its first
+    Eq. (B19) with C_0 set by the static strain xi_0 = (F_0/K)^(1/n)/a and its first
     integral (:func:`prestressed_speed_squared`,
     :func:`prestressed_speed_hypergeometric`); the generalisation to any n of
     Nesterenko's weakly compressed chain (n = 3/2).  F_0 = 0 gives
     :func:`solitary_wave_speed`; F_0 -> F_m gives the linear sound speed
-    :func:`~ringchain.theory.linear_sound_speed` at F_0.
+    :func:`~ringchain.theory.linear_sound_speed` at F_0.  Evaluated as the compact wave's
+    speed times G = sqrt(n (n+1)/2 2F1): G from its elementary form
+    (:func:`prestress_factor_elementary`) where that keeps its digits, else from Euler's
+    integral (:func:`prestress_factor_integral`) by 12-point Gauss-Legendre quadrature;
+    both accurate to about 1e-15 for every n > 1 and 0 <= F_0 <= F_m (SciPy's hyp2f1
+    loses digits, or returns NaN, for large n).
 
     Examples
     --------
@@ -804,9 +955,15 @@ def solitary_wave_speed_prestressed(F_m, F_0, K, n, a, m):
     """
     F_m = v.positive("F_m", F_m, "N")
     F_0 = v.nonnegative("F_0", F_0, "N")
+    chain = _chain(K, n, a, m)
+    v.broadcast_shape(F_m=F_m, F_0=F_0, K=chain[0], n=chain[1], a=chain[2], m=chain[3])
     if np.any(F_0 > F_m):
+        excess = np.broadcast_to(F_0, np.broadcast_shapes(F_0.shape, F_m.shape))[F_0 > F_m]
         raise ValueError(
-            "F_0 must not exceed F_m: F_m is the peak contact force of the wave with the static force "
-            "F_0 included, so F_m >= F_0"
+            f"F_0 must not exceed F_m (got F_0 = {v.show(excess.max())} N above F_m): F_m is the peak contact "
+            "force of the wave with the static force F_0 included, so F_m >= F_0"
         )
-    return _speed_prestressed(F_m, F_0, *_chain(K, n, a, m))
+    factor = _prestress(F_m, F_0, chain[1])
+    with np.errstate(all="ignore"):
+        speed = _chain_speed(_speed, F_m, *chain) * factor
+    return v.finite_result(speed, "V_s", _CHAIN)

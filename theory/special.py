@@ -1,4 +1,5 @@
-"""Special functions for derivations whose generated code calls SciPy: Carlson's integrals, 2F1.
+"""Special functions for derivations whose generated code calls SciPy: Carlson's integrals, 2F1, Beta;
+and an exponential that SymPy leaves alone.
 
 The elliptical Hertz contact is written by Johnson with the complete elliptic
 integrals K(m) and E(m) (parameter m = e^2).  Its two key combinations,
@@ -19,16 +20,16 @@ from __future__ import annotations
 
 from ._codegen import sp
 
-__all__ = ["carlson_rf", "carlson_rd", "hyp2f1"]
+__all__ = ["carlson_rf", "carlson_rd", "hyp2f1", "beta", "exp_of_log"]
 
 
-def _scipy_function(name: str, scipy_name: str, nargs: int, mpmath_name: str, **extra):
-    """A SymPy Function of ``nargs`` arguments that prints to ``scipy.special.<scipy_name>``
+def _scipy_function(name: str, scipy_name: str, nargs: int, mpmath_name: str, module="scipy.special", **extra):
+    """A SymPy Function of ``nargs`` arguments that prints to ``<module>.<scipy_name>``
     in generated code and evaluates with ``mpmath.<mpmath_name>`` in ``evalf``."""
 
     def _numpycode(self, printer):
         args = ", ".join(printer.doprint(arg) for arg in self.args)
-        return f"{printer._module_format('scipy.special.' + scipy_name)}({args})"
+        return f"{printer._module_format(module + '.' + scipy_name)}({args})"
 
     def _eval_evalf(self, prec):
         import mpmath
@@ -53,6 +54,20 @@ def _cls(name, scipy_name, nargs, mpmath_name, **extra):
     return _CLASSES[name]
 
 
+def exp_of_log(x):
+    """exp(x), printing to ``numpy.exp``, for x a sum of logarithms that SymPy would otherwise fold back.
+
+    ``sympy.exp(3*log(a) - 2*log(b))`` evaluates to ``a**3/b**2`` at once, and the generated code then
+    forms a^3 and b^2, which can overflow although their quotient would not.  This exponential
+    keeps the logarithms (``expr.rewrite(sympy.exp)`` gives SymPy's own for symbolic work).
+    """
+
+    def _eval_rewrite_as_exp(self, arg, **kwargs):
+        return sp.exp(arg)
+
+    return _cls("exp_of_log", "exp", 1, "exp", module="numpy", _eval_rewrite_as_exp=_eval_rewrite_as_exp)(x)
+
+
 def carlson_rf(x, y, z):
     """R_F(x, y, z), Carlson's symmetric integral of the first kind (DLMF 19.16.1)."""
     return _cls("carlson_rf", "elliprf", 3, "elliprf")(x, y, z)
@@ -74,3 +89,17 @@ def hyp2f1(a, b, c, z):
         return sp.hyper([a, b], [c], z)
 
     return _cls("hyp2f1", "hyp2f1", 4, "hyp2f1", _eval_rewrite_as_hyper=_eval_rewrite_as_hyper)(a, b, c, z)
+
+
+def beta(x, y):
+    """Euler's Beta function B(x, y) = Gamma(x) Gamma(y)/Gamma(x + y) (DLMF 5.12.1), printing to ``scipy.special.beta``.
+
+    SciPy evaluates it without forming the Gamma functions, so it stays finite for large
+    arguments (the compact solitary wave as n -> 1, :mod:`.pulse`), where the Gamma
+    quotient overflows.  ``expr.rewrite(sympy.gamma)`` gives the Gamma quotient.
+    """
+
+    def _eval_rewrite_as_gamma(self, x, y, **kwargs):
+        return sp.gamma(x) * sp.gamma(y) / sp.gamma(x + y)
+
+    return _cls("B", "beta", 2, "beta", _eval_rewrite_as_gamma=_eval_rewrite_as_gamma)(x, y)

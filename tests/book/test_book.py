@@ -61,6 +61,9 @@ def test_every_chapter_is_in_the_table_of_contents_and_back():
         "solitary",
         "lattice",
         "theory_vs_lattice",
+        "linear_waves",
+        "rings_that_bend",
+        "fitting",
         "paper_notes",
         "bibliography",
     ]

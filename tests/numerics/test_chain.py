@@ -2,8 +2,10 @@
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from ringchain.numerics import Chain, initial_state
-from ringchain.theory import Ring, paper_data
+from ringchain.theory import Ring, fit_power_law, paper_data
 
 G = 9.81
 
@@ -31,7 +33,9 @@ def test_dual_spring_layout_pairs_contact_and_bending_as_the_paper():
     ("kwargs", "error", "message"),
     [
         (dict(n_rings=1), ValueError, "n_rings must be at least 2"),
-        (dict(n_rings=2.5), TypeError, "n_rings must be an integer"),
+        (dict(n_rings=2.5), ValueError, "n_rings must be an integer, got 2.5"),
+        (dict(n_rings=float("inf")), ValueError, "n_rings must be an integer, got inf"),  # was an OverflowError
+        (dict(n_rings="5"), ValueError, "n_rings must be an integer, got '5'"),
         (dict(K=0.0), ValueError, "K must be positive"),
         (dict(n=0.5), ValueError, "n must lie in"),
         (dict(m=-1.0), ValueError, "m must be positive"),
@@ -51,6 +55,19 @@ def test_models_keep_their_own_parameters():
         Chain("dual-spring", 4, 1e9, 1.5, 0.01, 0.04)
     with pytest.raises(ValueError, match="belong to the dual-spring model"):
         Chain("power-law", 4, 1e9, 1.5, 0.01, 0.04, K_b=1e6)
+    # The dual-spring contact is Hertz contact (Eq. 1): n = 2.7 used to be accepted.
+    with pytest.raises(ValueError, match=r"Hertz contact, n = 3/2 \(Eq. 1\); got n = 2.7"):
+        Chain("dual-spring", 4, 1e9, 2.7, 0.01, 0.04, K_b=1e6)
+
+
+def test_flags_and_ring_indices_are_checked():
+    chain = Chain.power_law(5, K=2e6, n=1.2, m=0.01, a=0.04)
+    with pytest.raises(ValueError, match="first_ring_hanging must be True or False, got 'no'"):
+        chain.static_extension(first_ring_hanging="no")  # a non-empty string used to mean True
+    with pytest.raises(ValueError, match=r"ring indices must be integers in 0..4, got \[7\]"):
+        chain.ring_sites([7])
+    with pytest.raises(ValueError, match="ring indices must be integers"):
+        chain.ring_sites(1.5)
 
 
 def test_from_ring_uses_the_theory():
@@ -89,9 +106,29 @@ def test_from_paper_is_table_i():
     assert chain.K == pytest.approx(K_mm * 1000.0**n, rel=1e-14)  # N/mm^n -> N/m^n by hand
     ring = Ring.from_aspect_ratio(9.0, r=2.5e-3)
     assert chain.m == pytest.approx(ratio * ring.mass, rel=1e-15)
-    assert Chain.from_paper("dual-spring").K_b == ring.K_b
+    assert Chain.from_paper("dual-spring").K_b == ring.K_b  # the paper's own choice (Sec. III.B): theory
     with pytest.raises(ValueError, match="Table I has aspect ratios"):
         Chain.from_paper("power-law", aspect_ratio=7.0)
+    with pytest.raises(ValueError, match="stiffness must be one of"):
+        Chain.from_paper("power-law", stiffness="measured")
+
+
+@pytest.mark.parametrize("aspect_ratio", sorted(paper_data.TABLE_I))
+def test_from_paper_stiffness_sources(aspect_ratio):
+    K_mm, n, _ = paper_data.TABLE_I[aspect_ratio]
+    ring = Ring.from_aspect_ratio(aspect_ratio, r=2.5e-3)
+    # "theory": the ring's springs (Eqs. 1-2) and the power law fitted to them (Eq. 4).
+    dual = Chain.from_paper("dual-spring", aspect_ratio, stiffness="theory")
+    assert (dual.K_c, dual.K_b) == (ring.K_c, ring.K_b)
+    power = Chain.from_paper("power-law", aspect_ratio, stiffness="theory")
+    assert (power.K, power.n) == ring.power_law()
+    # "table": the dual-spring springs reduce to Table I's power law over 1-100 N (Eq. 4, fitted
+    # by the theory's own fit_power_law): K by hand from N/mm^n, n as printed.
+    dual = Chain.from_paper("dual-spring", aspect_ratio, stiffness="table")
+    K, n_fit = fit_power_law(dual.K_c, dual.K_b)
+    assert float(K) == pytest.approx(K_mm * 1000.0**n, rel=1e-9)  # root finding to 1e-13 in ln F*
+    assert float(n_fit) == pytest.approx(n, rel=1e-9)
+    assert dual.n == 1.5 and dual.m == Chain.from_paper("power-law", aspect_ratio).m
 
 
 @pytest.mark.parametrize("model", ["power-law", "dual-spring"])
@@ -140,3 +177,17 @@ def test_a_free_chain_has_no_hanging_equilibrium():
         initial_state(chain, impact_velocity=1.0, gravity=True)
     x, u = initial_state(chain, impact_velocity=1.0, gravity=False)
     assert np.all(x == 0.0) and u[0].tolist() == [-1.0, 0, 0, 0, 0]
+
+
+ANY_NUMBER = st.one_of(st.floats(allow_nan=True, allow_infinity=True), st.integers(-10, 10**6), st.booleans())
+
+
+@settings(max_examples=200, deadline=None)
+@given(n_rings=ANY_NUMBER, K=ANY_NUMBER, n=ANY_NUMBER, m=ANY_NUMBER, a=ANY_NUMBER, gamma=ANY_NUMBER)
+def test_any_parameters_give_a_chain_or_a_value_error(n_rings, K, n, m, a, gamma):
+    try:
+        chain = Chain.power_law(n_rings, K=K, n=n, m=m, a=a, gamma=gamma)
+    except ValueError as exc:
+        assert str(exc)  # with its reason
+        return
+    assert chain.n_rings >= 2 and all(np.isfinite([chain.K, chain.n, chain.m, chain.a, chain.gamma]))

@@ -68,15 +68,26 @@ def test_ring_of_oblique_contact_and_of_a_pair_that_cannot_form_a_chain(capsys):
                                                                             abs=0.005)  # fmt: skip
 
 
+def test_ring_below_theta_min_uses_the_numerical_contact(capsys):
+    from ringchain.numerics import angle_power_law
+
+    code, out, _ = run(capsys, "ring", "--R", "22.5e-3", "--r", "2.5e-3", "--angle", "30", "--window", "1", "30")
+    assert code == 0 and "two patches (BEM" in out
+    ring = Ring.from_aspect_ratio(9.0)
+    row = angle_power_law(ring.R, ring.r, ring.material.E, ring.material.nu, math.radians(30), ring.K_b, (1.0, 30.0))
+    assert number_after(", n = ", out) == pytest.approx(row.n, abs=5e-5)  # printed to 4 decimals
+
+
 @pytest.mark.parametrize(
     ("argv", "message"),
     [
         (["--R", "4e-3", "--r", "2.5e-3"], "R must exceed 2 r"),
-        (["--R", "22.5e-3", "--r", "2.5e-3", "--angle", "30"], "arccos(1 - 2r/R)"),
+        (["--R", "22.5e-3", "--r", "2.5e-3", "--angle", "10"], "2 arcsin(r/R)"),
+        (["--R", "22.5e-3", "--r", "2.5e-3", "--angle", "30", "--force", "300"], "within the --window"),
         (["--R", "-1"], "R must be positive"),
         (["--R", "abc"], "argument --R: invalid float value: 'abc'"),
         (["--r", "2.5e-3"], "the following arguments are required: --R"),
-        (["--R", "22.5e-3", "--force", "-3"], "--force must be positive"),
+        (["--R", "22.5e-3", "--force", "-3"], "argument --force: force must be positive (in N), got -3"),
         (["--R", "22.5e-3", "--material", "unobtainium"], "unknown material 'unobtainium'"),
         (["--R", "22.5e-3", "--window", "100", "1"], "F_min < F_max"),
     ],
@@ -196,7 +207,11 @@ def test_paper_prints_the_key_numbers_beside_the_papers_and_writes_figures(capsy
     assert "no single Hertz contact below 38.9 deg" in out
     angle60 = Ring.from_aspect_ratio(9.0, angle=math.radians(60.0)).power_law()[1]
     assert float(row("60 ")[4]) == pytest.approx(angle60, rel=5e-4)
-    # V_s (Eq. vsfm) for every row of Tables I and II, at 1, 10 and 100 N.
+    # ... and the numerical contact at every angle: at 60 degrees it reproduces Hertz, at 30 it alone gives numbers.
+    assert float(row("60 ")[6]) == pytest.approx(angle60, abs=2e-3)  # BEM: Hertz to 0.2 % in force
+    (cells,) = [line.split() for line in lines if line.split()[:2] == ["30", "n/a"]]
+    assert cells[1:5] == ["n/a"] * 4 and 1.0 < float(cells[6]) < 1.5 and cells[7:] == ["4030", "1.18"]
+    # V_s (Eq. (8)) for every row of Tables I and II, at 1, 10 and 100 N.
     for aspect, (K_mm, n_t, ratio) in paper_data.TABLE_I.items():
         ring = Ring.from_aspect_ratio(aspect)
         cells = row(f"Table I R/r = {aspect:g} ")
@@ -225,9 +240,9 @@ def test_paper_refuses_a_negative_drop_height(capsys, tmp_path):
 # -- the parser and the console script ------------------------------------------------------------------
 def test_help_exits_0_and_no_subcommand_exits_2(capsys):
     code, out, _ = run(capsys, "--help")
-    assert code == 0 and all(name in out for name in ("paper", "ring", "simulate", "sweep"))
+    assert code == 0 and all(name in out for name in ("paper", "ring", "simulate", "sweep", "cache"))
     code, out, err = run(capsys)
-    assert_one_line_error(code, out, err, "the following arguments are required: {paper,ring,simulate,sweep}")
+    assert_one_line_error(code, out, err, "the following arguments are required: {paper,ring,simulate,sweep,cache,fit}")
 
 
 def test_console_script_exit_codes():
@@ -238,3 +253,352 @@ def test_console_script_exit_codes():
     bad = subprocess.run([script, "ring", "--R", "4e-3", "--r", "2.5e-3"], capture_output=True, text=True)
     assert bad.returncode == 2
     assert bad.stderr.strip().splitlines() == [bad.stderr.strip()] and "R must exceed 2 r" in bad.stderr
+
+
+# -- output paths: checked before any work, never changed ------------------------------------------------
+class WorkStarted(Exception):
+    """Raised in place of the solver or the sweep: the command got past its checks."""
+
+
+@pytest.fixture
+def no_work(monkeypatch):
+    """Replace the solver and the sweep, so that a test sees whether the command started its work."""
+    import importlib
+
+    from ringchain.numerics import solve
+
+    sweep_module = importlib.import_module("ringchain.numerics.sweep")
+
+    def work(*args, **kwargs):
+        raise WorkStarted
+
+    monkeypatch.setattr(solve, "simulate", work)
+    monkeypatch.setattr(sweep_module, "sweep", work)
+
+
+SIMULATE = ["simulate", "--rings", "8", "--drop-height", "0.05", "--model", "power-law", "--sensors", "2", "5",
+            "--t-end", "1e-3", "--samples", "201"]  # fmt: skip
+
+
+def test_a_plot_into_an_existing_folder_is_refused_and_no_other_file_is_written(capsys, tmp_path, no_work):
+    folder = tmp_path / "figures"
+    folder.mkdir()
+    code, out, err = run(capsys, *SIMULATE, "--out", str(tmp_path / "run.csv"), "--plot", str(folder))
+    assert_one_line_error(code, out, err, f"argument --plot: {folder} is a folder")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["figures"]  # no figures.png, no run.csv
+
+
+@pytest.mark.parametrize(
+    ("option", "name", "message"),
+    [
+        ("--out", "missing/run.csv", "argument --out: cannot write {path}: the folder {tmp}/missing does not exist"),
+        ("--out", "afile/run.csv", "argument --out: cannot write {path}: the folder {tmp}/afile is not a folder"),
+        ("--out", "", "argument --out: the file name is empty"),
+        ("--plot", "plot.xyz", "argument --plot: {path}: its extension .xyz is not an image format; name the file "
+                               "with one of"),
+        ("--plot", "plot.csv", "its extension .csv is not an image format"),
+        ("--plot", "plot", "argument --plot: {path}: it has no extension; name the file with one of"),
+        ("--plot", "missing/plot.png", "argument --plot: cannot write {path}: the folder {tmp}/missing does not exist"),
+    ],
+)
+def test_simulate_checks_its_output_paths_before_any_work(capsys, tmp_path, no_work, option, name, message):
+    (tmp_path / "afile").write_text("")
+    path = str(tmp_path / name) if name else ""
+    outputs = {"--out": str(tmp_path / "run.csv"), option: path}
+    argv = [*SIMULATE, *(x for pair in outputs.items() for x in pair)]
+    code, out, err = run(capsys, *argv)
+    assert_one_line_error(code, out, err, message.format(path=path, tmp=tmp_path))
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["afile"]
+
+
+def test_simulate_refuses_one_file_for_both_outputs(capsys, tmp_path, no_work):
+    path = str(tmp_path / "run.png")
+    code, out, err = run(capsys, *SIMULATE, "--out", path, "--plot", path)
+    assert_one_line_error(code, out, err, f"arguments --out and --plot: both name {path}; give two files")
+
+
+def test_sweep_and_paper_check_their_outputs_before_any_work(capsys, tmp_path, no_work):
+    code, out, err = run(capsys, *SWEEP, "--out", str(tmp_path))
+    assert_one_line_error(code, out, err, f"argument --out: {tmp_path} is a folder")
+    blocker = tmp_path / "figures.png"
+    blocker.write_text("")
+    code, out, err = run(capsys, "paper", "--out", str(blocker))
+    assert_one_line_error(code, out, err, f"argument --out: {blocker} exists and is not a folder")
+    code, out, err = run(capsys, "paper", "--out", str(blocker / "figures"))
+    assert_one_line_error(code, out, err, f"cannot create the folder {blocker / 'figures'}: {blocker} is not a folder")
+
+
+def test_a_plot_is_written_under_the_name_given_in_the_format_its_extension_names(capsys, tmp_path):
+    out_csv, out_pdf = tmp_path / "run.csv", tmp_path / "traces.pdf"
+    code, out, err = run(capsys, *SIMULATE, "--out", str(out_csv), "--plot", str(out_pdf))
+    assert code == 0, err
+    assert f"plot written to {out_pdf}\n" in out
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["run.csv", "traces.pdf"]
+    assert out_pdf.read_bytes()[:5] == b"%PDF-"
+
+
+# -- messages: the option, in the user's units ----------------------------------------------------------
+@pytest.mark.parametrize(
+    ("argv", "message"),
+    [
+        # Angles are given in degrees: the message is in degrees (it was in radians).
+        (["ring", "--R", "22.5e-3", "--angle", "91"], "argument --angle: contact angle (deg) must lie in (0, 90]"),
+        (["ring", "--R", "22.5e-3", "--angle", "-10"], "contact angle (deg) must lie in (0, 90], got -10"),
+        (["sweep", "--angle", "95"], "argument --angle: contact angle (deg) must lie in (0, 90], got 95"),
+        (["simulate", "--drop-height", "0.05", "--angle", "0"], "contact angle (deg) must lie in (0, 90], got 0"),
+        # An angle that rounds onto the lowest one is printed with the digits that tell them apart.
+        # (A chain needs one Hertz contact per pair of rings; `ring` alone goes below with the numerical contact.)
+        (["simulate", "--drop-height", "0.05", "--angle", "38.94244"],
+         "a contact angle of 38.94244 deg is at or below arccos(1 - 2r/R) = 38.942441 deg for R/r = 9"),
+        # The option the user gave, not a quantity derived from it.
+        (["simulate", "--drop-height", "0.05", "--R", "0"], "argument --R: R must be positive (in m), got 0"),
+        (["simulate", "--drop-height", "0.05", "--r", "-1"], "argument --r: r must be positive (in m), got -1"),
+        (["simulate", "--drop-height", "0.05", "--r", "0"], "argument --r: r must be positive (in m), got 0"),
+        (["ring", "--R", "22.5e-3", "--force", "inf"], "argument --force: force must be finite, got inf"),
+        (["simulate", "--drop-height", "0.05", "--t-end", "inf"], "argument --t-end: duration must be finite"),
+        (["simulate", "--drop-height", "0.05", "--rings", "0"], "argument --rings: rings must be at least 2, got 0"),
+        (["simulate", "--drop-height", "0.05", "--samples", "0"],
+         "argument --samples: n_samples must be at least 3, got 0"),
+        (["simulate", "--drop-height", "0.05", "--m-eff-ratio", "2"], "argument --m-eff-ratio: m_eff/m0 must lie in"),
+        (["simulate", "--drop-height", "0.05", "--sensors", "12", "6"], "argument --sensors: the near ring comes"),
+        (["simulate", "--drop-height", "0.05", "--method", "bogus"], "argument --method: invalid choice: 'bogus'"),
+        (["ring", "--R", "1e300"], "cannot compute the ring of --R 1e+300 m and --r 0.0025 m: "),
+        (["sweep", "--R-over-r", "1e300"], "cannot compute the ring of --R-over-r 1e+300, --r 0.0025 m, --angle 90"),
+        # No rounding in a message: R/r = 2.99999996 is not "3 < 3".
+        (["simulate", "--drop-height", "0.05", "--R", "7.4999999e-3"], "arguments --R and --r: R/r = 2.99999996 < 3"),
+        (["sweep", "--R-over-r", "2.9999999", "--drop-height", "0.01"], "argument --R-over-r: R/r = 2.9999999 < 3"),
+        # Impacts far beyond where contact mechanics holds (the solver failed, or returned numbers, exit 0).
+        (["simulate", "--drop-height", "1e300"], "argument --drop-height: a drop of 1e+300 m gives an impact at "
+                                                 "4.43e+150 m/s, which is not below the bar-wave speed"),
+        (["simulate", "--impact-velocity", "1e10"], "argument --impact-velocity: 1e+10 m/s is not below the bar-wave"),
+        (["sweep", "--impact-velocity", "1", "1e4"], "argument --impact-velocity: 10000 m/s is not below"),
+        # Worker counts, ranges and grid sizes.
+        (["sweep", "--workers", "-1"], "argument --workers: workers must be at least 0, got -1"),
+        (["sweep", "--R-over-r", "6:9:0"], "the count of start:stop:count must be an integer from 1 to 100000, "
+                                           "got '0' in '6:9:0'"),
+        (["sweep", "--R-over-r", "6:9:2.5"], "the count of start:stop:count must be an integer from 1 to 100000"),
+        (["sweep", "--R-over-r", "6:9:1000000000"], "the count of start:stop:count must be an integer from 1"),
+        (["sweep", "--drop-height", "0.05:0.05:3"], "argument --drop-height: '0.05:0.05:3' gives 3 equal values"),
+        (["sweep", "--R-over-r", "1:0:5"], "argument --R-over-r: R/r must be positive, got 0"),
+        (["sweep", "--R-over-r", "4:9:400", "--angle", "61:90:400"], "the grid has 160000 points (400 x 400); the "
+                                                                     "command line runs at most 100000"),
+    ],
+    ids=lambda value: " ".join(value) if isinstance(value, list) else "",
+)
+def test_errors_name_the_option_in_the_users_units(capsys, no_work, argv, message):
+    if argv[0] == "simulate":
+        argv = [*argv, "--out", "unused.csv"]
+    elif argv[0] == "sweep":
+        argv = [*argv, "--workers", "0"]
+    assert_one_line_error(*run(capsys, *argv), message)
+
+
+def test_a_ratio_of_exactly_three_forms_a_chain_whatever_the_division_rounds_to(no_work):
+    assert 0.3 / 0.1 < 3  # 2.9999999999999996 in binary floating point
+    with pytest.raises(WorkStarted):
+        main(["simulate", "--drop-height", "0.05", "--R", "0.3", "--r", "0.1", "--out", "unused.csv"])
+
+
+def test_a_too_short_t_end_of_a_sweep_is_named_as_the_users_option(capsys):
+    argv = [*SWEEP[:-4], "--drop-height", "0.05", "--t-end", "1e-9", "--workers", "0"]
+    message = "argument --t-end: the pulse is still passing ring 5 at --t-end = 1e-09 s"
+    assert_one_line_error(*run(capsys, *argv), message)
+
+
+EDGE_VALUES = ["0", "-1", "nan", "inf", "-inf", "1e308", "1e-308", "abc", "", "2.5", "1:0:5"]
+OPTIONS = {
+    "ring": (["ring", "--R", "22.5e-3"], ["--R", "--r", "--angle", "--force", "--m-eff-ratio", "--material"]),
+    "simulate": (["simulate", "--drop-height", "0.05", "--out", "unused.csv"],
+                 ["--R", "--r", "--angle", "--m-eff-ratio", "--rings", "--drop-height", "--t-end", "--samples",
+                  "--plot", "--out"]),
+    "sweep": (["sweep", "--workers", "0", "--drop-height", "0.05"],
+              ["--R-over-r", "--r", "--angle", "--m-eff-ratio", "--rings", "--drop-height", "--t-end", "--samples",
+               "--batch-size", "--workers", "--out"]),
+}  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("command", "option"), [(command, option) for command, (_, options) in OPTIONS.items() for option in options]
+)
+def test_no_edge_value_of_any_option_gives_a_traceback(capsys, tmp_path, monkeypatch, no_work, command, option):
+    """Every edge value is refused in one line (exit 2) or gets past the checks to the work; nothing else."""
+    monkeypatch.chdir(tmp_path)
+    base, _ = OPTIONS[command]
+    for value in EDGE_VALUES:
+        try:
+            code = main([*base, option, value])
+        except WorkStarted:
+            capsys.readouterr()
+            continue
+        _, err = capsys.readouterr()
+        if code == 0:
+            assert command == "ring" and err == "", (option, value, err)
+        else:
+            assert code == 2 and err.count("\n") == 1 and "error:" in err, (option, value, err)
+    for window in (["0", "1"], ["1", "1e308"], ["1e-308", "1"], ["nan", "1"], ["3", "2"]):
+        code = main([*OPTIONS["ring"][0], "--window", *window])
+        _, err = capsys.readouterr()
+        assert code == 0 or (code == 2 and err.count("\n") == 1), (window, err)
+
+
+# -- ringchain sweep --dask: a scheduler answers, or one line says why not ----------------------------
+class Listener:
+    """A TCP server on 127.0.0.1 that is not a Dask scheduler; it stops when the test ends.
+
+    ``banner`` speaks first (as an SSH server does); ``http`` waits for a request and
+    answers 400 to any bytes (an HTTP server); ``silent`` accepts and never says a word.
+    """
+
+    def __init__(self, kind):
+        import socket
+        import threading
+
+        self.kind, self.stop = kind, threading.Event()
+        self.server = socket.create_server(("127.0.0.1", 0))
+        self.server.settimeout(0.1)
+        self.port = self.server.getsockname()[1]
+        self.connections = []
+        self.thread = threading.Thread(target=self.serve, daemon=True)
+        self.thread.start()
+
+    def serve(self):
+        while not self.stop.is_set():
+            try:
+                conn, _ = self.server.accept()
+            except OSError:
+                continue
+            self.connections.append(conn)
+            conn.settimeout(0.1)
+            if self.kind == "banner":
+                conn.sendall(b"SSH-2.0-OpenSSH_9.6\r\n")
+            if self.kind == "http":
+                while not self.stop.is_set():
+                    try:
+                        if conn.recv(4096):
+                            conn.sendall(b"HTTP/1.1 400 Bad Request\r\nContent-Length: 0\r\n\r\n")
+                            break
+                    except OSError:
+                        continue
+
+    def close(self):
+        self.stop.set()
+        self.thread.join(5)
+        for conn in [*self.connections, self.server]:
+            conn.close()
+
+
+@pytest.fixture
+def listener(request):
+    server = Listener(request.param)
+    yield server
+    server.close()
+
+
+def sweep_on_dask(address, timeout=None):
+    """``ringchain sweep --dask address`` in a process of its own (a hang or a crash stays there)."""
+    argv = [sys.executable, "-m", "ringchain.numerics.cli", "sweep", "--R-over-r", "9", "--dask", address,
+            "--dask-timeout", "2"]  # fmt: skip
+    # Dask's own client waits 30 s for a silent or closed address: 25 s tells the two apart.
+    return subprocess.run(argv, capture_output=True, text=True, timeout=timeout or 25)
+
+
+@pytest.mark.parametrize(
+    ("listener", "reason"),
+    [
+        ("banner", "accepts connections, but it speaks another protocol (it sent b'SSH-2.0-'...)"),
+        ("http", "accepts connections, but it sent nothing within 2 s, while a Dask scheduler greets at once"),
+        ("silent", "accepts connections, but it sent nothing within 2 s"),
+    ],
+    indirect=["listener"],
+)
+def test_dask_at_an_address_where_something_else_listens_is_one_line(listener, reason):
+    address = f"tcp://127.0.0.1:{listener.port}"
+    result = sweep_on_dask(address)
+    assert result.returncode == 2, result.stderr
+    assert result.stderr.count("\n") == 1, result.stderr
+    assert f"ringchain sweep: error: argument --dask: no Dask scheduler at {address}: 127.0.0.1:{listener.port} " \
+           f"{reason}" in result.stderr  # fmt: skip
+    assert "a scheduler listens on port 8786 unless told otherwise" in result.stderr
+
+
+def test_dask_at_a_closed_port_is_one_line_at_once():
+    import socket
+
+    with socket.create_server(("127.0.0.1", 0)) as server:
+        port = server.getsockname()[1]  # closed when the block ends: nothing listens there
+    result = sweep_on_dask(f"127.0.0.1:{port}")
+    assert result.returncode == 2
+    assert result.stderr == (f"ringchain sweep: error: argument --dask: no Dask scheduler at 127.0.0.1:{port}: "
+                             f"connection refused (nothing listens on 127.0.0.1:{port})\n")  # fmt: skip
+
+
+@pytest.mark.parametrize(
+    ("address", "message"),
+    [
+        ("tcp://127.0.0.1:99999", "malformed Dask address 'tcp://127.0.0.1:99999': the port must be an integer"),
+        ("tcp://:8786", "malformed Dask address 'tcp://:8786': no host"),
+        ("tcp://[::1", "malformed Dask address 'tcp://[::1'"),
+    ],
+)
+def test_a_malformed_dask_address_is_one_line(capsys, address, message):
+    assert_one_line_error(*run(capsys, "sweep", "--dask", address), f"argument --dask: {message}")
+
+
+# -- ringchain cache -------------------------------------------------------------------------------------
+def test_cache_info_and_clear(capsys, tmp_path, monkeypatch):
+    from ringchain.theory import _codegen
+
+    cache = tmp_path / "cache"
+    monkeypatch.setenv("RINGCHAIN_CACHE_DIR", str(cache))
+    code, out, _ = run(capsys, "cache", "info")
+    assert code == 0
+    assert f"location  {cache} (from RINGCHAIN_CACHE_DIR)" in out
+    assert "none (the folder does not exist yet)" in out and "yes (the folder will be created)" in out
+    # One entry of the current key, one stale, one leftover temporary file and a file of the user's.
+    x = __import__("sympy").Symbol("x")
+    _codegen.Derived(lambda: ((x,), x + 1), name="probe")(1.0)
+    (cache / "contact.old-0123456789abcdef0123.py").write_text("# old\n")
+    (cache / ".tmp-contact.old-0123456789abcdef0123-42-abcd.py").write_text("")
+    (cache / "notes.txt").write_text("mine")
+    code, out, _ = run(capsys, "cache", "info")
+    assert code == 0
+    assert f"key       {_codegen.source_key()}" in out
+    assert "entries   1 for this key, 1 stale (other keys), 1 temporary files" in out
+    size = sum(p.stat().st_size for p in cache.iterdir() if p.name != "notes.txt")
+    assert f"size      {size} bytes" in out
+    assert "writable  yes\n" in out
+    code, out, _ = run(capsys, "cache", "clear")
+    assert code == 0 and out == f"removed 3 files ({size} bytes) from {cache}\n"
+    assert [p.name for p in cache.iterdir()] == ["notes.txt"]  # only the cache's own files go
+
+
+def test_cache_info_of_a_disabled_and_of_an_unwritable_cache(capsys, tmp_path, monkeypatch):
+    monkeypatch.setenv("RINGCHAIN_CACHE_DIR", "")
+    code, out, _ = run(capsys, "cache", "info")
+    assert code == 0 and "the disk cache is disabled" in out
+    code, out, _ = run(capsys, "cache", "clear")
+    assert code == 0 and out.startswith("nothing to clear: the disk cache is disabled")
+    blocker = tmp_path / "file"
+    blocker.write_text("")
+    monkeypatch.setenv("RINGCHAIN_CACHE_DIR", str(blocker / "cache"))  # a folder under a file: never writable
+    code, out, _ = run(capsys, "cache", "info")
+    assert code == 0 and "writable  no: each process derives the theory again" in out
+
+
+def test_paper_refuses_a_drop_beyond_contact_mechanics_before_any_work(capsys, tmp_path):
+    code, out, err = run(capsys, "paper", "--out", str(tmp_path / "figures"), "--drop-height", "1e300")
+    # sqrt(2 g h) = sqrt(2 x 9.80665 x 1e300) = 4.43e150 m/s; AISI 304: sqrt(193 GPa / 8000 kg/m^3) = 4912 m/s.
+    message = "a drop of 1e+300 m gives an impact at 4.43e+150 m/s, which is not below the bar-wave speed"
+    assert_one_line_error(code, out, err, f"argument --drop-height: {message} sqrt(E/rho) = 4912 m/s")
+    assert not (tmp_path / "figures").exists()
+
+
+def test_running_out_of_memory_is_one_line(capsys, monkeypatch, tmp_path):
+    from ringchain.numerics import solve
+
+    def exhausted(*args, **kwargs):
+        raise MemoryError
+
+    monkeypatch.setattr(solve, "simulate", exhausted)
+    code, out, err = run(capsys, *SIMULATE, "--out", str(tmp_path / "run.csv"))
+    assert_one_line_error(code, out, err, "ringchain simulate: error: out of memory; use fewer --rings, --samples")

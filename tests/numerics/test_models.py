@@ -1,4 +1,4 @@
-"""The lattice right-hand sides are the paper's Eqs. (power law) and (dual-spring)."""
+"""The lattice right-hand sides are the paper's Eqs. (5)-(7)."""
 
 import numpy as np
 import pytest
@@ -35,6 +35,13 @@ def test_power_law_force_validates(kwargs, message):
         power_law_force(1.0, **kwargs)
 
 
+def test_shapes_that_do_not_broadcast_are_named():
+    with pytest.raises(ValueError, match=r"do not broadcast together: delta \(3,\), K \(2,\)"):
+        power_law_force([1.0, 2.0, 3.0], K=[1.0, 2.0], n=1.5)
+    with pytest.raises(ValueError, match=r"delta \(3,\), delta_rate \(2,\)"):
+        linear_spring_force([1.0, 2.0, 3.0], [0.0, 1.0], K=1.0)
+
+
 @settings(max_examples=50, deadline=None)
 @given(
     delta=st.floats(-1e-3, 1e-3), rate=st.floats(-10.0, 10.0), n=st.floats(1.0, 2.0), gamma=st.floats(0.0, 100.0)
@@ -44,7 +51,7 @@ def test_contact_never_pushes(delta, rate, n, gamma):
 
 
 def paper_power_law(x, u, K, n, gamma, m, m_g, anchored):
-    """Eq. (power law) written as printed, site by site, in the paper's compression form.
+    """Eq. (7) written as printed, site by site, in the paper's compression form.
 
     The paper's displacement is minus ours (its axis points towards the impact), so its
     F(u_{i-1} - u_i) is evaluated at U_{i-1} - U_i with U = -x.
@@ -67,7 +74,7 @@ def paper_power_law(x, u, K, n, gamma, m, m_g, anchored):
 
 
 def paper_dual_spring(x, u, K_c, K_b, gamma_c, gamma_b, m, m_g, anchored):
-    """Eq. (dual-spring) written as printed for cells (u_i, w_i), in the paper's sign.
+    """Eqs. (5)-(6) written as printed for cells (u_i, w_i), in the paper's sign.
 
     Mapping (module docstring of ringchain.numerics.chain): ring j = (w_{j-1}, u_j), so our
     site 2j is w_{j-1} and site 2j+1 is u_j; w_{N-1} is the fixed support (if anchored).

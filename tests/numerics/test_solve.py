@@ -4,7 +4,20 @@ import itertools
 
 import numpy as np
 import pytest
-from ringchain.numerics import DEFAULT_RTOL, VERLET_STEPS_PER_PERIOD, Chain, simulate, simulate_batch
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from ringchain.numerics import (
+    DEFAULT_RTOL,
+    VERLET_STEPS_PER_PERIOD,
+    Chain,
+    IntegrationError,
+    NoPulseError,
+    RunTooLargeError,
+    estimate_run,
+    simulate,
+    simulate_batch,
+)
+from ringchain.numerics.solve import ENERGY_DRIFT_LIMIT, TOLERANCE_RANGE
 
 PAPER = Chain.from_paper("dual-spring")
 DROP = 0.05  # m: a 1 m/s impact, peak forces ~ 80 N
@@ -89,6 +102,30 @@ def test_dashpots_only_remove_energy():
     assert energy.dissipated[-1] > 0.1 * impact  # they do take energy out
     # Mechanical + dissipated is conserved (same tolerance as the undamped budget).
     assert np.abs(energy.total - energy.total[0]).max() < 1e-6 * impact
+
+
+@pytest.mark.parametrize(("model", "dashpots"), [("dual-spring", dict(gamma_c=2.0, gamma_b=5.0)),
+                                                 ("power-law", dict(gamma=2.0))])  # fmt: skip
+def test_recorded_forces_of_a_damped_run_obey_newtons_law(model, dashpots):
+    """The bond forces read from a run (dashpots included) against the motion itself: the impulse
+    of the net force on each site equals the change of its momentum."""
+    from scipy.integrate import cumulative_trapezoid
+
+    chain = Chain.from_paper(model, **dashpots)
+    sim = simulate(chain, 1e-3, drop_height=DROP, n_samples=4001, rtol=1e-11)
+    lat = chain.lattice
+    f = sim.bond_force
+    below = np.pad(f, ((0, 0), (1, 0)))[:, : lat.n_sites]  # bond k-1 pulls site k down (none below site 0)
+    above = f[:, : lat.n_sites]  # bond k pulls it up (the last one: the support)
+    impulse = cumulative_trapezoid(above - below - lat.weight_mass * sim.g, sim.t, axis=0, initial=0.0)
+    momentum = lat.mass * (sim.u - sim.u[0])
+    # Trapezoid rule over 0.25 us samples: first order at the force jumps of dashpots in closing
+    # contacts (measured 9e-5 and 3e-5 of the largest momentum; 2.6e-4 and 7e-5 at twice the step).
+    # A dashpot read with the wrong sign is off by 2.5-6%.
+    assert np.abs(impulse - momentum).max() < 1e-3 * np.abs(lat.mass * sim.u).max()
+    # The sensors read the same bonds: the ring's bending bond, or the mean of the two contacts.
+    expected = f[:, chain.bending_bonds] if model == "dual-spring" else 0.5 * (below + above)
+    np.testing.assert_array_equal(sim.sensor_force, expected)
 
 
 def test_momentum_of_a_free_chain_is_conserved():
@@ -183,6 +220,178 @@ def test_verlet_refuses_dashpots():
         simulate(Chain.from_paper("power-law", gamma=1.0), 1e-3, drop_height=0.01, method="verlet")
 
 
-def test_sensor_ring_must_exist(reference):
-    with pytest.raises(IndexError, match="ring 20 is not in a chain of 20"):
-        reference.sensor(20)
+@pytest.mark.parametrize(
+    ("ring", "message"),
+    [(20, "ring 20 is not in a chain of 20 rings"), (-1, "ring -1 is not in a chain"),
+     (2.7, "ring must be an integer, got 2.7"), (True, "ring must be an integer, got True"),
+     ("6", "ring must be an integer")],
+)  # fmt: skip
+def test_sensor_ring_must_be_a_ring_of_the_chain(reference, ring, message):
+    # 2.7 used to read ring 2, True ring 1, 20 raised an IndexError.
+    with pytest.raises(ValueError, match=message):
+        reference.sensor(ring)
+
+
+def test_sensor_readings_need_rings_in_order_and_a_pulse(reference):
+    with pytest.raises(ValueError, match="far ring must lie further from the impact"):
+        reference.wave_speed(12, 6)  # used to complain about a "distance" never given
+    # No impact: the hanging chain stays at rest, its sensors read their static force only
+    # (the arrival time used to be reported as 0).
+    at_rest = simulate(PAPER, 5e-4, n_samples=101)
+    assert np.ptp(at_rest.sensor(6)) < 1e-9 * at_rest.sensor(6)[0]  # the solver's tolerance on a static state
+    with pytest.raises(NoPulseError, match="no pulse"):
+        at_rest.arrival_time(6)
+
+
+# -- recording only what is read; memory and work before the run --------------------------------------
+@pytest.mark.parametrize("model", ["power-law", "dual-spring"])
+@pytest.mark.parametrize("method", ["odeint", "verlet"])
+def test_recording_the_sensor_rings_only_keeps_their_readings(model, method):
+    chain = Chain.from_paper(model)
+    full = simulate(chain, 1.5e-3, drop_height=DROP, method=method, n_samples=1501)
+    kept = simulate(chain, 1.5e-3, drop_height=DROP, method=method, n_samples=1501, rings=SENSORS)
+    assert kept.x.shape == (1501, {"power-law": 6, "dual-spring": 4}[model])  # rings 5-7, 11-13 or their halves
+    for ring in SENSORS:
+        # The same integration, sampled at the same sites: identical numbers.
+        np.testing.assert_array_equal(kept.sensor(ring), full.sensor(ring))
+        np.testing.assert_array_equal(kept.sensor(ring), full.sensor_force[:, ring])
+    assert kept.wave_speed(*SENSORS) == full.wave_speed(*SENSORS)
+    with pytest.raises(ValueError, match="ring 3 was not recorded"):
+        kept.sensor(3)
+    with pytest.raises(ValueError, match="needs every ring"):
+        kept.energy()
+
+
+def test_a_run_too_large_for_memory_is_refused_with_the_way_out():
+    # 10^5 rings, dual-spring: 2e5 sites, 2001 samples of x and u are 6.4 GB before any force is
+    # derived; the run used to end in a MemoryError traceback.
+    chain = Chain.dual_spring(100_000, K_c=7.5e9, K_b=3.3e6, m=8.2e-3, a=0.04)
+    full = estimate_run(chain, 2e-3, drop_heights=0.05, method="verlet")
+    assert full.memory > 2 * 2001 * 200_000 * 8  # at least x and u of every site at every sample
+    sensors = estimate_run(chain, 2e-3, drop_heights=0.05, method="verlet", rings=SENSORS)
+    assert sensors.memory < 50 * 2**20  # 4 sites recorded; the state of 2e5 sites remains (~20 MB)
+    with pytest.raises(RunTooLargeError, match=r"needs about 8\.\d+ GB .* record only the rings you read"):
+        simulate(chain, 2e-3, drop_height=0.05, method="verlet", max_memory=2**30)
+    with pytest.raises(RunTooLargeError, match=r"needs about 18\.\d MB"):
+        simulate(chain, 2e-3, drop_height=0.05, method="verlet", rings=SENSORS, max_memory=2**20)
+
+
+def test_a_run_of_hours_is_refused_before_it_starts():
+    chain = Chain.power_law(10, K=1e9, n=1.5, m=0.01, a=0.02)
+    # 1e12 steps of 1e-15 s: the run used to start and not end.
+    with pytest.raises(RunTooLargeError, match=r"roughly \d+ days .* 1e\+12 Verlet steps"):
+        simulate(chain, 1e-3, impact_velocity=0.1, method="verlet", dt=1e-15)
+
+
+# -- integrator settings: validated, and blow-up detected ---------------------------------------------------
+@pytest.mark.parametrize(
+    ("options", "message"),
+    [
+        # dt = 1e-4 s returned forces of 1e30 N; steps_per_period = 1, 1e23 N.
+        (dict(method="verlet", dt=1e-4), r"above the stability limit of velocity Verlet .* 2/omega_max = 6\.\d+e-05 s"),
+        (dict(method="verlet", steps_per_period=3), "steps_per_period must exceed pi"),
+        (dict(method="verlet", steps_per_period=np.inf), "steps_per_period must be finite"),
+        (dict(method="verlet", dt=np.nan), "dt must be finite"),
+        # rtol = 10 returned 592 N where the converged largest contact force is 85 N; 1e-15 made odeint
+        # fail ("illegal input").
+        (dict(rtol=10.0), r"rtol must lie in \[1e-13, 0.001\]"),
+        (dict(rtol=1e-15), r"rtol must lie in \[1e-13, 0.001\]"),
+        (dict(atol=10.0), r"atol must lie in \(0, 0.001\]"),
+        (dict(atol=0.0), r"atol must lie in \(0, 0.001\]"),
+    ],
+)
+def test_integrator_settings_are_validated(options, message):
+    with pytest.raises(ValueError, match=message):
+        simulate(Chain.from_paper("power-law"), 2e-3, drop_height=DROP, **options)
+
+
+def test_the_stability_limit_is_that_of_verlet_on_a_linear_chain():
+    """For a linear chain (power law n = 1) the fastest mode is omega_max = 2 sqrt(K/m), and
+    leapfrog is stable for omega dt < 2 (the textbook bound): the limit is 1/sqrt(K/m)."""
+    K, m = 1e6, 0.01
+    chain = Chain.power_law(40, K=K, n=1.0, m=m, a=0.04, support="free")
+    limit = 1.0 / np.sqrt(K / m)
+    with pytest.raises(ValueError, match=f"2/omega_max = {limit:.3g} s"):
+        simulate(chain, 2e-2, impact_velocity=0.1, gravity=False, method="verlet", dt=1.001 * limit)
+    # Just below the limit it is stable (the energy error is bounded, not growing), but at ~pi steps
+    # per period its energy error exceeds the 1% drift bound: allowed by max_energy_drift=None.
+    sim = simulate(chain, 2e-2, impact_velocity=0.1, gravity=False, method="verlet", dt=0.9 * limit,
+                   max_energy_drift=None, n_samples=201)  # fmt: skip
+    assert np.all(np.isfinite(sim.x))
+
+
+@pytest.mark.parametrize(
+    ("options", "drift"),
+    # Returned before: dt = 3e-5 s (10 steps per period) with the energy off by 8%, rtol = 1e-3 by 5%.
+    [(dict(method="verlet", dt=3e-5), "0.0[1-9]"), (dict(rtol=1e-3), r"0\.0[1-9]")],
+)
+def test_energy_drift_stops_an_inaccurate_run(options, drift):
+    with pytest.raises(IntegrationError, match=f"total energy drifted by {drift}"):
+        simulate(Chain.from_paper("power-law"), 2e-3, drop_height=DROP, **options)
+
+
+def test_tolerances_at_the_edge_of_the_range(reference):
+    # The upper bound of TOLERANCE_RANGE still controls the error: sensor errors below 10% of the
+    # peak over 1 ms (measured 3-8% at rtol = 1e-3 over 2 ms), and 100x less at 1e-5.
+    coarse = simulate(PAPER, 1e-3, drop_height=DROP, n_samples=1001, rtol=TOLERANCE_RANGE[1], max_energy_drift=None)
+    finer = simulate(PAPER, 1e-3, drop_height=DROP, n_samples=1001, rtol=1e-5)
+    assert sensor_error(coarse, reference) < 0.1
+    assert sensor_error(finer, reference) < sensor_error(coarse, reference) / 10
+    # The lower bound works (LSODA refused 1e-14 as illegal input).
+    assert sensor_error(simulate(PAPER, 1e-3, drop_height=DROP, n_samples=1001, rtol=TOLERANCE_RANGE[0]),
+                        reference) < 1e-8  # fmt: skip
+
+
+def test_an_integrator_failure_is_a_value_error_with_its_reason(monkeypatch):
+    # atol 1e-30 of the scales asks LSODA for more steps than it may take: this was a
+    # RuntimeError "odeint failed" (and an ODEintWarning).  The budget is cut from 1e6 to 1e4
+    # steps per sample so that the failure comes in a fraction of a second, not 20 s.
+    from ringchain.numerics import solve
+
+    monkeypatch.setattr(solve, "_MAX_STEPS_PER_SAMPLE", 10_000)
+    chain = Chain.power_law(5, K=1e6, n=1.5, m=0.01, a=0.04)
+    with pytest.raises(IntegrationError, match=r"Excess work done .* try method='verlet'"):
+        simulate(chain, 1e-3, impact_velocity=1.0, atol=1e-30)
+
+
+def test_default_runs_stay_far_below_the_drift_bound():
+    for method in ("odeint", "verlet"):
+        sim = simulate(Chain.from_paper("dual-spring"), 2e-3, drop_height=DROP, method=method)
+        energy = sim.energy()
+        # Verlet's shadow energy at 60 steps per period: 1e-4 (test above); LSODA 1e-8.
+        assert np.abs(energy.total - energy.total[0]).max() / energy.kinetic[0] < ENERGY_DRIFT_LIMIT / 10
+
+
+# -- edge inputs: a ValueError that names the argument ---------------------------------------------------
+@pytest.mark.parametrize(
+    ("kwargs", "message"),
+    [
+        (dict(gravity="no"), "gravity must be True or False, got 'no'"),  # was read as True
+        (dict(n_samples=np.inf), "n_samples must be an integer, got inf"),  # was an OverflowError
+        (dict(drop_heights=[]), r"drop_height must be one value or a 1-d array .* shape \(0,\)"),  # odeint failed
+        (dict(drop_heights=[[0.1, 0.2]]), r"drop_height must be one value .* shape \(1, 2\)"),  # a broadcast error
+        (dict(drop_heights=[0.1], rings=[3.5]), "ring must be an integer, got 3.5"),
+        (dict(drop_heights=[0.1], rings=[]), "rings must name at least one ring"),
+        (dict(drop_heights=[0.1], method=["verlet"]), "method must be one of"),
+    ],
+)
+def test_simulate_batch_names_the_bad_argument(kwargs, message):
+    with pytest.raises(ValueError, match=message):
+        simulate_batch(PAPER, 1e-3, **kwargs)
+
+
+@settings(max_examples=15, deadline=None)
+@given(
+    n_rings=st.integers(2, 8), n=st.floats(1.0, 1.5), speed=st.floats(1e-3, 10.0),
+    model=st.sampled_from(["power-law", "dual-spring"]), method=st.sampled_from(["odeint", "verlet"]),
+)  # fmt: skip
+def test_short_runs_are_finite_and_conserve_energy(n_rings, n, speed, model, method):
+    if model == "dual-spring":
+        chain = Chain.dual_spring(n_rings, K_c=7.5e9, K_b=3.3e6, m=8.2e-3, a=0.04, support="free")
+    else:
+        chain = Chain.power_law(n_rings, K=4.9e6, n=n, m=8.2e-3, a=0.04, support="free")
+    sim = simulate(chain, 2e-4, impact_velocity=speed, gravity=False, method=method, n_samples=51)
+    assert np.all(np.isfinite(sim.contact_force))
+    energy = sim.energy()
+    # The run's own check (ENERGY_DRIFT_LIMIT) at the sample times: what it lets through is bounded.
+    assert np.abs(energy.total - energy.total[0]).max() <= ENERGY_DRIFT_LIMIT * energy.kinetic[0]

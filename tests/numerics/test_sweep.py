@@ -8,8 +8,11 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from ringchain.numerics import RunTooLargeError
 from ringchain.numerics.cli import main
-from ringchain.numerics.sweep import AXES, InlineExecutor, Point, expand, run_points, sweep, write_csv
+from ringchain.numerics.sweep import AXES, InlineExecutor, Point, default_t_end, expand, run_points, sweep, write_csv
 from ringchain.theory import Ring
 
 # The module (ringchain.numerics.sweep may name the function).
@@ -54,6 +57,10 @@ def test_expand_takes_points_and_mappings():
         ({"model": "granular"}, "model must be one of"),
         ({"angle": math.radians(30.0)}, "single elliptical Hertz contact does not apply"),
         ({"m_eff_ratio": 1.5}, "m_eff_ratio must lie in (0, 1]"),
+        ({"sensors": (6.5, 12)}, "sensor ring must be an integer, got 6.5"),  # was read as ring 6
+        ({"sensors": 6}, "sensors must be two rings"),  # was "'int' object is not iterable"
+        ({"n_rings": float("inf")}, "n_rings must be an integer, got inf"),  # was an OverflowError
+        ({"drop_height": True}, "drop height must be a number (in m), got True"),  # was a 1 m drop
     ],
 )
 def test_bad_points_are_refused_with_the_reason(grid, message):
@@ -102,6 +109,56 @@ def test_rows_hold_the_static_theory_and_the_sensor_readings():
         assert forces == sorted(forces) and speeds == sorted(speeds)
 
 
+def test_a_tiny_drop_is_read_above_the_static_tension():
+    """The sweep of the issue: R/r = 9, dual-spring, drops of 10 um and 0.1 mm.
+
+    The 10 um pulse (1.8 N) rides on a static tension of 1.2 N at ring 6 and 2.5 N at ring 12;
+    measured from zero, its time of flight was 2.10 ms against 0.59 ms at 0.1 mm (the far
+    "pulse" was the reflection from the support).  A pulse this weak travels at about the
+    linear sound speed of the hanging chain, a sqrt(k_t/m) with k_t the tangent stiffness of
+    the series law (Eq. 3) at each contact's static tension: 0.596 ms from ring 6 to 12.
+    """
+    rows = sweep({"R_over_r": 9.0, "drop_height": [1e-5, 1e-4]}, InlineExecutor())
+    tiny, small = (row["time_of_flight_s"] for row in rows)
+    point = Point(R_over_r=9.0, drop_height=1e-5)
+    chain = point.chain()
+    tension = np.arange(6, 12) * chain.m_gravity * 9.80665  # contacts 6..11 carry rings 1..i (ring 0 is falling)
+    k_t = 1.0 / (2.0 / 3.0 * tension ** (-1.0 / 3.0) * chain.K_c ** (-2.0 / 3.0) + 1.0 / chain.K_b)
+    linear = np.sum(chain.a / (chain.a * np.sqrt(k_t / chain.m)))
+    # The peak of a weak pulse lags the linear front by the lattice's dispersion (measured 4%).
+    assert tiny == pytest.approx(linear, rel=0.1)
+    assert small < tiny  # the stronger pulse is faster (amplitude-dependent speed, Sec. III.A)
+
+
+def test_the_default_duration_stays_finite_as_n_tends_to_one():
+    # R/r = 100: n = 1.0001 and the long-wave width ~ a/(n - 1) is 10^4 rings; the default
+    # duration was 79 s of simulated time (2e8 Verlet steps for the dual-spring chain: hours).
+    (row,) = sweep({**SMALL, "R_over_r": 100.0, "drop_height": 0.05, "sensors": (2, 5)}, InlineExecutor())
+    # Now a few times the time the pulse takes to reach the far sensor (1.5 x its distance plus
+    # half the chain's length over a speed estimate below the actual one).
+    assert row["arrival_far_s"] < row["t_end_s"] < 5 * row["arrival_far_s"]
+    chain = Point(R_over_r=100.0, drop_height=0.05).chain()
+    assert default_t_end(chain, [1.0], (6, 12)) < 1.0  # s (was 78.9)
+
+
+@settings(max_examples=8, deadline=None)  # each example derives a new ring (~0.4 s)
+@given(aspect=st.floats(3.0, 1000.0), model=st.sampled_from(["power-law", "dual-spring"]),
+       drop=st.floats(1e-6, 1.0), n_rings=st.integers(13, 200))  # fmt: skip
+def test_the_default_duration_is_finite_over_the_admissible_range(aspect, model, drop, n_rings):
+    point = Point(R_over_r=aspect, model=model, drop_height=drop, n_rings=n_rings)
+    t_end = default_t_end(point.chain(), [point.speed], point.sensors)
+    # Finite for every ring that forms a chain, from R/r = 3 (n ~ 1.4) to 1000 (n -> 1, where the
+    # long-wave width diverges): at most 1.5 x 12 + n_rings/2 spacings at the estimated speed.
+    assert np.isfinite(t_end) and t_end > 0
+
+
+def test_a_sweep_with_a_task_too_long_is_refused_before_it_starts():
+    grid = {"R_over_r": [9.0, 100.0], "drop_height": 0.05}  # dual-spring: R/r = 100 takes ~10 s
+    with pytest.raises(RunTooLargeError, match=r"largest task \(R/r = 100, dual-spring, 20 rings\) would take "
+                                               r"roughly .* Verlet steps .* max_seconds = 1 s"):  # fmt: skip
+        sweep(grid, InlineExecutor(), max_seconds=1.0)
+
+
 # -- batches against single runs -----------------------------------------------------------------------
 def test_a_batch_gives_the_numbers_of_single_runs():
     # One Verlet step and one duration for both: each run of the batch then does the same
@@ -147,6 +204,15 @@ def test_a_short_default_duration_is_doubled_until_the_pulse_has_passed(monkeypa
 def test_a_given_duration_that_ends_inside_the_pulse_is_an_error():
     with pytest.raises(ValueError, match="give a longer t_end"):
         sweep({**SMALL, "drop_height": 0.05}, InlineExecutor(), t_end=1e-4)
+
+
+def test_sweep_options_are_checked():
+    with pytest.raises(ValueError, match="progress must be True or False, got 'no'"):  # was read as True
+        sweep({"R_over_r": 9.0}, InlineExecutor(), progress="no")
+    with pytest.raises(ValueError, match="batch_size must be a positive integer, got inf"):  # an OverflowError
+        sweep({"R_over_r": 9.0}, InlineExecutor(), batch_size=float("inf"))
+    with pytest.raises(TypeError, match="a grid is a mapping of axes or an iterable of points, got 5"):
+        expand(5)
 
 
 # -- executors and determinism -------------------------------------------------------------------------

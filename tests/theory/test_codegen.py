@@ -1,6 +1,8 @@
 """Lazy derivation and the on-disk cache of generated code."""
 
+import hashlib
 import os
+import stat
 import subprocess
 import sys
 import textwrap
@@ -25,13 +27,18 @@ SAMPLE = {
     "R": 0.02, "r": 0.0025, "theta": 1.2, "m": 0.3, "A": 50.0, "E": 193e9, "nu": 0.29,
     "F": 10.0, "K_c": 7.5e9, "K_b": 3.3e6,
     "F_m": 20.0, "F_0": 2.0, "K": 8.7e6, "n": 1.11, "a": 0.04, "v_max": -0.3, "x": 0.05,
+    "X": 0.01, "Y": 0.002, "Z": 0.015, "y": 4e-4, "delta_c": 2e-6,
 }  # fmt: skip
+# Where a derivation needs other values: the exact torus gap at points over both tubes (x is a position
+# near the contact, not along the chain), the two contact points below theta_min.
+OVERRIDES = {"contact._gap": {"x": 5e-4}, "contact._patches": {"theta": 0.5}}
 
 
 @pytest.mark.parametrize("derived", ALL_DERIVED, ids=lambda d: d.name)
 def test_generated_code_equals_evalf(derived):
     args, expr = derived.expression()
-    values = [SAMPLE[str(a)] for a in args]
+    sample = {**SAMPLE, **OVERRIDES.get(derived.name, {})}
+    values = [sample[str(a)] for a in args]
     got = np.asarray(derived(*values), dtype=float)
     target = sp.Matrix([expr]) if isinstance(expr, tuple) else expr
     expected = np.asarray(sp.N(target, 20, subs=dict(zip(args, values, strict=True))), dtype=float)
@@ -39,8 +46,8 @@ def test_generated_code_equals_evalf(derived):
     assert np.allclose(got.ravel(), expected.ravel(), rtol=1e-12)
 
 
-def _run(code, cache):
-    env = {**os.environ, "RINGCHAIN_CACHE_DIR": str(cache)}
+def _run(code, cache, env=None):
+    env = {**(os.environ if env is None else env), "RINGCHAIN_CACHE_DIR": str(cache)}
     command = [sys.executable, "-c", textwrap.dedent(code)]
     return subprocess.run(command, env=env, capture_output=True, text=True, check=True).stdout
 
@@ -64,16 +71,117 @@ def test_disk_cache_round_trip(tmp_path):
     assert first[0] == second[0]  # bit-identical
 
 
+def _square(name="probe"):
+    x = sp.Symbol("x")
+    return Derived(lambda: ((x,), x**2), name=name)
+
+
+def _underivable(name="probe"):
+    """A Derived that can only load its code from the disk cache (deriving raises)."""
+
+    def build():
+        raise AssertionError("derived although a valid cache entry exists")
+
+    return Derived(build, name=name)
+
+
 def test_cache_key_follows_source(tmp_path, monkeypatch):
     monkeypatch.setenv("RINGCHAIN_CACHE_DIR", str(tmp_path))
-    d = Derived(lambda: ((sp.Symbol("x"),), sp.Symbol("x") ** 2), name="probe")
+    d = _square()
     assert d.cache_path.name == f"probe-{_codegen.source_key()}.py"
-    d.cache_path.parent.mkdir(parents=True, exist_ok=True)
-    d.cache_path.write_text("def _lambdifygenerated(x):\n    return x + 1\n")
-    assert d(2.0) == 3.0  # a cache entry under the current key is trusted ...
+    assert d(3.0) == 9.0
+    assert _underivable()(3.0) == 9.0  # a later process loads the entry under the current key ...
     monkeypatch.setattr(_codegen, "source_key", lambda: "changed")
-    fresh = Derived(d.build, name="probe")
-    assert fresh(2.0) == 4.0  # ... a change of source means a new key and a fresh derivation
+    with pytest.raises(AssertionError, match="derived although"):
+        _underivable()(3.0)  # ... a change of source means a new key and a fresh derivation
+
+
+def _entry_of_square(tmp_path, monkeypatch) -> bytes:
+    monkeypatch.setenv("RINGCHAIN_CACHE_DIR", str(tmp_path))
+    d = _square()
+    assert d(2.0) == 4.0
+    return d.cache_path.read_bytes()
+
+
+@pytest.mark.parametrize(
+    "damage",
+    [
+        pytest.param(lambda good: good[: len(good) // 2], id="truncated"),  # SyntaxError in today's loader
+        pytest.param(lambda good: b"\xff\xfe\x00" + good[3:], id="not-utf8"),  # UnicodeDecodeError
+        pytest.param(lambda good: b"x = 1\n", id="no-function"),  # KeyError
+        pytest.param(lambda good: b"def _lambdifygenerated(x:\n", id="syntax-error"),
+        pytest.param(lambda good: b"", id="empty"),
+    ],
+)
+def test_a_corrupt_entry_is_rebuilt_and_replaced(tmp_path, monkeypatch, damage):
+    good = _entry_of_square(tmp_path, monkeypatch)
+    path = _square().cache_path
+    path.write_bytes(damage(good))
+    assert _square()(2.0) == 4.0  # derived again instead of raising ...
+    assert path.read_bytes() == good  # ... and the entry rewritten,
+    assert _underivable()(5.0) == 25.0  # so that the next process loads it
+
+
+@pytest.mark.parametrize(
+    "wrong",
+    [
+        pytest.param(lambda good, other: b"def _lambdifygenerated(x):\n    return x + 1\n", id="plain-code"),
+        pytest.param(lambda good, other: good.replace(b"x**2", b"x**3"), id="edited-body"),
+        pytest.param(lambda good, other: other, id="entry-of-another-derivation"),
+    ],
+)
+def test_a_valid_but_wrong_entry_is_not_trusted(tmp_path, monkeypatch, wrong):
+    good = _entry_of_square(tmp_path, monkeypatch)
+    x = sp.Symbol("x")
+    cube = Derived(lambda: ((x,), x**3), name="cube")
+    assert cube(2.0) == 8.0
+    path = _square().cache_path
+    path.write_bytes(wrong(good, cube.cache_path.read_bytes()))
+    assert _square()(2.0) == 4.0
+    assert path.read_bytes() == good
+
+
+def test_entries_record_what_they_were_generated_from(tmp_path, monkeypatch):
+    text = _entry_of_square(tmp_path, monkeypatch).decode()
+    x = sp.Symbol("x")
+    assert "# derivation: probe" in text
+    assert f"# source key: {_codegen.source_key()}" in text
+    assert f"sympy {sp.__version__}" in text
+    assert "# arguments: x" in text
+    assert f"# expression sha256: {hashlib.sha256(sp.srepr(x**2).encode()).hexdigest()}" in text
+
+
+@pytest.mark.parametrize(
+    ("umask", "mode"), [(0o022, 0o644), (0o002, 0o664), (0o077, 0o600)], ids=["022", "002", "077"]
+)
+def test_entries_are_created_as_open_would_create_them_under_the_umask(tmp_path, monkeypatch, umask, mode):
+    """Group-readable under the usual umasks (a cache shared by a group works); private if the umask says so."""
+    monkeypatch.setenv("RINGCHAIN_CACHE_DIR", str(tmp_path / "cache"))
+    old = os.umask(umask)
+    try:
+        d = _square()
+        assert d(2.0) == 4.0
+    finally:
+        os.umask(old)
+    assert stat.S_IMODE(d.cache_path.stat().st_mode) == mode
+    assert stat.S_IMODE(d.cache_path.parent.stat().st_mode) == 0o777 & ~umask
+
+
+def test_a_full_disk_leaves_no_temporary_file_and_still_computes(tmp_path):
+    # The file-size limit makes every write past 8 bytes fail (EFBIG), as a full disk does (ENOSPC).
+    code = """
+        import resource, signal, sympy
+        from ringchain.theory._codegen import Derived
+        x = sympy.Symbol("x")
+        d = Derived(lambda: ((x,), x**2 + 2 * x + 1), name="full")
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (8, 8))
+        print(d(2.0))
+    """
+    env = {**os.environ, "PYTHONDONTWRITEBYTECODE": "1"}
+    out = _run(code, tmp_path, env=env)
+    assert float(out) == 9.0
+    assert list(tmp_path.iterdir()) == []
 
 
 def test_disabled_cache(monkeypatch):

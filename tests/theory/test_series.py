@@ -1,5 +1,6 @@
 """Springs in series and the power-law reduction (paper Eqs. 3-4)."""
 
+import mpmath
 import numpy as np
 import pytest
 import sympy as sp
@@ -38,29 +39,58 @@ def test_crossover_force_and_exponent_there():
     assert series.local_exponent_at_crossover() == sp.Rational(6, 5)
 
 
-POINTS = [(0.3, 7.5e9, 3.3e6), (10.0, 9.7e9, 5.9e7), (1e4, 2e9, 1e5)]
+POINTS = [(0.3, 7.5e9, 3.3e6), (10.0, 9.7e9, 5.9e7), (1e4, 2e9, 1e5), (1e308, 7.5e9, 3.3e6), (1e-300, 1e12, 1e3)]
 
 
 @pytest.mark.parametrize(("F_", "Kc_", "Kb_"), POINTS)
-def test_numeric_functions_equal_evalf(F_, Kc_, Kb_):
-    values = {F: F_, K_c: Kc_, K_b: Kb_}
+def test_numeric_functions_against_eq_3_in_mpmath(F_, Kc_, Kb_):
+    # Eq. (3) typed here, delta = (F/K_c)^(2/3) + F/K_b, and n = d ln F/d ln delta by mpmath's numerical
+    # derivative at 40 digits: independent of the package's expressions.  The last two points (1e308 N,
+    # 1e-300 N) once overflowed on the way to an exponent of 1 or 3/2.
+    with mpmath.workdps(40):
+        Kc, Kb = mpmath.mpf(Kc_), mpmath.mpf(Kb_)
 
-    def exact(expr):
-        return float(expr.evalf(20, subs=values))
+        def log_delta(log_F):
+            F_value = mpmath.exp(log_F)
+            return mpmath.log((F_value / Kc) ** (mpmath.mpf(2) / 3) + F_value / Kb)
 
-    # Same expressions evaluated in double precision: 1e-13.
-    assert np.isclose(series_displacement(F_, Kc_, Kb_), exact(series.total_extension()), rtol=1e-13)
-    assert np.isclose(local_exponent(F_, Kc_, Kb_), exact(series.local_exponent_expr()), rtol=1e-13)
-    assert np.isclose(crossover_force(Kc_, Kb_), exact(series.crossover_force_expr()), rtol=1e-13)
+        log_F = mpmath.log(mpmath.mpf(F_))
+        delta = mpmath.exp(log_delta(log_F))
+        exponent = 1 / mpmath.diff(log_delta, log_F)
+        crossover = Kb**3 / Kc**2
+    # Double-precision powers and logarithms: 1e-13.
+    assert np.isclose(series_displacement(F_, Kc_, Kb_), float(delta), rtol=1e-13, atol=0)
+    assert np.isclose(local_exponent(F_, Kc_, Kb_), float(exponent), rtol=1e-13, atol=0)
+    assert np.isclose(crossover_force(Kc_, Kb_), float(crossover), rtol=1e-13, atol=0)
+
+
+def test_local_exponent_of_the_bending_share():
+    exponent, w = series.local_exponent_of_share()
+    assert sp.simplify(exponent - 3 / (2 + w)) == 0
+    assert exponent.subs(w, sp.Rational(1, 2)) == series.local_exponent_at_crossover()  # equal shares at F*
+
+
+def test_extreme_stiffnesses_give_a_reason_not_an_overflow():
+    with pytest.raises(ValueError, match=r"F\* is not representable"):
+        crossover_force(1e-200, 1e200)  # K_b^3/K_c^2 = 1e1000
+    with pytest.raises(ValueError, match="the converted K is not representable"):
+        n_per_mm_to_si(1.0, 200.0)  # 1000^200
+
+
+def test_broadcasting_errors_name_the_arguments():
+    with pytest.raises(ValueError, match=r"F \(shape \(3,\)\) and K_c \(shape \(2,\)\)"):
+        series_displacement([1.0, 2.0, 3.0], [1e9, 2e9], 1e6)
+    with pytest.raises(ValueError, match=r"K_b \(shape \(2,\)\) and F_min \(shape \(3,\)\)"):
+        fit_power_law(1e9, [1e6, 2e6], [1.0, 2.0, 3.0], 100.0)
 
 
 def test_fit_recovers_pure_limits():
     # Pure Hertz (bending infinitely stiff): the fit must return exactly K_c and 3/2.
     K, n = fit_power_law(7.5e9, 1e30, 1.0, 100.0)
-    assert np.isclose(n, 1.5, rtol=1e-9) and np.isclose(K, 7.5e9, rtol=1e-8)  # 1e30 leaves ~1e-13 of bending
+    assert np.isclose(n, 1.5, rtol=1e-9, atol=0) and np.isclose(K, 7.5e9, rtol=1e-8)  # 1e30 leaves ~1e-13 of bending
     # Pure bending (contact infinitely stiff): K_b and 1.
     K, n = fit_power_law(1e40, 3.3e6, 1.0, 100.0)
-    assert np.isclose(n, 1.0, rtol=1e-9) and np.isclose(K, 3.3e6, rtol=1e-8)
+    assert np.isclose(n, 1.0, rtol=1e-9, atol=0) and np.isclose(K, 3.3e6, rtol=1e-8)
 
 
 def test_fit_lies_between_local_exponents_at_window_ends():
@@ -91,8 +121,8 @@ def test_fitted_exponent_against_aspect_ratio_follows_papers_trend():
 def test_unit_conversion():
     # F = K_mm (delta/1 mm)^n = K_si (delta/1 m)^n: at delta = 1 mm both give K_mm newtons.
     K_mm, n = 2284.0, 1.11
-    assert np.isclose(n_per_mm_to_si(K_mm, n) * (1e-3) ** n, K_mm, rtol=1e-14)
-    assert np.isclose(si_to_n_per_mm(n_per_mm_to_si(K_mm, n), n), K_mm, rtol=1e-14)
+    assert np.isclose(n_per_mm_to_si(K_mm, n) * (1e-3) ** n, K_mm, rtol=1e-14, atol=0)
+    assert np.isclose(si_to_n_per_mm(n_per_mm_to_si(K_mm, n), n), K_mm, rtol=1e-14, atol=0)
 
 
 @pytest.mark.parametrize(

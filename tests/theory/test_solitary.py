@@ -1,4 +1,4 @@
-"""Compact solitary wave and its speed (paper Sec. IV.C, App. B Eqs. 18-21, Eq. vsfm), and the pre-stretched chain."""
+"""Compact solitary wave and its speed (paper Sec. IV.C, Eqs. (B18)-(B21) and (8)), and the pre-stretched chain."""
 
 import warnings
 
@@ -25,7 +25,7 @@ X, C_0, C_1, y, s = S["X"], S["C_0"], S["C_1"], S["y"], S["s"]
 xi_0, xi_max, v_max, F_m, F_0 = S["xi_0"], S["xi_max"], S["v_max"], S["F_m"], S["F_0"]
 f = S["f"]
 
-#: The paper's wavenumber of the compact profile (App. B, below Eq. 21).
+#: The paper's wavenumber of the compact profile (App. B, below Eq. (B21)).
 PAPER_OMEGA = (n - 1) / (n + 1) * sp.sqrt(6 * (n + 1) / n) / a
 
 
@@ -38,7 +38,7 @@ def assert_same(derived, expected):
     assert difference == 0
 
 
-# --- Eq. (19) and its constants ---------------------------------------------------------------------
+# --- Eq. (B19) and its constants ---------------------------------------------------------------------
 
 
 def test_twice_integrated_is_eq_19():
@@ -62,7 +62,7 @@ def test_integration_constants():
     assert solitary.integration_constants(0) == {C_1: 0, C_0: 0}  # unstretched chain
 
 
-# --- the oscillator (Eq. 21) --------------------------------------------------------------------------
+# --- the oscillator (Eq. (B21)) --------------------------------------------------------------------------
 
 
 def test_change_of_variables_is_app_b():
@@ -190,7 +190,7 @@ def test_centred_force_profile():
 def test_first_integral_is_conserved_along_eq_19():
     lhs, rhs = solitary.first_integral()
     assert_same(lhs, n * a**2 / 24 * X ** (n - 1) * sp.Symbol("xi_tau", real=True) ** 2)
-    # d/dtau (lhs - rhs) along xi = f(tau) is -f' times the residual of Eq. (19): conserved on solutions.
+    # d/dtau (lhs - rhs) along xi = f(tau) is -f' times the residual of Eq. (B19): conserved on solutions.
     on_path = (lhs - rhs).subs(sp.Symbol("xi_tau", real=True), sp.Derivative(f(tau), tau)).subs(X, f(tau))
     residual = solitary.eq19_residual(f(tau), sp.Derivative(f(tau), tau), sp.Derivative(f(tau), (tau, 2)), C_1=0)
     assert_same(sp.diff(on_path, tau) + sp.Derivative(f(tau), tau) * residual, 0)
@@ -240,6 +240,31 @@ def test_hypergeometric_form_equals_elementary_form(n_value, ratio):
         assert abs(nv * mpmath.hyp2f1(1 - nv, 2, 3, 1 - q) / elementary - 1) < mpmath.mpf(10) ** -25
 
 
+@pytest.mark.parametrize(("n_value", "w_value"), [("1.07", "0.3"), ("1.5", "0.999"), ("2.7", "0.01"), ("40", "0.9")])
+def test_prestress_factor_forms_agree(n_value, w_value):
+    # G^2 three ways, each evaluated by mpmath at 30 digits: n(n+1)/2 2F1 (mpmath's hyp2f1), the
+    # elementary form in q = w^n and Z = 1 - w, and Euler's integral by mpmath's own quadrature.
+    factor, _ = solitary.prestress_factor()
+    closed, q, Z = solitary.prestress_factor_elementary()
+    integrand, t, Z_integral = solitary.prestress_factor_integral()
+    with mpmath.workdps(30):
+        nv, wv = mpmath.mpf(n_value), mpmath.mpf(w_value)
+        reference = nv * (nv + 1) / 2 * mpmath.hyp2f1(1 - nv, 2, 3, 1 - wv)
+        point = {n: sp.Float(nv, 30)}
+        elementary = closed.subs(point).subs({q: sp.Float(wv**nv, 30), Z: sp.Float(1 - wv, 30)}).evalf(30)
+        f = sp.lambdify(t, integrand.subs(point).subs(Z_integral, sp.Float(1 - wv, 30)), "mpmath")
+        quadrature = mpmath.quad(f, [0, 1])
+    for value in (elementary, quadrature):
+        assert abs(float(value) / float(reference) - 1) < 1e-14  # 30-digit arithmetic on both sides
+    assert factor.has(hyp2f1_class()) and not factor.has(S["xi_max"])
+
+
+def hyp2f1_class():
+    from ringchain.theory.special import hyp2f1
+
+    return type(hyp2f1(1, 2, 3, sp.Symbol("z")))
+
+
 def test_prestressed_speed_from_force_limits():
     speed = solitary.prestressed_speed_from_force().rewrite(sp.hyper)
     assert_same(sp.hyperexpand(speed.subs(F_0, 0)), solitary.speed_from_force())
@@ -257,33 +282,95 @@ POINTS = [
 ]
 
 
-def _exact(expr, symbols_, values):
-    return float(sp.N(expr, 30, subs=dict(zip(symbols_, values, strict=True))))
+@pytest.mark.parametrize("point", POINTS)
+def test_numeric_speeds_against_app_b_in_mpmath(point):
+    # App. B's closed forms typed here and evaluated by mpmath at 30 digits (not the package's expressions).
+    _, K_, n_, a_, m_ = point
+    with mpmath.workdps(30):
+        _, Kv, nv, av, mv = (mpmath.mpf(value) for value in point)
+        c2 = Kv * av ** (nv + 1) / mv  # c_n^2 = K a^(n+1)/m
+        v = mpmath.mpf("0.7")
+        from_velocity = (2 * c2 / (nv + 1)) ** (1 / (nv + 1)) * v ** ((nv - 1) / (nv + 1))
+        width = mpmath.pi * av * (nv + 1) / ((nv - 1) * mpmath.sqrt(6 * (nv + 1) / nv))
+    # Double-precision evaluation of powers and logarithms: 1e-13.
+    assert np.isclose(solitary_wave_speed_from_velocity(-0.7, K_, n_, a_, m_), float(from_velocity), rtol=1e-13, atol=0)
+    assert np.isclose(solitary_wave_width(n_, a_), float(width), rtol=1e-13, atol=0)
+
+
+def _prestressed_reference(F_m_, F_0_, K_, n_, a_, m_):
+    """App. B's first integral at 60 digits: V_s^2 = 2 c_n^2 [(X^(n+1) - X0^(n+1))/(n+1) - X0^n (X - X0)]/(X - X0)^2,
+    with X = xi_max, X0 = xi_0 from F = K (a xi)^n; its limit n c_n^2 X^(n-1) at X0 = X."""
+    with mpmath.workdps(60):
+        F, F0, Kv, nv, av, mv = (mpmath.mpf(value) for value in (F_m_, F_0_, K_, n_, a_, m_))
+        c2 = Kv * av ** (nv + 1) / mv
+        X, X0 = (F / Kv) ** (1 / nv) / av, (F0 / Kv) ** (1 / nv) / av
+        if X0 == X:
+            return float(mpmath.sqrt(nv * c2 * X ** (nv - 1)))
+        bracket = (X ** (nv + 1) - X0 ** (nv + 1)) / (nv + 1) - X0**nv * (X - X0)
+        return float(mpmath.sqrt(2 * c2 * bracket / (X - X0) ** 2))
 
 
 @pytest.mark.parametrize("point", POINTS)
-def test_numeric_speeds_equal_evalf(point):
+@pytest.mark.parametrize("ratio", [0.0, 0.2, 0.5, 0.9, 1 - 1e-6, 1.0])
+def test_prestressed_speed_against_the_first_integral(point, ratio):
     F_m_, K_, n_, a_, m_ = point
-    # Generated double-precision code against the same expression at 30 digits: 1e-13.
-    expected = _exact(solitary.speed_from_force(), (F_m, K, n, a, m), point)
-    assert np.isclose(solitary_wave_speed(*point), expected, rtol=1e-13)
-    v = -0.7
-    c2 = longwave.wave_speed_squared()
-    expected = _exact(solitary.speed_from_velocity().subs(c_n, sp.sqrt(c2)), (v_max, K, n, a, m), (v, K_, n_, a_, m_))
-    assert np.isclose(solitary_wave_speed_from_velocity(v, K_, n_, a_, m_), expected, rtol=1e-13)
-    expected = _exact(solitary.support_width(), (n, a), (n_, a_))
-    assert np.isclose(solitary_wave_width(n_, a_), expected, rtol=1e-13)
-    for F_0_ in (0.0, 0.2 * F_m_, F_m_):
-        values = (F_m_, F_0_, K_, n_, a_, m_)
-        expected = _exact(solitary.prestressed_speed_from_force(), (F_m, F_0, K, n, a, m), values)
-        assert np.isclose(solitary_wave_speed_prestressed(*values), expected, rtol=1e-12)  # scipy hyp2f1: ~1e-13
+    expected = _prestressed_reference(F_m_, ratio * F_m_, K_, n_, a_, m_)
+    # The elementary form or 12-point quadrature, both to a few 1e-16: 1e-13.
+    assert np.isclose(solitary_wave_speed_prestressed(F_m_, ratio * F_m_, K_, n_, a_, m_), expected, rtol=1e-13, atol=0)
+
+
+@pytest.mark.parametrize(
+    ("F_m_", "ratio", "n_"),
+    [
+        (10.0, 0.5, 1e6),  # SciPy's hyp2f1 returned NaN here
+        (1e4, 0.5, 1e4),  # ... and lost 9 digits here
+        (1e6, 1 - 1e-12, 1.11),  # a long hanging chain: the static force is nearly the peak
+        (1e9, 1 - 1e-15, 1.5),
+        (1e-3, 1e-300, 1.0001),
+    ],
+)
+def test_prestressed_speed_for_long_chains_and_large_exponents(F_m_, ratio, n_):
+    K_, a_, m_ = 2.6e8, 0.04, 0.0098
+    expected = _prestressed_reference(F_m_, ratio * F_m_, K_, n_, a_, m_)
+    # 1e-13 as above; the reference resolves the 0/0 of F_0 -> F_m with 60 digits.
+    assert np.isclose(solitary_wave_speed_prestressed(F_m_, ratio * F_m_, K_, n_, a_, m_), expected, rtol=1e-13, atol=0)
+
+
+def test_speeds_of_extreme_chains_do_not_overflow_on_the_way():
+    # V_s = C F_m^p with C = a sqrt(2/(n+1)) K^(1/(2n))/sqrt(m) ~ 1e310 (beyond double precision)
+    # and F_m^p ~ 1e-67: V_s ~ 1e243 is representable, and the package returns it.
+    point = (1e-200, 1e8, 3.0, 1e300, 1e-20)
+    with mpmath.workdps(30):
+        F, Kv, nv, av, mv = (mpmath.mpf(value) for value in point)
+        expected = av * mpmath.sqrt(2 / (nv + 1)) * mpmath.sqrt(Kv ** (1 / nv) / mv) * F ** ((nv - 1) / (2 * nv))
+    # exp(log C + p log F_m) with log V_s ~ 560: relative error about 560 x 1e-16.
+    assert np.isclose(solitary_wave_speed(*point), float(expected), rtol=1e-13, atol=0)
+    with pytest.raises(ValueError, match="V_s is not representable"):
+        solitary_wave_speed(1e300, 1e300, 3.0, 1e300, 1e-300)  # V_s itself ~ 1e550
+
+
+def test_speed_from_velocity_takes_the_magnitude():
+    # Either sign: the speed depends on |v_max| only (App. B's signed v_max is negative).
+    signed = solitary_wave_speed_from_velocity(-0.7, 1e8, 1.3, 0.04, 0.01)
+    assert solitary_wave_speed_from_velocity(0.7, 1e8, 1.3, 0.04, 0.01) == signed
+    with pytest.raises(ValueError, match="v_max must be nonzero"):
+        solitary_wave_speed_from_velocity([0.5, 0.0], 1e8, 1.3, 0.04, 0.01)
+
+
+def test_broadcasting_errors_name_the_arguments():
+    with pytest.raises(ValueError, match=r"F_m \(shape \(3,\)\) and K \(shape \(2,\)\)"):
+        solitary_wave_speed([1.0, 2.0, 3.0], [1e8, 1e9], 1.5, 0.04, 0.01)
+    with pytest.raises(ValueError, match=r"F_0 \(shape \(2,\)\) and n \(shape \(3,\)\)"):
+        solitary_wave_speed_prestressed(5.0, [1.0, 2.0], 1e8, [1.2, 1.3, 1.5], 0.04, 0.01)
+    with pytest.raises(ValueError, match=r"n \(shape \(2,\)\) and a \(shape \(3,\)\)"):
+        solitary_wave_width([1.2, 1.3], [0.01, 0.02, 0.03])
 
 
 @pytest.mark.parametrize("point", POINTS)
 def test_numeric_speed_equals_paper_formula(point):
     F_m_, K_, n_, a_, m_ = point
     paper = a_ * np.sqrt(2 / (n_ + 1)) * np.sqrt(K_ ** (1 / n_) / m_) * F_m_ ** ((n_ - 1) / (2 * n_))
-    assert np.isclose(solitary_wave_speed(*point), paper, rtol=1e-13)  # same formula, rounding only
+    assert np.isclose(solitary_wave_speed(*point), paper, rtol=1e-13, atol=0)  # same formula, rounding only
 
 
 @pytest.mark.parametrize(("n_", "width"), [(1.5, 1.0), (1.11, 0.04), (1.01, 0.04)])
@@ -326,14 +413,16 @@ def test_near_linear_exponent_is_finite_and_quiet():
         F = solitary_wave_profile(np.linspace(-2 * width, 2 * width, 2001), 10.0, 1e8, n_, 0.04)
         V_pre = solitary_wave_speed_prestressed(10.0, 1.0, 1e8, n_, 0.04, 0.01)
     assert np.isfinite(V) and np.isfinite(width) and np.all(np.isfinite(F)) and np.isfinite(V_pre)
-    assert np.isclose(width / 0.04, np.pi * 2.01 / (0.01 * np.sqrt(6 * 2.01 / 1.01)), rtol=1e-12)  # about 183 spacings
+    assert np.isclose(
+        width / 0.04, np.pi * 2.01 / (0.01 * np.sqrt(6 * 2.01 / 1.01)), rtol=1e-12, atol=0
+    )  # about 183 spacings
 
 
 def test_speed_tends_to_the_linear_sound_speed_as_n_tends_to_one():
     K_, a_, m_ = 1e5, 0.04, 0.01
     linear = a_ * np.sqrt(K_ / m_)
     # V_s/c = sqrt(2/(n+1)) K^((1-n)/(2n)) F^((n-1)/(2n)): relative distance O(n - 1) = 1e-9, times log factors ~ 10.
-    assert np.isclose(solitary_wave_speed(10.0, K_, 1 + 1e-9, a_, m_), linear, rtol=1e-7)
+    assert np.isclose(solitary_wave_speed(10.0, K_, 1 + 1e-9, a_, m_), linear, rtol=1e-7, atol=0)
 
 
 def test_broadcasting():
@@ -358,7 +447,7 @@ def test_broadcasting():
         (lambda: solitary_wave_speed(1.0, 1e8, 1.5, 0.0, 0.01), "a"),
         (lambda: solitary_wave_speed(1.0, 1e8, 1.5, 0.04, 0.0), "m"),
         (lambda: solitary_wave_speed(np.inf, 1e8, 1.5, 0.04, 0.01), "finite"),
-        (lambda: solitary_wave_speed_from_velocity(0.5, 1e8, 1.5, 0.04, 0.01), "v_max must be negative"),
+        (lambda: solitary_wave_speed_from_velocity(0.0, 1e8, 1.5, 0.04, 0.01), "v_max must be nonzero"),
         (lambda: solitary_wave_speed_prestressed(1.0, 2.0, 1e8, 1.5, 0.04, 0.01), "F_0 must not exceed F_m"),
         (lambda: solitary_wave_speed_prestressed(1.0, -2.0, 1e8, 1.5, 0.04, 0.01), "F_0"),
         (lambda: solitary_wave_profile(np.nan, 1.0, 1e8, 1.5, 0.04), "x must be finite"),
@@ -396,8 +485,8 @@ def test_speed_increases_with_force(F1, F2, n_, K_, a_, m_):
 def test_velocity_and_force_give_the_same_speed(F_m_, n_, K_, a_, m_):
     V = solitary_wave_speed(F_m_, K_, n_, a_, m_)
     xi_peak = (F_m_ / K_) ** (1 / n_) / a_
-    # v_max = -V_s xi_max (Eq. 18); double-precision round trip through powers: 1e-12.
-    assert np.isclose(solitary_wave_speed_from_velocity(-V * xi_peak, K_, n_, a_, m_), V, rtol=1e-12)
+    # v_max = -V_s xi_max (Eq. (B18)); double-precision round trip through powers: 1e-12.
+    assert np.isclose(solitary_wave_speed_from_velocity(-V * xi_peak, K_, n_, a_, m_), V, rtol=1e-12, atol=0)
 
 
 @settings(derandomize=True, max_examples=60, deadline=None)
@@ -418,10 +507,12 @@ def test_prestressed_speed_bounds(F_m_, fraction, n_, K_, a_, m_):
 def test_prestressed_limits_numerically(F_m_, n_, K_, a_, m_):
     compact = solitary_wave_speed(F_m_, K_, n_, a_, m_)
     # F_0/F_m = 1e-12: V^2 moves by O((F_0/F_m)^(1/n)) <= 1e-12^(1/3) = 1e-4 relative.
-    assert np.isclose(solitary_wave_speed_prestressed(F_m_, 1e-12 * F_m_, K_, n_, a_, m_), compact, rtol=2e-4)
+    assert np.isclose(solitary_wave_speed_prestressed(F_m_, 1e-12 * F_m_, K_, n_, a_, m_), compact, rtol=2e-4, atol=0)
     sound = linear_sound_speed(F_m_, K_, n_, a_, m_)
     # F_m/F_0 = 1 + 1e-9: V moves by O(1e-9) relative.
-    assert np.isclose(solitary_wave_speed_prestressed(F_m_, F_m_ / (1 + 1e-9), K_, n_, a_, m_), sound, rtol=1e-8)
+    assert np.isclose(
+        solitary_wave_speed_prestressed(F_m_, F_m_ / (1 + 1e-9), K_, n_, a_, m_), sound, rtol=1e-8, atol=0
+    )
 
 
 @settings(derandomize=True, max_examples=40, deadline=None)

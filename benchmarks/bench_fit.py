@@ -1,0 +1,100 @@
+"""Trace fits: the time of a fit, its forward runs, and the batched Jacobian against one run at a time.
+
+The measurement is synthetic: the paper's 20-ring chain (:meth:`Chain.from_paper`, R/r = 9,
+Table I) with a contact dashpot gamma = 3 N s/m, dropped from 20 mm, read by the sensors in
+rings 6 and 12 (1500 samples over 1.5 ms, 1 % noise, a trigger offset and DC offsets).
+
+- "fit": :func:`~ringchain.numerics.fit_traces` of (m, gamma, t0) from a start 30 % off in m
+  and 40 % in gamma, with the Jacobian's runs as one batch (default) and one at a time;
+- "Jacobian": one Jacobian of the fit (the base point and one run per chain parameter) at
+  the solution, batched against one run at a time, for 2 and 4 free chain parameters.
+
+Each timing is the best of ``--repeat`` (default 3); the load average is printed (the
+machine may be shared: compare the ratios, measured in one run, more than the times).
+
+Run: ``python benchmarks/bench_fit.py [--model power-law] [--repeat 3]``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import os
+
+import numpy as np
+from bench_batch import best_of  # this folder is on sys.path when a script runs from it
+from ringchain.numerics import Chain, fit_traces, simulate
+from ringchain.numerics.fit import _records, _TraceProblem
+
+DROP = 0.02  # m
+T0 = 4e-5  # s: the impact 40 us after the trigger
+CLOCK = np.linspace(-0.1e-3, 1.4e-3, 1500)  # s
+GAMMA = {"power-law": {"gamma": 3.0}, "dual-spring": {"gamma": 1.0, "gamma_b": 0.5}}
+
+
+def measurement(truth):
+    rng = np.random.default_rng(1)
+    tau = CLOCK - T0
+    after = tau >= 0
+    sim = simulate(truth, tau[-1], drop_height=DROP, t_eval=tau[after], rtol=1e-10)
+    peak = max(sim.sensor(k).max() for k in (6, 12))
+    traces = {}
+    for k, offset in ((6, 0.3), (12, -0.2)):
+        y = np.full(CLOCK.size, sim.sensor(k)[0])
+        y[after] = sim.sensor(k)
+        traces[k] = y + offset + 0.01 * peak * rng.standard_normal(CLOCK.size)
+    return traces
+
+
+def jacobian_time(fit, chain, traces, free, batched, repeat):
+    """Seconds of one Jacobian of ``fit_traces`` at the fitted values (and its forward runs)."""
+    import lmfit
+
+    records = _records(CLOCK, traces, chain, DROP, None)
+    problem = _TraceProblem(records, chain, free, t0=[0.0], offsets=True, rtol=1e-8, gravity=True, batched=batched)
+    params = lmfit.Parameters()
+    for name in fit.names:
+        params.add(name, value=fit.values[name])
+    for name in free:
+        if name not in params:
+            params.add(name, value=float(getattr(fit.chain, name)))
+    seconds, _ = best_of(repeat, lambda: problem.jacobian(params))
+    return seconds, problem.n_runs // repeat
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--model", default="power-law", choices=("power-law", "dual-spring"))
+    parser.add_argument("--repeat", type=int, default=3, help="best of this many timings (default 3)")
+    args = parser.parse_args()
+
+    truth = dataclasses.replace(Chain.from_paper(args.model), **GAMMA[args.model])
+    traces = measurement(truth)
+    start = dataclasses.replace(truth, m=1.3 * truth.m, gamma=0.6 * truth.gamma)
+    free = ("m", "gamma", "t0")
+    fit_traces(CLOCK, traces, start, drop_height=DROP, free=free)  # warm up (imports, caches)
+    print(f"{args.model} chain of {truth.n_rings} rings, drop {DROP * 1e3:g} mm, {CLOCK.size} samples x 2 sensors, "
+          f"1 % noise; best of {args.repeat}; load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} "
+          "cores")  # fmt: skip
+    print(f"{'fit (m, gamma, t0)':>24} {'time (s)':>9} {'forward runs':>13} {'integrator calls':>17} "
+          f"{'m error':>9} {'gamma error':>12}")  # fmt: skip
+    times = {}
+    for batched in (True, False):
+        seconds, fit = best_of(args.repeat, lambda b=batched: fit_traces(CLOCK, traces, start, drop_height=DROP,
+                                                                         free=free, batched=b))  # fmt: skip
+        times[batched] = seconds
+        label = "batched Jacobian" if batched else "one run at a time"
+        print(f"{label:>24} {seconds:9.2f} {fit.n_forward_runs:13d} {fit.n_batches:17d} "
+              f"{fit.values['m'] / truth.m - 1:+9.1e} {fit.values['gamma'] / truth.gamma - 1:+12.1e}")  # fmt: skip
+    print(f"{'speed-up of the fit':>24} {times[False] / times[True]:8.2f}x")
+    print()
+    print(f"{'one Jacobian':>24} {'runs':>5} {'batched (s)':>12} {'one at a time (s)':>18} {'speed-up':>9}")
+    sets = [("m", "gamma", "t0"), ("m", "gamma", "K", "n", "t0")]
+    for jac_free in sets:
+        t_batch, runs = jacobian_time(fit, start, traces, jac_free, True, args.repeat)
+        t_single, _ = jacobian_time(fit, start, traces, jac_free, False, args.repeat)
+        print(f"{','.join(jac_free):>24} {runs:5d} {t_batch:12.3f} {t_single:18.3f} {t_single / t_batch:8.2f}x")
+
+
+if __name__ == "__main__":
+    main()

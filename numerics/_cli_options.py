@@ -1,0 +1,386 @@
+"""Options of the ``ringchain`` command line: their types, their checks and the groups subcommands share.
+
+Every value is checked when it is parsed, with ringchain's own validators, and refused in
+the user's units under the option's name (``argument --angle: contact angle (deg) must lie
+in (0, 90], got 91``); values that depend on each other (R and r, sensors and chain
+length, impact speed and material) are checked before any work by the ``check_*``
+functions; output paths are checked (by trying to open them) before any work and are
+never changed.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import math
+import os
+from pathlib import Path
+
+import numpy as np
+from ringchain.theory import PAPER_TUBE_RADIUS, paper_data
+from ringchain.theory import _validate as v
+
+from .chain import _count
+
+# -- option values: parsed and checked before any work, errors in the user's units ---------------------
+#: Most values of one sweep axis and most points of one sweep the command line runs: a guard against a
+#: typo such as ``--drop-height 0.01:0.1:1000000000``, which would exhaust the memory before any work
+#: (100000 points of static theory alone take a few minutes; :func:`ringchain.numerics.sweep` has no limit).
+MAX_GRID_POINTS = 100_000
+
+
+def one_line(exc) -> str:
+    """An exception's message on one line (the command line prints one line per error)."""
+    return " ".join(str(exc).split()) or type(exc).__name__
+
+
+class Checked:
+    """argparse type: ``parse`` the text, then ``check`` the value with one of ringchain's validators.
+
+    Text that does not parse gives argparse's own error (``argument --R: invalid float value:
+    'abc'``); a value the check refuses gives the check's message, after the option's name
+    (``argument --drop-height: drop height must be positive (in m), got -1``).
+    """
+
+    def __init__(self, parse, check=None):
+        self.parse, self._check = parse, check
+        self.__name__ = parse.__name__  # argparse names the type in "invalid float value"
+
+    def check(self, value):
+        if self._check is None:
+            return value
+        try:
+            return self._check(value)
+        except (ValueError, TypeError) as exc:
+            raise argparse.ArgumentTypeError(one_line(exc)) from None
+
+    def __call__(self, text):
+        return self.check(self.parse(text))
+
+
+def positive(what, unit):
+    """A finite number > 0, in ``unit``."""
+    return Checked(float, lambda x: float(v.positive(what, x, unit)))
+
+
+def fraction(what):
+    """A finite number in (0, 1]."""
+    return Checked(float, lambda x: float(v.in_range(what, x, 0.0, 1.0)))
+
+
+def integer(what, minimum):
+    """An integer >= ``minimum``."""
+    return Checked(int, lambda n: _count(what, n, minimum))
+
+
+def material(name):
+    """A material preset key (:data:`ringchain.theory.MATERIALS`)."""
+    from ringchain.theory import get_material
+
+    get_material(name)
+    return name
+
+
+def batch_size(n):
+    """A positive number of runs per task."""
+    if n < 1:
+        raise ValueError(f"batch_size must be a positive integer, got {n}")
+    return n
+
+
+LENGTH_R = positive("R", "m")
+LENGTH_r = positive("r", "m")
+ASPECT = positive("R/r", "")
+ANGLE = Checked(float, lambda x: float(v.in_range("contact angle (deg)", x, 0.0, 90.0)))
+M_EFF_RATIO = fraction("m_eff/m0")
+DROP_HEIGHT = positive("drop height", "m")
+IMPACT_VELOCITY = positive("impact velocity", "m/s")
+FORCE = positive("force", "N")
+DURATION = positive("duration", "s")
+
+
+class Values:
+    """argparse type of a sweep axis: one value, or ``start:stop:count`` for ``count`` evenly spaced ones.
+
+    Each value is checked as one value of the option would be; start > stop counts down.
+    """
+
+    def __init__(self, one: Checked):
+        self.one = one
+        self.__name__ = one.__name__
+
+    def __call__(self, text: str) -> list:
+        floats = self.one.parse is float
+        parts = text.split(":")
+        try:
+            if len(parts) == 1:
+                return [self.one(text)]
+            if len(parts) != 3 or not floats:
+                raise ValueError
+            start, stop = float(parts[0]), float(parts[1])
+        except ValueError:
+            form = "a number or start:stop:count" if floats else "an integer"
+            raise argparse.ArgumentTypeError(f"expected {form}, got {text!r}") from None
+        try:
+            count = int(parts[2])
+        except ValueError:
+            count = 0
+        if not 1 <= count <= MAX_GRID_POINTS:
+            raise argparse.ArgumentTypeError(
+                f"the count of start:stop:count must be an integer from 1 to {MAX_GRID_POINTS}, got {parts[2]!r} "
+                f"in {text!r}"
+            )
+        self.one.check(start), self.one.check(stop)
+        if start == stop and count > 1:
+            raise argparse.ArgumentTypeError(f"{text!r} gives {count} equal values; give the value once")
+        # 12 significant digits: 0.08, not linspace's 0.07999999999999999.
+        return [self.one.check(float(f"{x:.12g}")) for x in np.linspace(start, stop, count)]
+
+
+def flat(lists):
+    """The values of a sweep axis given as several ``Values`` (a list per argument), or None."""
+    return None if lists is None else [x for values in lists for x in values]
+
+
+# -- output paths: checked before any work, never changed --------------------------------------------
+def output_file(text: str) -> str:
+    """argparse type of an output file: refused at once if it cannot be written (it is not written yet)."""
+    path = Path(text)
+    if not text:
+        raise argparse.ArgumentTypeError("the file name is empty")
+    if path.is_dir():
+        raise argparse.ArgumentTypeError(f"{text} is a folder; give the name of a file (in it, say)")
+    folder = path.parent
+    if not folder.is_dir():
+        reason = "is not a folder" if folder.exists() else "does not exist"
+        raise argparse.ArgumentTypeError(f"cannot write {text}: the folder {folder} {reason}")
+    existed = path.exists()
+    try:
+        with open(path, "a"):  # appends nothing: the one sure test (read-only file systems, ACLs, root)
+            pass
+    except OSError as exc:
+        raise argparse.ArgumentTypeError(f"cannot write {text}: {exc.strerror or exc}") from None
+    if not existed:
+        path.unlink(missing_ok=True)
+    return text
+
+
+def output_csv(text: str) -> str:
+    """An output file, or ``-`` for the standard output."""
+    return text if text == "-" else output_file(text)
+
+
+def _plot_formats() -> dict:
+    from matplotlib.backend_bases import FigureCanvasBase
+
+    return FigureCanvasBase.get_supported_filetypes()
+
+
+def plot_file(text: str) -> str:
+    """An output file whose extension names an image format matplotlib writes (never added by us)."""
+    path = Path(text)
+    if path.is_dir():
+        raise argparse.ArgumentTypeError(f"{text} is a folder; give an image file in it, e.g. {path / 'plot.png'}")
+    formats = _plot_formats()
+    extension = path.suffix.lower().lstrip(".")
+    if extension not in formats:
+        known = ", ".join(f".{f}" for f in sorted(formats))
+        what = f"its extension .{extension} is not an image format" if extension else "it has no extension"
+        raise argparse.ArgumentTypeError(f"{text}: {what}; name the file with one of {known}")
+    return output_file(text)
+
+
+def output_folder(text: str) -> str:
+    """argparse type of an output folder: an existing folder, or one that can be created."""
+    path = Path(text)
+    if not text:
+        raise argparse.ArgumentTypeError("the folder name is empty")
+    if path.exists() and not path.is_dir():
+        raise argparse.ArgumentTypeError(f"{text} exists and is not a folder")
+    parent = path
+    while not parent.exists() and parent != parent.parent:
+        parent = parent.parent
+    if not parent.is_dir():
+        raise argparse.ArgumentTypeError(f"cannot create the folder {text}: {parent} is not a folder")
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise argparse.ArgumentTypeError(f"cannot write in the folder {parent}: permission denied")
+    return text
+
+
+# -- checks across options, before any work ------------------------------------------------------------
+def distinct(x: float, limit: float) -> str:
+    """``x`` with the fewest significant digits (at least 4) that do not print it as ``limit``."""
+    for digits in range(4, 18):
+        text = f"{x:.{digits}g}"
+        if x == limit or text != f"{limit:.{digits}g}":
+            return text
+    return repr(x)
+
+
+def aspect_ratio(R: float, r: float) -> float:
+    """R/r to 12 significant digits: 3, not 2.9999999999999996 for R = 0.3, r = 0.1."""
+    return float(f"{R / r:.12g}")
+
+
+def check_geometry(aspect: float, angles, *, chain: bool, given: str, two_patches: bool = False) -> None:
+    """R/r and the contact angles (deg) admit one Hertz contact and, for a chain, rings that hold two neighbours.
+
+    ``two_patches``: angles below arccos(1 - 2r/R), where the numerical contact takes over with
+    two patches, are admitted down to 2 arcsin(r/R), where the patches reach the sides of the tubes.
+    """
+    from ringchain.theory import MIN_CHAIN_ASPECT_RATIO, minimum_contact_angle, smallest_patch_angle
+
+    if not aspect > 2:
+        raise ValueError(f"{given}: R must exceed 2 r for the Hertz contact of two tori, got R/r = "
+                         f"{distinct(aspect, 2)}")  # fmt: skip
+    if chain and aspect < MIN_CHAIN_ASPECT_RATIO:
+        raise ValueError(
+            f"{given}: R/r = {distinct(aspect, MIN_CHAIN_ASPECT_RATIO)} < {MIN_CHAIN_ASPECT_RATIO:g}, so the hole of "
+            "a ring, 2(R - r) across, cannot pass the wires of its two neighbours (4 r): rings this thick cannot "
+            "form a chain"
+        )
+    lowest = math.degrees(float(minimum_contact_angle(aspect, 1.0)))
+    angle = min(angles)
+    if two_patches:
+        floor = math.degrees(float(smallest_patch_angle(aspect, 1.0)))
+        if angle <= floor:
+            raise ValueError(
+                f"argument --angle: a contact angle of {distinct(angle, floor)} deg is at or below "
+                f"2 arcsin(r/R) = {distinct(floor, angle)} deg for R/r = {aspect:.6g}: the contact points reach the "
+                "sides of the tubes there and the rings no longer pull each other along the chain"
+            )
+        return
+    if angle <= lowest:
+        raise ValueError(
+            f"argument --angle: a contact angle of {distinct(angle, lowest)} deg is at or below "
+            f"arccos(1 - 2r/R) = {distinct(lowest, angle)} deg for R/r = {aspect:.6g}: the tori touch along a line "
+            "or at two patches there, and a single elliptical Hertz contact does not apply"
+        )
+
+
+def check_sensors(sensors, chain_lengths) -> None:
+    """Near sensor before the far one, both in the shortest chain."""
+    near, far = sensors
+    if not near < far:
+        raise ValueError(f"argument --sensors: the near ring comes first, then the far one; got {near} {far}")
+    shortest = min(chain_lengths)
+    if far >= shortest:
+        raise ValueError(f"argument --sensors: sensor ring {far} is not in a chain of {shortest} rings "
+                         f"(0..{shortest - 1}); give --rings {far + 1} or more")  # fmt: skip
+
+
+def check_impact(material: str, *, drop_heights=None, impact_velocities=None) -> None:
+    """Impacts slower than the bar-wave speed sqrt(E/rho) of the material, where the contact model can hold.
+
+    Hertz contact is quasi-static: it holds for impact speeds far below the elastic wave
+    speed of the bodies (Johnson, Contact Mechanics, Sec. 11.4); at or above sqrt(E/rho) no
+    lattice of point masses describes the impact (and the integrators fail).
+    """
+    from ringchain.theory import get_material
+
+    from .models import STANDARD_GRAVITY
+
+    mat = get_material(material)
+    c0 = math.sqrt(mat.E / mat.rho)
+    speeds = [(f"argument --impact-velocity: {u:g} m/s", u) for u in impact_velocities or ()]
+    for h in drop_heights or ():
+        speeds.append((f"argument --drop-height: a drop of {h:g} m gives an impact at {{:.3g}} m/s, which",
+                       math.sqrt(2.0 * STANDARD_GRAVITY * h)))  # fmt: skip
+    for text, speed in speeds:
+        if speed >= c0:
+            raise ValueError(
+                f"{text.format(speed)} is not below the bar-wave speed sqrt(E/rho) = {c0:.4g} m/s of {mat.name}; "
+                "Hertz contact and the lattice models hold only far below it"
+            )
+
+
+@contextlib.contextmanager
+def computing(what: str):
+    """Report a failure of the theory or the solver as one about the options the user gave."""
+    try:
+        yield
+    except (ValueError, ArithmeticError, RuntimeWarning) as exc:
+        raise ValueError(f"cannot compute {what}: {one_line(exc)}") from None
+
+
+def ring_of(R, r, material, angle_deg, what, *, thin=False, window=None):
+    """The Ring (R, r in m, angle in degrees) and its statics, computed here so that a failure names ``what``."""
+    from ringchain.theory import Ring
+
+    with computing(what):
+        ring = Ring(R, r, material=material, angle=math.radians(angle_deg), thin=thin)
+        ring.K_c, ring.K_b, ring.power_law(*(window or ()))
+    return ring
+
+
+@contextlib.contextmanager
+def naming_t_end(args):
+    """A duration the sweep finds too short is the user's --t-end: say so."""
+    try:
+        yield
+    except ValueError as exc:
+        if args.t_end is None or "t_end" not in str(exc):
+            raise
+        raise ValueError(f"argument --t-end: {one_line(exc).replace('t_end', '--t-end')}") from None
+
+
+# -- option groups: defined once, shared by the subcommands -----------------------------------------
+def option(p, many, name, one, default, **kwargs):
+    """One option of one value, or of several values and ranges for a sweep (``many``)."""
+    if many:
+        p.add_argument(name, type=Values(one), nargs="+", default=[[default]], **kwargs)
+    else:
+        p.add_argument(name, type=one, default=default, **kwargs)
+
+
+def geometry_options(p, *, many=False, R_required=False):
+    """Chain geometry: --R (--R-over-r in a sweep), --r, --angle, --material, --m-eff-ratio."""
+    if many:
+        option(p, True, "--R-over-r", ASPECT, 9.0, metavar="X", help="aspect ratios R/r (default 9)")
+    elif R_required:
+        p.add_argument("--R", type=LENGTH_R, required=True, metavar="M", help="major (centroidal) radius, m")
+    else:
+        p.add_argument("--R", type=LENGTH_R, default=22.5e-3, metavar="M",
+                       help="major (centroidal) radius of the rings, m (default 22.5e-3)")  # fmt: skip
+    p.add_argument("--r", type=LENGTH_r, default=PAPER_TUBE_RADIUS, metavar="M",
+                   help="tube radius, m (default 2.5e-3, the paper's)")  # fmt: skip
+    option(p, many, "--angle", ANGLE, 90.0, metavar="DEG",
+           help="contact angle between ring planes, degrees, in (0, 90] (default 90)")  # fmt: skip
+    p.add_argument("--material", type=Checked(str, material), default="stainless",
+                   help="material preset (default stainless: AISI 304)")  # fmt: skip
+    option(p, many, "--m-eff-ratio", M_EFF_RATIO, 1.0, metavar="X",
+           help="inertial over ring mass m_eff/m0 in (0, 1] (default 1; the paper fits 0.33-0.37)")  # fmt: skip
+
+
+def impact_options(p, *, many=False, required=False):
+    """The impact on ring 0: --drop-height or --impact-velocity."""
+    impact = p.add_mutually_exclusive_group(required=required)
+    if many:
+        impact.add_argument("--drop-height", type=Values(DROP_HEIGHT), nargs="+", metavar="M", help="drop heights, m")
+        impact.add_argument("--impact-velocity", type=Values(IMPACT_VELOCITY), nargs="+", metavar="M/S",
+                            help="impact speeds, m/s")  # fmt: skip
+    else:
+        impact.add_argument("--drop-height", type=DROP_HEIGHT, metavar="M", help="free-fall height of ring 0, m")
+        impact.add_argument("--impact-velocity", type=IMPACT_VELOCITY, metavar="M/S",
+                            help="impact speed of ring 0, m/s")  # fmt: skip
+
+
+def chain_options(p, *, many=False):
+    """The lattice run: --rings, --model, --sensors, --t-end, --samples."""
+    from .chain import MODELS
+    from .solve import _count_samples
+
+    rings = integer("rings", 2)
+    if many:
+        p.add_argument("--rings", type=Values(rings), nargs="+", default=[[paper_data.CHAIN_RINGS]], metavar="N",
+                       help="chain lengths (default 20)")  # fmt: skip
+    else:
+        p.add_argument("--rings", type=rings, default=paper_data.CHAIN_RINGS, help="rings in the chain (default 20)")
+    p.add_argument("--model", choices=MODELS, default=None if many else "dual-spring", nargs="+" if many else None,
+                   help="lattice model (paper Sec. III.B; default dual-spring)")  # fmt: skip
+    p.add_argument("--sensors", type=integer("sensor ring", 0), nargs=2, default=list(paper_data.SENSOR_RINGS),
+                   metavar=("NEAR", "FAR"), help="sensor rings counted from the impact (default 6 12)")  # fmt: skip
+    p.add_argument("--t-end", type=DURATION, default=None, metavar="S",
+                   help="duration, s (default: long enough for the pulse to pass the far sensor)")  # fmt: skip
+    p.add_argument("--samples", type=Checked(int, _count_samples), default=None,
+                   help="samples of each force record (default: simulate's 2001, sweep's 1001)")  # fmt: skip

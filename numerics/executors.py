@@ -1,0 +1,301 @@
+"""Where the tasks of a sweep run: in this process, in local worker processes, or on a Dask cluster.
+
+- :class:`InlineExecutor` runs every task at once in the calling process;
+- :func:`default_executor` is the pool :func:`~ringchain.numerics.sweep.sweep` uses when
+  it is given no executor: local processes started with the "spawn" method;
+- :func:`dask_client` connects to a Dask scheduler after checking, with a short timeout,
+  that one answers at the address (``ringchain sweep --dask ADDRESS``).
+
+Worker processes and ``if __name__ == "__main__":``.  A "spawn" worker is a fresh
+interpreter: it imports the module that started the pool, and for a script run as
+``python script.py`` that is the script itself.  A script that calls ``sweep()`` at its
+top level, without the guard, would start a new sweep in every worker, and Python then
+kills the workers (``BrokenProcessPool``).  "spawn" is kept because it behaves the same
+on Linux, macOS and Windows and is safe with threads ("fork" copies the parent's threads'
+locks in whatever state they are, and is not available on Windows); instead
+:func:`default_executor` reads the script before it starts any process and, when the call
+is not under the guard, raises a ``RuntimeError`` that says where the call is and how to
+fix it.  Code run with ``python -c``, in a notebook or in an interactive session, and
+modules run as ``python -m package``, need no guard: spawn does not re-import them.
+"""
+
+from __future__ import annotations
+
+import ast
+import concurrent.futures as cf
+import math
+import multiprocessing
+import numbers
+import os
+import socket
+import struct
+import sys
+import time
+from pathlib import Path
+
+__all__ = [
+    "InlineExecutor",
+    "default_executor",
+    "check_main_guard",
+    "dask_client",
+    "check_dask_scheduler",
+    "DASK_TIMEOUT",
+    "DASK_PORT",
+]
+
+#: Seconds :func:`dask_client` waits for a Dask scheduler to accept the connection and greet.
+DASK_TIMEOUT = 5.0
+
+#: Port of a Dask scheduler when the address gives none (Dask's default; 8787 is its dashboard).
+DASK_PORT = 8786
+
+#: Largest first message taken for a Dask handshake, bytes (a scheduler's is under 100).
+_MAX_HANDSHAKE = 1 << 16
+
+
+class InlineExecutor(cf.Executor):
+    """An Executor that runs each task at once, in the calling process (no pool, plain tracebacks)."""
+
+    def submit(self, fn, /, *args, **kwargs):
+        future = cf.Future()
+        try:
+            future.set_result(fn(*args, **kwargs))
+        except Exception as exc:  # handed to the caller through the future, as any Executor does
+            future.set_exception(exc)
+        return future
+
+
+def default_executor(n_tasks: int, max_workers: int | None) -> cf.Executor:
+    """The executor of a sweep given none: ``max_workers`` local "spawn" processes, or inline for 0.
+
+    Parameters
+    ----------
+    n_tasks : int
+        Tasks to run (no more processes than tasks are started).
+    max_workers : int or None
+        Worker processes; None: the number of CPUs; 0: :class:`InlineExecutor`.
+
+    Raises
+    ------
+    ValueError
+        If ``max_workers`` is not None or an integer >= 0.
+    RuntimeError
+        If the script that calls the sweep would be re-run by every worker (no
+        ``if __name__ == "__main__":`` guard, see :func:`check_main_guard`).
+    """
+    if max_workers is not None and (
+        isinstance(max_workers, bool) or not isinstance(max_workers, numbers.Integral) or max_workers < 0
+    ):
+        raise ValueError(f"max_workers must be None (all CPUs), 0 (this process) or a positive integer, "
+                         f"got {max_workers!r}")  # fmt: skip
+    if max_workers == 0:
+        return InlineExecutor()
+    check_main_guard("sweep()")
+    workers = int(max_workers) if max_workers else os.cpu_count() or 1
+    # "spawn": a fresh interpreter per worker, the same on every platform and safe with threads.
+    return cf.ProcessPoolExecutor(max(1, min(workers, n_tasks)), mp_context=multiprocessing.get_context("spawn"))
+
+
+def check_main_guard(what: str = "this call") -> None:
+    """Raise ``RuntimeError`` if starting "spawn" workers now would re-run the calling script.
+
+    A "spawn" worker re-imports the main module when it is a script (``python script.py``)
+    or a module run by name (``python -m module``).  If the call that starts the workers
+    sits in that module's top-level code outside ``if __name__ == "__main__":``, every
+    worker would run it again.  The script is read with :mod:`ast` to find the statement
+    being executed; if it cannot be read (no source, say), nothing is raised.
+    """
+    main = sys.modules.get("__main__")
+    if main is None or not _spawn_reimports(main):
+        return
+    frame = sys._getframe(1)
+    while frame is not None and not (frame.f_code.co_name == "<module>" and frame.f_globals is vars(main)):
+        frame = frame.f_back
+    if frame is None:  # not called from the main module's top-level code (a thread, an atexit hook...)
+        return
+    path = getattr(main, "__file__", None)
+    try:
+        tree = ast.parse(Path(path).read_text(), str(path))
+    except (OSError, SyntaxError, TypeError, ValueError):
+        return
+    line = frame.f_lineno
+    if _guarded(tree.body, line):
+        return
+    raise RuntimeError(
+        f"{what} starts worker processes with the 'spawn' method, which imports {Path(path).name} again in "
+        f"each worker; line {line} runs at its top level, outside `if __name__ == \"__main__\":`, so every "
+        "worker would start the same work again. Put the code that runs the sweep under "
+        "`if __name__ == \"__main__\":` (see the README, 'Sweeps'), or run it in this process with max_workers=0."
+    )
+
+
+def _spawn_reimports(main) -> bool:
+    """Whether a "spawn" child imports ``main`` again (as multiprocessing.spawn.get_preparation_data decides)."""
+    name = getattr(getattr(main, "__spec__", None), "name", None)
+    if name is not None:
+        return not (name == "__main__" or name.endswith(".__main__"))
+    return getattr(main, "__file__", None) is not None
+
+
+def _guarded(body, line: int) -> bool:
+    """Whether ``line`` lies, within the statements ``body``, under an ``if`` that tests ``__name__``."""
+    for node in body:
+        if not node.lineno <= line <= (node.end_lineno or node.lineno):
+            continue
+        if isinstance(node, ast.If) and any(isinstance(n, ast.Name) and n.id == "__name__"
+                                            for n in ast.walk(node.test)):  # fmt: skip
+            return True
+        children = [getattr(node, field, None) for field in ("body", "orelse", "finalbody", "handlers", "cases")]
+        return any(isinstance(child, list) and _guarded(child, line) for child in children)
+    return False
+
+
+# -- Dask -------------------------------------------------------------------------------------------
+def dask_client(address: str, timeout: float = DASK_TIMEOUT):
+    """A ``distributed.Client`` of the Dask scheduler at ``address``, checked to answer first.
+
+    Parameters
+    ----------
+    address : str
+        ``tcp://host:port``, ``host:port`` or ``host`` (port 8786); other schemes (``tls://``...)
+        are passed to Dask unchecked.
+    timeout : float, optional
+        Seconds to wait for the connection and for the scheduler's greeting (default 5).
+
+    Raises
+    ------
+    ImportError
+        If Dask's ``distributed`` is not installed.
+    ConnectionError
+        If nothing listens at the address, or what listens is not a Dask scheduler
+        (:func:`check_dask_scheduler`), or the client cannot connect within ``timeout``.
+    ValueError
+        For a malformed address or timeout.
+
+    Examples
+    --------
+    >>> from ringchain.numerics.sweep import sweep
+    >>> with dask_client("tcp://scheduler:8786") as client:  # doctest: +SKIP
+    ...     rows = sweep(grid, client.get_executor())
+    """
+    try:
+        from distributed import Client
+    except ImportError:
+        raise ImportError("a Dask cluster needs the dask extra: pip install 'ringchain[dask]'") from None
+    check_dask_scheduler(address, timeout)
+    try:
+        return Client(address, timeout=timeout)
+    except (OSError, TimeoutError) as exc:
+        raise ConnectionError(f"cannot connect a Dask client to {address}: {_reason(exc)}") from None
+
+
+def check_dask_scheduler(address: str, timeout: float = DASK_TIMEOUT) -> None:
+    """Raise ``ConnectionError`` unless a Dask scheduler answers at the TCP ``address`` within ``timeout`` s.
+
+    A Dask scheduler greets every new connection first, with a handshake message (an
+    8-byte length, then frames holding a msgpack map).  This connects a plain socket,
+    sends nothing, and reads at most 64 KiB of that greeting: a closed port, a silent
+    listener (an HTTP server waits for a request), or one that speaks first in another
+    protocol (an SSH banner) is reported in one line instead of the Dask client's
+    30-second wait or its attempt to allocate whatever the first 8 bytes say.  Addresses
+    of other schemes (``tls://``, ``ucx://``, ``inproc://``) are not checked.
+    """
+    timeout = float(timeout)
+    if not (math.isfinite(timeout) and timeout > 0):
+        raise ValueError(f"the Dask timeout must be a positive number of seconds, got {timeout!r}")
+    host, port = _tcp_host_port(address)
+    if host is None:
+        return
+    where = f"{host}:{port}"
+    deadline = time.monotonic() + timeout
+    try:
+        sock = socket.create_connection((host, port), timeout=timeout)
+    except socket.gaierror:
+        raise ConnectionError(f"no Dask scheduler at {address}: cannot resolve the host name {host!r}") from None
+    except ConnectionRefusedError:
+        raise ConnectionError(f"no Dask scheduler at {address}: connection refused (nothing listens on {where})"
+                              ) from None  # fmt: skip
+    except TimeoutError:
+        raise ConnectionError(f"no Dask scheduler at {address}: no answer from {where} within {timeout:g} s"
+                              ) from None  # fmt: skip
+    except OSError as exc:
+        raise ConnectionError(f"no Dask scheduler at {address}: {_reason(exc)}") from None
+    with sock:
+        head, ended = _receive(sock, 8, deadline)
+        if ended == "timeout":
+            problem = f"it sent nothing within {timeout:g} s, while a Dask scheduler greets at once"
+        elif ended == "closed":
+            problem = f"it closed the connection after sending {head!r}" if head else "it closed the connection"
+        else:
+            (size,) = struct.unpack("Q", head)  # the frame header of distributed.comm.tcp: native uint64
+            if not 16 <= size <= _MAX_HANDSHAKE:
+                problem = f"it speaks another protocol (it sent {head!r}...)"
+            elif _is_handshake(_receive(sock, size, deadline)[0]):
+                return
+            else:
+                problem = "its first message is not a Dask handshake"
+    hint = f"; a scheduler listens on port {DASK_PORT} unless told otherwise" if port != DASK_PORT else ""
+    raise ConnectionError(f"no Dask scheduler at {address}: {where} accepts connections, but {problem}{hint}")
+
+
+def _tcp_host_port(address: str) -> tuple[str | None, int]:
+    """(host, port) of a TCP address (default port :data:`DASK_PORT`); (None, 0) for another scheme."""
+    text = str(address).strip()
+    scheme, sep, rest = text.partition("://")
+    if not sep:
+        scheme, rest = "tcp", text
+    if scheme != "tcp":
+        return None, 0
+    if rest.startswith("["):  # [IPv6 address]:port
+        host, bracket, tail = rest[1:].partition("]")
+        if not bracket or (tail and not tail.startswith(":")):
+            raise ValueError(f"malformed Dask address {address!r}")
+        port_text = tail[1:] if tail else None
+    elif rest.count(":") == 1:
+        host, port_text = rest.split(":")
+    else:  # no port, or a bare IPv6 address
+        host, port_text = rest, None
+    port = DASK_PORT
+    if port_text is not None:
+        port = int(port_text) if port_text.isdigit() else -1
+        if not 0 < port < 65536:
+            raise ValueError(f"malformed Dask address {address!r}: the port must be an integer in 1-65535")
+    if not host:
+        raise ValueError(f"malformed Dask address {address!r}: no host (e.g. tcp://scheduler:{DASK_PORT})")
+    return host, port
+
+
+def _receive(sock: socket.socket, size: int, deadline: float) -> tuple[bytes, str]:
+    """Up to ``size`` bytes from ``sock`` and how the reading ended: "complete", "closed" or "timeout"."""
+    data = b""
+    while len(data) < size:
+        left = deadline - time.monotonic()
+        if left <= 0:
+            return data, "timeout"
+        sock.settimeout(left)
+        try:
+            chunk = sock.recv(size - len(data))
+        except TimeoutError:
+            return data, "timeout"
+        except OSError:
+            return data, "closed"
+        if not chunk:
+            return data, "closed"
+        data += chunk
+    return data, "complete"
+
+
+def _is_handshake(message: bytes) -> bool:
+    """Whether ``message`` is framed as distributed frames it: frame count, frame lengths, a msgpack map first."""
+    if len(message) < 16:
+        return False
+    (count,) = struct.unpack_from("Q", message)
+    if not 1 <= count <= 64 or len(message) < 8 * (count + 1):
+        return False
+    lengths = struct.unpack_from(f"{count}Q", message, 8)
+    first = message[8 * (count + 1) :][:1]
+    return 0 < sum(lengths) and first != b"" and (0x80 <= first[0] <= 0x8F or first[0] in (0xDE, 0xDF))
+
+
+def _reason(exc: BaseException) -> str:
+    return " ".join(str(getattr(exc, "strerror", None) or exc or type(exc).__name__).split())
