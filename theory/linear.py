@@ -301,6 +301,9 @@ def _dual_spring_speed():
     return _arguments(with_q=False), _at_force(dual_spring_sound_speed())
 
 
+_CHAIN = "static force and chain parameters (F0, K, n, m, a, K_b)"
+
+
 def _model(model, K_b):
     if model not in MODELS:
         raise ValueError(f"model must be one of {MODELS}, got {model!r}")
@@ -381,10 +384,13 @@ def dispersion(q, *, model, F0, K, n, m, a, K_b=None):
     q = v.as_float("q", q)
     F0, K, n, m = _static_chain(F0, K, n, m)
     a = v.positive("a", a, "m")
-    if model == "power-law":
-        return np.asarray(_power_law_branch(q, F0, K, n, m, a), dtype=float)[..., None]
-    branches = (_acoustic_branch(q, F0, K, n, m, a, K_b), _optical_branch(q, F0, K, n, m, a, K_b))
-    return np.stack(np.broadcast_arrays(*branches), axis=-1).astype(float)
+    with np.errstate(all="ignore"):  # overflow is reported below, by value
+        if model == "power-law":
+            omega = np.asarray(_power_law_branch(q, F0, K, n, m, a), dtype=float)[..., None]
+        else:
+            branches = (_acoustic_branch(q, F0, K, n, m, a, K_b), _optical_branch(q, F0, K, n, m, a, K_b))
+            omega = np.stack(np.broadcast_arrays(*branches), axis=-1).astype(float)
+    return v.finite_result(omega, "omega", _CHAIN)
 
 
 def band_edges(*, model, F0, K, n, m, K_b=None):
@@ -417,12 +423,13 @@ def band_edges(*, model, F0, K, n, m, K_b=None):
     """
     K_b = _model(model, K_b)
     F0, K, n, m = _static_chain(F0, K, n, m)
-    if model == "power-law":
-        top = np.asarray(_power_law_top(F0, K, n, m), dtype=float)
-        nan = np.full_like(top, np.nan)
-        return BandEdges(top, nan, nan.copy())
-    edges = np.broadcast_arrays(*_dual_spring_edges(F0, K, n, m, K_b))
-    return BandEdges(*(np.asarray(e, dtype=float) for e in edges))
+    with np.errstate(all="ignore"):  # overflow is reported below, by value
+        if model == "power-law":
+            top = v.finite_result(np.asarray(_power_law_top(F0, K, n, m), dtype=float), "omega", _CHAIN)
+            nan = np.full_like(top, np.nan)
+            return BandEdges(top, nan, nan.copy())
+        edges = np.broadcast_arrays(*_dual_spring_edges(F0, K, n, m, K_b))
+    return BandEdges(*(v.finite_result(np.asarray(e, dtype=float), "omega", _CHAIN) for e in edges))
 
 
 def sound_speed(*, model, F0, K, n, m, a, K_b=None):
@@ -450,7 +457,9 @@ def sound_speed(*, model, F0, K, n, m, a, K_b=None):
     a = v.positive("a", a, "m")
     if model == "power-law":
         return linear_sound_speed(F0, K, n, a, m)
-    return np.asarray(_dual_spring_speed(F0, K, n, m, a, K_b), dtype=float)
+    with np.errstate(all="ignore"):  # overflow is reported below, by value
+        speed = np.asarray(_dual_spring_speed(F0, K, n, m, a, K_b), dtype=float)
+    return v.finite_result(speed, "the sound speed", _CHAIN)
 
 
 def _ring_index(name, value):
@@ -500,9 +509,15 @@ def linear_travel_time(ring_from, ring_to, *, model, K, n, m, a, K_b=None, m_gra
     if not 0 <= i < j:
         raise ValueError(f"need 0 <= ring_from < ring_to, got ring_from = {i}, ring_to = {j}")
     m_gravity = v.positive("m_gravity", m if m_gravity is None else m_gravity, "kg")
-    weight = m_gravity * v.positive("g", g, "m/s^2")
-    force = np.arange(i + 1, j + 1) * np.asarray(weight)[..., None]
+    g = v.positive("g", g, "m/s^2")
+    with np.errstate(all="ignore"):  # overflow is reported by value
+        force = np.arange(i + 1, j + 1) * np.asarray(m_gravity * g)[..., None]
+    force = v.finite_result(force, "the static force", "masses and gravity")
     expand = [None if value is None else np.asarray(value, dtype=float)[..., None] for value in (K, n, m, a, K_b)]
     K, n, m, a, K_b = expand
     speed = sound_speed(model=model, F0=force, K=K, n=n, m=m, a=a, K_b=K_b)
-    return np.sum(a / speed, axis=-1)
+    with np.errstate(all="ignore"):
+        time = np.sum(a / speed, axis=-1)
+    if np.any(speed == 0):
+        raise ValueError("the sound speed vanishes at an unloaded contact (F0 = 0 with n > 1): no linear travel time")
+    return v.finite_result(time, "the travel time", _CHAIN)

@@ -220,7 +220,9 @@ def series_extension(delta_c, F, K_b):
     delta_c = v.nonnegative("delta_c", delta_c, "m")
     F = v.nonnegative("F", F, "N")
     K_b = v.positive("K_b", K_b, "N/m")
-    return _series_extension(delta_c, F, K_b)
+    with np.errstate(all="ignore"):  # overflow is reported by value
+        delta = _series_extension(delta_c, F, K_b)
+    return v.finite_result(delta, "the extension", "extensions, forces and bending stiffnesses")
 
 
 def local_exponent(F, K_c, K_b):
@@ -376,8 +378,11 @@ def fit_power_law_to_curve(F, delta, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DEFAUL
     """
     F = v.positive("F", F, "N")
     delta = v.positive("delta", delta, "m")
-    if F.ndim != 1 or F.shape != delta.shape or F.size < 2 or np.any(np.diff(F) <= 0):
-        raise ValueError("F and delta must be 1-D arrays of the same length (>= 2), F strictly increasing")
+    if F.ndim != 1 or F.shape != delta.shape or F.size < 2 or np.any(np.diff(F) <= 0) or np.any(np.diff(delta) <= 0):
+        raise ValueError(
+            "F and delta must be 1-D arrays of the same length (>= 2), both strictly increasing (a contact "
+            "extends as it is loaded)"
+        )
     F_min, F_max = float(F_min), float(F_max)
     if not 0 < F_min < F_max:
         raise ValueError(f"the force window needs 0 < F_min < F_max, got [{F_min:g}, {F_max:g}] N")
@@ -390,6 +395,7 @@ def fit_power_law_to_curve(F, delta, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DEFAUL
     log_F = 0.5 * (hi - lo) * nodes + 0.5 * (hi + lo)
     log_delta = np.interp(log_F, np.log(F), np.log(delta))
     K, n = _log_least_squares(log_F, log_delta, weights, n)
+    v.finite_result(K, "the fitted K", "forces and extensions")
     return float(K), float(n)
 
 

@@ -151,9 +151,7 @@ def test_entries_record_what_they_were_generated_from(tmp_path, monkeypatch):
     assert f"# expression sha256: {hashlib.sha256(sp.srepr(x**2).encode()).hexdigest()}" in text
 
 
-@pytest.mark.parametrize(
-    ("umask", "mode"), [(0o022, 0o644), (0o002, 0o664), (0o077, 0o600)], ids=["022", "002", "077"]
-)
+@pytest.mark.parametrize(("umask", "mode"), [(0o022, 0o644), (0o002, 0o664), (0o077, 0o600)], ids=["022", "002", "077"])
 def test_entries_are_created_as_open_would_create_them_under_the_umask(tmp_path, monkeypatch, umask, mode):
     """Group-readable under the usual umasks (a cache shared by a group works); private if the umask says so."""
     monkeypatch.setenv("RINGCHAIN_CACHE_DIR", str(tmp_path / "cache"))

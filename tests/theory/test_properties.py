@@ -17,23 +17,38 @@ from ringchain import theory
 from ringchain.theory import (
     Material,
     Ring,
+    band_edges,
     bending_stiffness,
     contact_ellipse,
+    contact_modulus,
+    contact_patches,
     crossover_force,
+    dispersion,
     fit_power_law,
+    fit_power_law_to_curve,
     get_material,
     hertz_stiffness,
+    impact_amplitude,
+    inextensional_frequency,
     linear_sound_speed,
+    linear_travel_time,
     local_exponent,
     minimum_contact_angle,
     n_per_mm_to_si,
+    ring_frequencies,
     series_displacement,
+    series_extension,
     si_to_n_per_mm,
+    smallest_patch_angle,
+    solitary_wave_energy,
+    solitary_wave_momentum,
     solitary_wave_profile,
     solitary_wave_speed,
     solitary_wave_speed_from_velocity,
     solitary_wave_speed_prestressed,
     solitary_wave_width,
+    sound_speed,
+    torus_gap,
 )
 
 SETTINGS = settings(max_examples=60, deadline=None, derandomize=True)
@@ -73,8 +88,14 @@ def test_every_public_function_is_covered():
         "si_to_n_per_mm", "Ring", "Material", "get_material", "solitary_wave_speed",
         "solitary_wave_speed_from_velocity", "solitary_wave_width", "solitary_wave_profile",
         "solitary_wave_speed_prestressed", "linear_sound_speed",
+        # linear waves, pulse invariants, exact torus gap, curves, ring modes
+        "dispersion", "band_edges", "BandEdges", "sound_speed", "linear_travel_time",
+        "solitary_wave_energy", "solitary_wave_momentum", "impact_amplitude", "contact_modulus",
+        "torus_gap", "contact_patches", "smallest_patch_angle", "series_extension",
+        "fit_power_law_to_curve", "ring_frequencies", "inextensional_frequency",
     }  # fmt: skip
     data = {"paper_data", "DEFAULT_FORCE_WINDOW", "MIN_CHAIN_ASPECT_RATIO", "PAPER_TUBE_RADIUS", "MATERIALS"}
+    data |= {"curved_beam"}  # a module: its public functions are ring_frequencies and inextensional_frequency
     data |= {"STAINLESS_STEEL_304"}
     assert set(theory.__all__) == covered | data
 
@@ -274,3 +295,184 @@ def test_waves_broadcast_or_name_the_arguments(forces, exponents):
         assert "F_m (shape" in str(error) and "n (shape" in str(error)
         return
     assert V.shape == np.broadcast_shapes(F.shape, n.shape) and np.all(np.isfinite(V))
+
+
+# --- linear waves --------------------------------------------------------------------------------
+
+MODELS = st.sampled_from(["power-law", "dual-spring"])
+
+
+def _edges_finite_or_refused(call, model):
+    """band_edges: the power law has no optical band, which it reports as NaN (documented)."""
+    edges = finite_or_refused(lambda: call().acoustic_top) if model == "power-law" else None
+    if model == "power-law":
+        if edges is not None:
+            result = call()
+            assert np.all(np.isnan(result.optical_bottom)) and np.all(np.isnan(result.optical_top))
+        return edges
+    result = finite_or_refused(lambda: tuple(call()))
+    return result
+
+
+@SETTINGS
+@given(MODELS, ANY, ANY, ANY, ANY, ANY, ANY, ANY)
+def test_linear_any_input(model, q, F0, K, n, m, a, K_b):
+    n_law = 1.5 if model == "dual-spring" and np.isfinite(n) else n
+    finite_or_refused(lambda: dispersion(q, model=model, F0=F0, K=K, n=n_law, m=m, a=a, K_b=K_b))
+    _edges_finite_or_refused(lambda: band_edges(model=model, F0=F0, K=K, n=n_law, m=m, K_b=K_b), model)
+    finite_or_refused(lambda: sound_speed(model=model, F0=F0, K=K, n=n_law, m=m, a=a, K_b=K_b))
+    finite_or_refused(lambda: linear_travel_time(0, 3, model=model, K=K, n=n_law, m=m, a=a, K_b=K_b, g=F0))
+
+
+@SETTINGS
+@given(
+    model=MODELS,
+    fraction=st.floats(0.0, 1.0),
+    F0=st.one_of(st.just(0.0), log_uniform(1e-9, 1e9)),
+    K=log_uniform(1e-3, 1e20),
+    n=st.floats(1.0, 3.0),
+    m=log_uniform(1e-9, 1e3),
+    a=log_uniform(1e-6, 1e2),
+    K_b=log_uniform(1e-3, 1e15),
+    rings=st.tuples(st.integers(0, 50), st.integers(1, 50)),
+)
+def test_linear_admissible_range(model, fraction, F0, K, n, m, a, K_b, rings):
+    if model == "dual-spring":
+        n = 1.5
+    else:
+        K_b = None  # the power-law chain has no ring-bending spring (refused if given)
+    q = fraction * np.pi / a
+    omega = finite_or_refused(lambda: dispersion(q, model=model, F0=F0, K=K, n=n, m=m, a=a, K_b=K_b))
+    assert omega is not None and np.all(omega >= 0)
+    assert _edges_finite_or_refused(lambda: band_edges(model=model, F0=F0, K=K, n=n, m=m, K_b=K_b), model) is not None
+    c = finite_or_refused(lambda: sound_speed(model=model, F0=F0, K=K, n=n, m=m, a=a, K_b=K_b))
+    assert c is not None and c >= 0
+    lower, steps = rings
+    t = finite_or_refused(lambda: linear_travel_time(lower, lower + steps, model=model, K=K, n=n, m=m, a=a, K_b=K_b))
+    assert t is not None and t > 0
+
+
+@SETTINGS
+@given(ANY, ANY, ANY, ANY, ANY, ANY)
+def test_pulse_any_input(F_m, K, n, m, a, m_striker):
+    finite_or_refused(lambda: solitary_wave_energy(F_m, K, n, m, a))
+    finite_or_refused(lambda: solitary_wave_momentum(F_m, K, n, m, a))
+    finite_or_refused(lambda: impact_amplitude(F_m, K, n, m, a))
+    finite_or_refused(lambda: impact_amplitude(F_m, K, n, m, a, m_striker=m_striker))
+
+
+@SETTINGS
+@given(
+    F_m=log_uniform(1e-9, 1e9),
+    v0=log_uniform(1e-9, 1e3),
+    K=log_uniform(1e-3, 1e20),
+    n=st.floats(1.0, 3.0, exclude_min=True),
+    m=log_uniform(1e-9, 1e3),
+    a=log_uniform(1e-6, 1e2),
+    striker=log_uniform(1e-3, 1e3),
+)
+def test_pulse_admissible_range(F_m, v0, K, n, m, a, striker):
+    for value in (
+        finite_or_refused(lambda: solitary_wave_energy(F_m, K, n, m, a)),
+        finite_or_refused(lambda: solitary_wave_momentum(F_m, K, n, m, a)),
+        finite_or_refused(lambda: impact_amplitude(v0, K, n, m, a)),
+        finite_or_refused(lambda: impact_amplitude(v0, K, n, m, a, m_striker=striker * m)),
+    ):
+        assert value is None or value >= 0
+
+
+# --- the exact torus gap -------------------------------------------------------------------------
+
+
+@SETTINGS
+@given(ANY, ANY, ANY, ANY, ANY)
+def test_torus_any_input(x, y, R, r, angle):
+    finite_or_refused(lambda: contact_modulus(R, angle))
+    finite_or_refused(lambda: torus_gap(x, y, R, r, angle))
+    finite_or_refused(lambda: contact_patches(R, r, angle))
+    finite_or_refused(lambda: smallest_patch_angle(R, r))
+
+
+@SETTINGS
+@given(
+    r=log_uniform(1e-9, 1e3),
+    aspect=st.one_of(log_uniform(2.0 + 1e-9, 1e6), st.floats(2.0, 2.1, exclude_min=True)),
+    fraction=st.floats(0.0, 1.0),
+    where=st.tuples(st.floats(-1.0, 1.0), st.floats(-1.0, 1.0)),
+    E=log_uniform(1e3, 1e15),
+    nu=st.floats(-0.999, 0.499),
+)
+def test_torus_admissible_range(r, aspect, fraction, where, E, nu):
+    R = aspect * r
+    assert finite_or_refused(lambda: contact_modulus(E, nu)) > 0
+    lowest = finite_or_refused(lambda: smallest_patch_angle(R, r))
+    assert lowest is not None and 0 < lowest < np.pi / 2
+    angle = min(lowest + max(fraction, 1e-9) * (np.pi / 2 - lowest), np.pi / 2)
+    patches = finite_or_refused(lambda: contact_patches(R, r, angle))
+    assert patches is not None
+    # points on the tubes near the contact: a gap, or a ValueError naming the point off the tubes
+    x, y = where[0] * r, where[1] * r
+    finite_or_refused(lambda: torus_gap(x, y, R, r, angle))
+
+
+# --- curves and ring modes --------------------------------------------------------------------------
+
+
+@SETTINGS
+@given(ANY, ANY, ANY, ANY, ANY)
+def test_curves_any_input(delta_c, F, K_b, F_min, n):
+    finite_or_refused(lambda: series_extension(delta_c, F, K_b))
+    finite_or_refused(lambda: fit_power_law_to_curve(np.array([F, 2.0, 3.0]), np.array([delta_c, 1.0, 2.0])))
+    finite_or_refused(
+        lambda: fit_power_law_to_curve(np.geomspace(1.0, 100.0, 5), np.linspace(1.0, 2.0, 5), F_min, F_min * 10, n)
+    )
+
+
+@SETTINGS
+@given(
+    K=log_uniform(1e-3, 1e20),
+    n=st.floats(1.0, 3.0),
+    K_b=log_uniform(1e-3, 1e15),
+    F_min=log_uniform(1e-6, 1e6),
+    decades=st.floats(0.1, 6.0),
+    fixed=st.booleans(),
+)
+def test_curves_admissible_range(K, n, K_b, F_min, decades, fixed):
+    F = np.geomspace(F_min, F_min * 10.0**decades, 12)
+    delta = finite_or_refused(lambda: series_extension((F / K) ** (1 / n), F, K_b))
+    assert delta is not None and np.all(np.diff(delta) > 0)
+    fit = finite_or_refused(lambda: fit_power_law_to_curve(F, delta, F[0], F[-1], n if fixed else None))
+    if fit is not None:
+        assert fit[0] > 0 and 1.0 - 1e-6 <= fit[1] <= n + 1e-6  # n of the series law lies in [1, n]
+
+
+@SETTINGS
+@given(ANY, ANY, ANY, ANY, ANY, st.integers(-2, 12), st.sampled_from(["in-plane", "out-of-plane"]))
+def test_ring_modes_any_input(R, r, E, nu, rho, k, kind):
+    finite_or_refused(lambda: ring_frequencies(R, r, E, nu, rho, k, kind))
+    finite_or_refused(lambda: inextensional_frequency(R, r, E, nu, rho, k, kind))
+
+
+@SETTINGS
+@given(
+    r=log_uniform(1e-9, 1e3),
+    aspect=log_uniform(1.0 + 1e-6, 1e6),
+    E=log_uniform(1e3, 1e15),
+    nu=st.floats(-0.999, 0.499),
+    rho=log_uniform(1e-3, 1e5),
+    k=st.integers(2, 40),
+    kind=st.sampled_from(["in-plane", "out-of-plane"]),
+    options=st.tuples(st.booleans(), st.booleans(), st.booleans(), st.booleans()),
+)
+def test_ring_modes_admissible_range(r, aspect, E, nu, rho, k, kind, options):
+    extension, shear, rotary, thick = options
+    frequencies = finite_or_refused(
+        lambda: ring_frequencies(
+            aspect * r, r, E, nu, rho, k, kind, extension=extension, shear=shear, rotary_inertia=rotary, thick=thick
+        )
+    )
+    classical = finite_or_refused(lambda: inextensional_frequency(aspect * r, r, E, nu, rho, k, kind))
+    if frequencies is not None:
+        assert np.all(frequencies >= 0) and np.all(np.diff(frequencies) >= 0)
+    if classical is not None:
+        assert classical > 0
