@@ -13,7 +13,7 @@ os.environ.setdefault("MPLBACKEND", "Agg")
 # Property tests are derandomized (STYLE.md: seeded randomness only): every run, here and in CI,
 # draws the same examples, so a failure reproduces and a green run stays green.  Tests that set
 # their own hypothesis settings inherit this profile for what they leave out.
-from hypothesis import settings  # noqa: E402
+from hypothesis import settings
 
 settings.register_profile("ringchain", derandomize=True, database=None)
 settings.load_profile("ringchain")
