@@ -31,6 +31,7 @@ from .paper import new_figure as _figure
 
 __all__ = ["main", "build_parser"]
 
+
 # -- ringchain paper -----------------------------------------------------------------------------
 def _paper(args) -> int:
     from .paper import paper_job
@@ -43,8 +44,6 @@ def _paper(args) -> int:
         print(table)
     print(f"Figures written to {Path(args.out).resolve()}/: {', '.join(p.name for p in figures)}")
     return 0
-
-
 
 
 def _paper_checked(args) -> int:

@@ -123,7 +123,7 @@ def check_main_guard(what: str = "this call") -> None:
         return
     raise RuntimeError(
         f"{what} starts worker processes with the 'spawn' method, which imports {Path(path).name} again in "
-        f"each worker; line {line} runs at its top level, outside `if __name__ == \"__main__\":`, so every "
+        f'each worker; line {line} runs at its top level, outside `if __name__ == "__main__":`, so every '
         "worker would start the same work again. Put the code that runs the sweep under "
         "`if __name__ == \"__main__\":` (see the README, 'Sweeps'), or run it in this process with max_workers=0."
     )

@@ -219,6 +219,7 @@ def _noise_level(y) -> float:
     over its quiet start (its first 5 %, before the wave arrives): ringing of the chain
     after the pulse raises the first, a record that starts late the second.
     """
+
     def robust(d):
         return float(1.4826 * np.median(np.abs(d - np.median(d))) / math.sqrt(2.0))
 

@@ -223,7 +223,7 @@ def _traces(args) -> int:
         records = [(t, traces, None) for t, traces in data]
         speeds = impacts
     if len(records) == 1:
-        (t, traces, h), = records
+        ((t, traces, h),) = records
         kwargs = {"drop_height": h} if h is not None else {"impact_velocity": speeds[0]}
         result = fit_traces(t, traces, chain, free=args.free, offsets=not args.no_offsets, **kwargs)
     else:

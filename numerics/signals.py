@@ -141,9 +141,7 @@ def _leading(t, y, threshold=None, baseline=None) -> _Pulse:
     top = float(y.max())
     scale = max(float(np.abs(y).max()), abs(base))
     if not top - base > _NO_PULSE_LEVEL * scale:
-        raise NoPulseError(
-            f"no pulse: the trace never rises above its baseline {base:g} (its maximum is {top:g})"
-        )
+        raise NoPulseError(f"no pulse: the trace never rises above its baseline {base:g} (its maximum is {top:g})")
     if threshold is None:
         level = base + LEADING_PULSE_THRESHOLD * (top - base)
     else:

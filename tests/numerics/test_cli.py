@@ -294,8 +294,11 @@ def test_a_plot_into_an_existing_folder_is_refused_and_no_other_file_is_written(
         ("--out", "missing/run.csv", "argument --out: cannot write {path}: the folder {tmp}/missing does not exist"),
         ("--out", "afile/run.csv", "argument --out: cannot write {path}: the folder {tmp}/afile is not a folder"),
         ("--out", "", "argument --out: the file name is empty"),
-        ("--plot", "plot.xyz", "argument --plot: {path}: its extension .xyz is not an image format; name the file "
-                               "with one of"),
+        (
+            "--plot",
+            "plot.xyz",
+            "argument --plot: {path}: its extension .xyz is not an image format; name the file with one of",
+        ),
         ("--plot", "plot.csv", "its extension .csv is not an image format"),
         ("--plot", "plot", "argument --plot: {path}: it has no extension; name the file with one of"),
         ("--plot", "missing/plot.png", "argument --plot: cannot write {path}: the folder {tmp}/missing does not exist"),
@@ -348,8 +351,10 @@ def test_a_plot_is_written_under_the_name_given_in_the_format_its_extension_name
         (["simulate", "--drop-height", "0.05", "--angle", "0"], "contact angle (deg) must lie in (0, 90], got 0"),
         # An angle that rounds onto the lowest one is printed with the digits that tell them apart.
         # (A chain needs one Hertz contact per pair of rings; `ring` alone goes below with the numerical contact.)
-        (["simulate", "--drop-height", "0.05", "--angle", "38.94244"],
-         "a contact angle of 38.94244 deg is at or below arccos(1 - 2r/R) = 38.942441 deg for R/r = 9"),
+        (
+            ["simulate", "--drop-height", "0.05", "--angle", "38.94244"],
+            "a contact angle of 38.94244 deg is at or below arccos(1 - 2r/R) = 38.942441 deg for R/r = 9",
+        ),
         # The option the user gave, not a quantity derived from it.
         (["simulate", "--drop-height", "0.05", "--R", "0"], "argument --R: R must be positive (in m), got 0"),
         (["simulate", "--drop-height", "0.05", "--r", "-1"], "argument --r: r must be positive (in m), got -1"),
@@ -357,8 +362,10 @@ def test_a_plot_is_written_under_the_name_given_in_the_format_its_extension_name
         (["ring", "--R", "22.5e-3", "--force", "inf"], "argument --force: force must be finite, got inf"),
         (["simulate", "--drop-height", "0.05", "--t-end", "inf"], "argument --t-end: duration must be finite"),
         (["simulate", "--drop-height", "0.05", "--rings", "0"], "argument --rings: rings must be at least 2, got 0"),
-        (["simulate", "--drop-height", "0.05", "--samples", "0"],
-         "argument --samples: n_samples must be at least 3, got 0"),
+        (
+            ["simulate", "--drop-height", "0.05", "--samples", "0"],
+            "argument --samples: n_samples must be at least 3, got 0",
+        ),
         (["simulate", "--drop-height", "0.05", "--m-eff-ratio", "2"], "argument --m-eff-ratio: m_eff/m0 must lie in"),
         (["simulate", "--drop-height", "0.05", "--sensors", "12", "6"], "argument --sensors: the near ring comes"),
         (["simulate", "--drop-height", "0.05", "--method", "bogus"], "argument --method: invalid choice: 'bogus'"),
@@ -368,20 +375,27 @@ def test_a_plot_is_written_under_the_name_given_in_the_format_its_extension_name
         (["simulate", "--drop-height", "0.05", "--R", "7.4999999e-3"], "arguments --R and --r: R/r = 2.99999996 < 3"),
         (["sweep", "--R-over-r", "2.9999999", "--drop-height", "0.01"], "argument --R-over-r: R/r = 2.9999999 < 3"),
         # Impacts far beyond where contact mechanics holds (the solver failed, or returned numbers, exit 0).
-        (["simulate", "--drop-height", "1e300"], "argument --drop-height: a drop of 1e+300 m gives an impact at "
-                                                 "4.43e+150 m/s, which is not below the bar-wave speed"),
+        (
+            ["simulate", "--drop-height", "1e300"],
+            "argument --drop-height: a drop of 1e+300 m gives an impact at "
+            "4.43e+150 m/s, which is not below the bar-wave speed",
+        ),
         (["simulate", "--impact-velocity", "1e10"], "argument --impact-velocity: 1e+10 m/s is not below the bar-wave"),
         (["sweep", "--impact-velocity", "1", "1e4"], "argument --impact-velocity: 10000 m/s is not below"),
         # Worker counts, ranges and grid sizes.
         (["sweep", "--workers", "-1"], "argument --workers: workers must be at least 0, got -1"),
-        (["sweep", "--R-over-r", "6:9:0"], "the count of start:stop:count must be an integer from 1 to 100000, "
-                                           "got '0' in '6:9:0'"),
+        (
+            ["sweep", "--R-over-r", "6:9:0"],
+            "the count of start:stop:count must be an integer from 1 to 100000, got '0' in '6:9:0'",
+        ),
         (["sweep", "--R-over-r", "6:9:2.5"], "the count of start:stop:count must be an integer from 1 to 100000"),
         (["sweep", "--R-over-r", "6:9:1000000000"], "the count of start:stop:count must be an integer from 1"),
         (["sweep", "--drop-height", "0.05:0.05:3"], "argument --drop-height: '0.05:0.05:3' gives 3 equal values"),
         (["sweep", "--R-over-r", "1:0:5"], "argument --R-over-r: R/r must be positive, got 0"),
-        (["sweep", "--R-over-r", "4:9:400", "--angle", "61:90:400"], "the grid has 160000 points (400 x 400); the "
-                                                                     "command line runs at most 100000"),
+        (
+            ["sweep", "--R-over-r", "4:9:400", "--angle", "61:90:400"],
+            "the grid has 160000 points (400 x 400); the command line runs at most 100000",
+        ),
     ],
     ids=lambda value: " ".join(value) if isinstance(value, list) else "",
 )

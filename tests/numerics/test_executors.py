@@ -19,7 +19,9 @@ def run_script(tmp_path, source, name="user_script.py"):
 
 
 def test_a_script_without_the_main_guard_is_told_so_before_any_worker_starts(tmp_path):
-    result = run_script(tmp_path, f"""
+    result = run_script(
+        tmp_path,
+        f"""
         from ringchain.numerics import sweep
         print("top level ran")
 
@@ -27,7 +29,8 @@ def test_a_script_without_the_main_guard_is_told_so_before_any_worker_starts(tmp
             return sweep({GRID}, max_workers=2)
 
         rows = main()
-    """)
+    """,
+    )
     assert result.returncode == 1
     last = result.stderr.strip().splitlines()[-1]
     assert last.startswith("RuntimeError: sweep() starts worker processes with the 'spawn' method")
@@ -39,7 +42,9 @@ def test_a_script_without_the_main_guard_is_told_so_before_any_worker_starts(tmp
 
 @pytest.mark.slow
 def test_a_guarded_script_and_code_without_a_file_run_on_the_pool(tmp_path):
-    guarded = run_script(tmp_path, f"""
+    guarded = run_script(
+        tmp_path,
+        f"""
         from ringchain.numerics import sweep
 
         def main():
@@ -50,7 +55,8 @@ def test_a_guarded_script_and_code_without_a_file_run_on_the_pool(tmp_path):
                 main()
         finally:
             pass
-    """)
+    """,
+    )
     assert guarded.returncode == 0, guarded.stderr
     assert guarded.stdout.split() == ["2", "rows"]
     # python -c: the main module has no file, so spawn imports nothing again and no guard is needed.

@@ -92,12 +92,16 @@ def test_read_traces_accepts_comments_other_columns_and_uneven_sampling(tmp_path
         (lambda lines: [lines[0].replace("t_s", "time"), *lines[1:]], ["missing column", "t_s", "line 1"]),
         (lambda lines: ["t_s,force"] + [",".join(r.split(",")[:2]) for r in lines[1:]], ["sensor_ring<k>_N"]),
         (lambda lines: [*lines[:6], lines[4], *lines[7:]], ["time does not increase", "line 7", "column 1 (t_s)"]),
-        (lambda lines: [*lines[:9], lines[9].rsplit(",", 1)[0] + ",nan", *lines[10:]],
-         ["line 10", "column 3 (sensor_ring12_N)", "not a finite number: 'nan'"]),
+        (
+            lambda lines: [*lines[:9], lines[9].rsplit(",", 1)[0] + ",nan", *lines[10:]],
+            ["line 10", "column 3 (sensor_ring12_N)", "not a finite number: 'nan'"],
+        ),
         (lambda lines: [*lines[:9], lines[9].rsplit(",", 1)[0], *lines[10:]], ["line 10", "column 3", "no value"]),
         (lambda lines: lines[:8], ["7 samples; at least 10"]),
-        (lambda lines: [lines[0]] + [r.rsplit(",", 1)[0] + ",0.25" for r in lines[1:]],
-         ["column 3 (sensor_ring12_N)", "no pulse"]),
+        (
+            lambda lines: [lines[0]] + [r.rsplit(",", 1)[0] + ",0.25" for r in lines[1:]],
+            ["column 3 (sensor_ring12_N)", "no pulse"],
+        ),
     ],
     ids=["missing-time", "no-sensor", "time-backwards", "nan", "short-row", "too-few", "no-pulse"],
 )

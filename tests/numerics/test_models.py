@@ -43,9 +43,7 @@ def test_shapes_that_do_not_broadcast_are_named():
 
 
 @settings(max_examples=50, deadline=None)
-@given(
-    delta=st.floats(-1e-3, 1e-3), rate=st.floats(-10.0, 10.0), n=st.floats(1.0, 2.0), gamma=st.floats(0.0, 100.0)
-)
+@given(delta=st.floats(-1e-3, 1e-3), rate=st.floats(-10.0, 10.0), n=st.floats(1.0, 2.0), gamma=st.floats(0.0, 100.0))
 def test_contact_never_pushes(delta, rate, n, gamma):
     assert power_law_force(delta, rate, K=1e7, n=n, gamma=gamma) >= 0.0
 

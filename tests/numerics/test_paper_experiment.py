@@ -119,7 +119,8 @@ def test_the_papers_own_mix_of_stiffness_is_a_quarter_apart():
     ratio = batch["dual-spring"][0].time_of_flight(NEAR, FAR) / batch["power-law"][0].time_of_flight(NEAR, FAR)
     assert 0.7 < ratio < 0.8  # measured 0.744 (0.337 against 0.453 ms)
     assert paper_experiment(0.05, "dual-spring", stiffness="theory").time_of_flight == pytest.approx(
-        batch["dual-spring"][0].time_of_flight(NEAR, FAR), rel=1e-6)  # the same chain, one run against a batch
+        batch["dual-spring"][0].time_of_flight(NEAR, FAR), rel=1e-6
+    )  # the same chain, one run against a batch
 
 
 @pytest.mark.parametrize(
