@@ -55,6 +55,10 @@ from .models import STANDARD_GRAVITY, Lattice
 
 __all__ = ["Chain", "MODELS", "SUPPORTS", "STIFFNESS_SOURCES"]
 
+#: What each parameter of a :class:`Chain` is given per, when it varies along the chain.
+_PROFILES = {"K": "contact", "n": "contact", "gamma": "contact", "m": "ring", "m_gravity": "ring", "K_b": "ring",
+             "gamma_b": "ring", "a": "pair"}  # fmt: skip
+
 #: The two lattice models of paper Sec. III.B (named once, in :mod:`ringchain.theory.linear`).
 MODELS = linear.MODELS
 
@@ -89,42 +93,69 @@ def _flag(name: str, value) -> bool:
     raise ValueError(f"{name} must be True or False, got {value!r}")
 
 
+def _parameter(name: str, value, length: int, check, unit: str, what: str):
+    """A chain parameter: a float (uniform) or a read-only array of ``length`` values (one per ``what``).
+
+    An array whose values are all equal becomes that float, so that a uniform chain has one
+    representation however it was built (and compares equal to the scalar-built chain).
+    """
+    if np.ndim(value) == 0:
+        return float(check(name, value, unit))
+    array = np.array(check(name, value, unit), dtype=float)
+    if array.shape != (length,):
+        raise ValueError(f"{name} must be one number or {length} values (one per {what}), got shape {array.shape}")
+    if np.ptp(array) == 0:
+        return float(array[0])
+    array.flags.writeable = False
+    return array
+
+
 def _choice(name: str, value: str, options) -> str:
     if value not in options:
         raise ValueError(f"{name} must be one of {options}, got {value!r}")
     return value
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Chain:
     r"""A chain of ``n_rings`` interlocked rings, ring 0 at the impact end.
 
     Build it with :meth:`power_law`, :meth:`dual_spring`, :meth:`from_ring` or
-    :meth:`from_paper`.  The contact law of both models is [K delta^n + gamma delta_dot]_+
-    (:func:`~ringchain.numerics.models.power_law_force`); the dual-spring model uses
-    K = K_c, n = 3/2, gamma = gamma_c and adds the bending spring K_b, gamma_b inside
-    each ring.
+    :meth:`from_paper`; a chain that changes along its length with :meth:`from_rings`,
+    :meth:`graded`, :meth:`alternating` or :meth:`joined`.  The contact law of both models
+    is [K delta^n + gamma delta_dot]_+ (:func:`~ringchain.numerics.models.power_law_force`);
+    the dual-spring model uses K = K_c, n = 3/2, gamma = gamma_c and adds the bending
+    spring K_b, gamma_b inside each ring.
+
+    Every parameter is one number (a uniform chain) or an array along the chain: per ring
+    (``m``, ``m_gravity``, ``K_b``, ``gamma_b``: ``n_rings`` values, ring 0 at the impact
+    end), per contact (``K``, ``n``, ``gamma``: :attr:`n_contacts` values, contact i
+    between ring i and ring i+1, the last one the support's contact when the support is
+    fixed) or per pair of neighbours (``a``: ``n_rings - 1`` values).  An array of equal
+    values is stored as its number, so a uniform chain is the same object however it was
+    built; the uniform chain is the case of the arrays with one value, run by the same code.
 
     Attributes
     ----------
     model : {"power-law", "dual-spring"}
     n_rings : int
-    K : float
-        Contact stiffness, N/m^n.
-    n : float
-        Contact exponent.
-    m : float
-        Inertial mass of a ring (the paper's m_eff), kg.
-    a : float
-        Distance between the centres of adjacent rings, m (a = 2(R - r)).
-    gamma : float
-        Contact dashpot, N s/m.
-    K_b : float or None
-        Bending stiffness, N/m (dual-spring only).
-    gamma_b : float
-        Bending dashpot, N s/m (dual-spring only).
-    m_gravity : float
-        Mass of a ring that gravity acts on, kg (default ``m``); see the module notes.
+    K : float or ndarray
+        Contact stiffness, N/m^n (per contact).
+    n : float or ndarray
+        Contact exponent (per contact).
+    m : float or ndarray
+        Inertial mass of a ring (the paper's m_eff), kg (per ring).
+    a : float or ndarray
+        Distance between the centres of adjacent rings, m (a = 2(R - r); for unequal
+        rings (R1 - r1) + (R2 - r2); per pair of neighbours).
+    gamma : float or ndarray
+        Contact dashpot, N s/m (per contact).
+    K_b : float, ndarray or None
+        Bending stiffness, N/m (dual-spring only; per ring).
+    gamma_b : float or ndarray
+        Bending dashpot, N s/m (dual-spring only; per ring).
+    m_gravity : float or ndarray
+        Mass of a ring that gravity acts on, kg (default ``m``; per ring); see the module notes.
     support : {"fixed", "free"}
         "fixed": the top ring (the far end) hangs from a fixed support through one more
         contact of the chain's contact law; "free": the far end is free.
@@ -147,24 +178,42 @@ class Chain:
         _choice("support", self.support, SUPPORTS)
         set_ = functools.partial(object.__setattr__, self)
         set_("n_rings", _count("n_rings", self.n_rings, 2))
-        set_("K", float(v.positive("K", self.K, "N/m^n")))
-        set_("n", float(v.in_range("n", self.n, 1.0, np.inf, closed_low=True, closed_high=False)))
-        set_("m", float(v.positive("m", self.m, "kg")))
-        set_("a", float(v.positive("a", self.a, "m")))
-        set_("gamma", float(v.nonnegative("gamma", self.gamma, "N s/m")))
-        set_("m_gravity", self.m if self.m_gravity is None else float(v.positive("m_gravity", self.m_gravity, "kg")))
+        rings, contacts, pairs = self.n_rings, self.n_contacts, self.n_rings - 1
+        exponent = functools.partial(v.in_range, low=1.0, high=np.inf, closed_low=True, closed_high=False)
+        set_("K", _parameter("K", self.K, contacts, v.positive, "N/m^n", "contact"))
+        set_("n", _parameter("n", self.n, contacts, lambda name, value, unit: exponent(name, value), "", "contact"))
+        set_("m", _parameter("m", self.m, rings, v.positive, "kg", "ring"))
+        set_("a", _parameter("a", self.a, pairs, v.positive, "m", "pair of neighbouring rings"))
+        set_("gamma", _parameter("gamma", self.gamma, contacts, v.nonnegative, "N s/m", "contact"))
+        m_gravity = self.m if self.m_gravity is None else self.m_gravity
+        set_("m_gravity", _parameter("m_gravity", m_gravity, rings, v.positive, "kg", "ring"))
         if self.model == "dual-spring":
-            if self.n != 1.5:
+            if np.any(np.asarray(self.n) != 1.5):
                 raise ValueError(
-                    f"the dual-spring model's contact is Hertz contact, n = 3/2 (Eq. 1); got n = {self.n:g} "
+                    f"the dual-spring model's contact is Hertz contact, n = 3/2 (Eq. 1); got n = {v.show(self.n)} "
                     "(a fitted exponent belongs to the power-law model)"
                 )
             if self.K_b is None:
                 raise ValueError("the dual-spring model needs the bending stiffness K_b")
-            set_("K_b", float(v.positive("K_b", self.K_b, "N/m")))
-            set_("gamma_b", float(v.nonnegative("gamma_b", self.gamma_b, "N s/m")))
-        elif self.K_b is not None or self.gamma_b:
+            set_("K_b", _parameter("K_b", self.K_b, rings, v.positive, "N/m", "ring"))
+            set_("gamma_b", _parameter("gamma_b", self.gamma_b, rings, v.nonnegative, "N s/m", "ring"))
+        elif self.K_b is not None or np.any(self.gamma_b):
             raise ValueError("K_b and gamma_b belong to the dual-spring model, not the power-law one")
+
+    def _key(self) -> tuple:
+        return tuple(
+            (value.shape, value.tobytes()) if isinstance(value, np.ndarray) else value
+            for value in (self.model, self.n_rings, self.K, self.n, self.m, self.a, self.gamma, self.K_b,
+                          self.gamma_b, self.m_gravity, self.support)
+        )  # fmt: skip
+
+    def __eq__(self, other):
+        if not isinstance(other, Chain):
+            return NotImplemented
+        return self._key() == other._key()
+
+    def __hash__(self):
+        return hash(self._key())
 
     # -- constructors ------------------------------------------------------------------
     @classmethod
@@ -375,8 +424,37 @@ class Chain:
         return self.n_rings * self.sites_per_ring
 
     @property
+    def n_contacts(self) -> int:
+        """Contacts of the chain: n_rings - 1 between rings, and one more with a fixed support."""
+        return self.n_rings - 1 + (self.support == "fixed")
+
+    @property
+    def uniform(self) -> bool:
+        """Whether every parameter is one number (the chain does not change along its length)."""
+        return not any(isinstance(getattr(self, name), np.ndarray) for name in _PROFILES)
+
+    def profile(self, name: str) -> np.ndarray:
+        """Parameter ``name`` as an array along the chain, whether stored as one number or not.
+
+        Per ring for m, m_gravity, K_b, gamma_b; per contact for K, n, gamma (the support's
+        last when fixed); per pair of neighbours for a.  Units as the attribute's.
+
+        Examples
+        --------
+        >>> Chain.power_law(3, K=1e6, n=1.5, m=0.01, a=0.04).profile("K").tolist()  # two contacts and the support
+        [1000000.0, 1000000.0, 1000000.0]
+        """
+        if name not in _PROFILES:
+            raise ValueError(f"name must be one of {tuple(_PROFILES)}, got {name!r}")
+        value = getattr(self, name)
+        if value is None:
+            raise ValueError(f"the {self.model} chain has no {name}")
+        length = {"ring": self.n_rings, "contact": self.n_contacts, "pair": self.n_rings - 1}[_PROFILES[name]]
+        return np.broadcast_to(np.asarray(value, dtype=float), (length,))
+
+    @property
     def damped(self) -> bool:
-        return self.gamma > 0 or self.gamma_b > 0
+        return bool(np.any(self.gamma > 0) or np.any(self.gamma_b > 0))
 
     @property
     def contact_bonds(self) -> np.ndarray:
@@ -393,24 +471,42 @@ class Chain:
         """Lattice bond index of the contact with the fixed support, or None if free."""
         return self.n_sites - 1 if self.support == "fixed" else None
 
+    @property
+    def _contact_bond_indices(self) -> np.ndarray:
+        """Lattice bond of each contact (the support's last when fixed): per-contact arrays go there."""
+        bonds = self.contact_bonds
+        return np.append(bonds, self.support_bond) if self.support == "fixed" else bonds
+
     @functools.cached_property
     def lattice(self) -> Lattice:
         """The sites and bonds integrated by the solver."""
         k = self.sites_per_ring
         n_bonds = self.n_sites if self.support == "fixed" else self.n_sites - 1
         contact = np.zeros(n_bonds, dtype=bool)
-        contact[self.contact_bonds] = True
-        if self.support == "fixed":
-            contact[-1] = True
+        contact[self._contact_bond_indices] = True
         spring = ~contact
+
+        def on(bonds, value):
+            """Per-bond array: ``value`` (a number or one per bond of ``bonds``) on those bonds, 0 elsewhere."""
+            if np.ndim(value) == 0:
+                return np.where(bonds, value, 0.0)
+            out = np.zeros(n_bonds)
+            out[bonds] = value
+            return out
+
+        def per_site(value):
+            return np.full(self.n_sites, value / k) if np.ndim(value) == 0 else np.repeat(value / k, k)
+
+        # A spring bond has no contact force (K_contact = 0); its exponent is a placeholder 1.
+        n = self.n if np.ndim(self.n) == 0 else on(contact, self.n) + spring
         return Lattice(
-            mass=np.full(self.n_sites, self.m / k),
-            weight_mass=np.full(self.n_sites, self.m_gravity / k),
-            K_contact=np.where(contact, self.K, 0.0),
-            n=self.n,
-            K_spring=np.where(spring, self.K_b or 0.0, 0.0),
-            gamma_contact=np.where(contact, self.gamma, 0.0),
-            gamma_spring=np.where(spring, self.gamma_b, 0.0),
+            mass=per_site(self.m),
+            weight_mass=per_site(self.m_gravity),
+            K_contact=on(contact, self.K),
+            n=n,
+            K_spring=on(spring, 0.0 if self.K_b is None else self.K_b),
+            gamma_contact=on(contact, self.gamma),
+            gamma_spring=on(spring, self.gamma_b),
         )
 
     def ring_sites(self, i) -> np.ndarray:
@@ -442,9 +538,12 @@ class Chain:
             weights = weights.copy()
             weights[: self.sites_per_ring] = 0.0
         tension = np.cumsum(weights)[: self.lattice.n_bonds]
-        e = (tension / self.K) ** (1.0 / self.n)
-        if self.model == "dual-spring":
-            e[0::2] = tension[0::2] / self.K_b
+        if self.model == "power-law":  # every bond a contact: K and n per bond
+            return (tension / self.K) ** (1.0 / self.n)
+        e = np.empty_like(tension)
+        contacts = self._contact_bond_indices
+        e[contacts] = (tension[contacts] / self.K) ** (1.0 / self.n)
+        e[0::2] = tension[0::2] / self.K_b
         return e
 
     def displacement_from_extension(self, e) -> np.ndarray:
