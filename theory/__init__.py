@@ -7,6 +7,7 @@ see :mod:`ringchain.theory._codegen`).
 Static theory of one contact (paper Sec. II, Eqs. 1-4, App. A):
 
 - :func:`hertz_stiffness` -- K_c of two tori, circular or elliptical contact (Eq. 1);
+- :func:`hertz_stiffness_pair` -- K_c of two different tori (radii, materials), for chains that vary;
 - :func:`torus_gap`, :func:`contact_patches` -- the exact gap of two tori beyond its quadratic
   (Hertz) part, and the two contact points it has below theta_min (:mod:`.contact`, Sec. 4);
 - :func:`bending_stiffness` -- K_b of one ring by Castigliano (Eq. 2);
@@ -45,6 +46,7 @@ from .contact import (
     contact_modulus,
     contact_patches,
     hertz_stiffness,
+    hertz_stiffness_pair,
     minimum_contact_angle,
     smallest_patch_angle,
     torus_gap,
@@ -78,6 +80,7 @@ from .solitary import (
 __all__ = [
     "paper_data",
     "hertz_stiffness",
+    "hertz_stiffness_pair",
     "contact_ellipse",
     "minimum_contact_angle",
     "contact_patches",

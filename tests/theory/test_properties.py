@@ -76,6 +76,7 @@ def test_every_public_function_is_covered():
     }  # fmt: skip
     data = {"paper_data", "DEFAULT_FORCE_WINDOW", "MIN_CHAIN_ASPECT_RATIO", "PAPER_TUBE_RADIUS", "MATERIALS"}
     data |= {"STAINLESS_STEEL_304"}
+    covered |= HETERO_COVERED  # issue 13: the block at the end of this file
     assert set(theory.__all__) == covered | data
 
 
@@ -274,3 +275,36 @@ def test_waves_broadcast_or_name_the_arguments(forces, exponents):
         assert "F_m (shape" in str(error) and "n (shape" in str(error)
         return
     assert V.shape == np.broadcast_shapes(F.shape, n.shape) and np.all(np.isfinite(V))
+
+
+# --- issue 13: chains that change along their length (hertz_stiffness_pair, junction theory) ------------
+# Kept in one block so that it merges beside the other additions to this file.
+
+HETERO_COVERED = {"hertz_stiffness_pair"}
+
+
+@SETTINGS
+@given(ANY, ANY, ANY, ANY, ANY, ANY, ANY, ANY, ANY)
+def test_hertz_pair_any_input(R1, r1, E1, nu1, R2, r2, E2, nu2, angle):
+    finite_or_refused(lambda: theory.hertz_stiffness_pair(R1, r1, E1, nu1, R2, r2, E2, nu2, angle))
+
+
+@SETTINGS
+@given(
+    r1=log_uniform(1e-9, 1e3),
+    aspect1=log_uniform(2.0 + 1e-9, 1e6),
+    r_ratio=log_uniform(1e-3, 1e3),
+    aspect2=log_uniform(2.0 + 1e-9, 1e6),
+    E1=log_uniform(1e3, 1e15),
+    E2=log_uniform(1e3, 1e15),
+    nu1=st.floats(-0.999, 0.499),
+    nu2=st.floats(-0.999, 0.499),
+    fraction=st.one_of(st.floats(0.0, 1.0), log_uniform(1e-17, 1e-3)),
+)
+def test_hertz_pair_admissible_range(r1, aspect1, r_ratio, aspect2, E1, E2, nu1, nu2, fraction):
+    r2 = r1 * r_ratio
+    R1, R2 = aspect1 * r1, aspect2 * r2
+    angle = np.pi / 2 - fraction * np.pi / 4
+    K = finite_or_refused(lambda: theory.hertz_stiffness_pair(R1, r1, E1, nu1, R2, r2, E2, nu2, angle))
+    if K is not None:
+        assert K > 0
