@@ -48,12 +48,12 @@ import numbers
 from dataclasses import dataclass
 
 import numpy as np
-from ringchain.theory import Ring, linear, n_per_mm_to_si, paper_data
+from ringchain.theory import Ring, fit_power_law, hertz_stiffness_pair, linear, n_per_mm_to_si, paper_data
 from ringchain.theory import _validate as v
 
 from .models import STANDARD_GRAVITY, Lattice
 
-__all__ = ["Chain", "MODELS", "SUPPORTS", "STIFFNESS_SOURCES"]
+__all__ = ["Chain", "MODELS", "SUPPORTS", "STIFFNESS_SOURCES", "GRADING_PROFILES"]
 
 #: What each parameter of a :class:`Chain` is given per, when it varies along the chain.
 _PROFILES = {"K": "contact", "n": "contact", "gamma": "contact", "m": "ring", "m_gravity": "ring", "K_b": "ring",
@@ -64,6 +64,9 @@ MODELS = linear.MODELS
 
 #: Boundary at the far end from the impact: hanging from a fixed support, or free.
 SUPPORTS = ("fixed", "free")
+
+#: How :meth:`Chain.graded` spaces the values between its two ends.
+GRADING_PROFILES = ("linear", "geometric")
 
 #: Sources of the stiffness of :meth:`Chain.from_paper`: the paper's measured power law
 #: (Table I) or the ring's theory (Eqs. 1-4).
@@ -108,6 +111,20 @@ def _parameter(name: str, value, length: int, check, unit: str, what: str):
         return float(array[0])
     array.flags.writeable = False
     return array
+
+
+def _per_distinct(evaluate, keys, what: str) -> np.ndarray:
+    """``evaluate(*key)`` for each key, once per distinct key (scalar calls: a uniform chain gets
+    its single ring's numbers exactly); an error names the first ``what`` (formatted with i, j)."""
+    values, results = {}, []
+    for i, key in enumerate(keys):
+        if key not in values:
+            try:
+                values[key] = evaluate(*key)
+            except ValueError as error:
+                raise ValueError(f"{what.format(i=i, j=i + 1)}: {error}") from None
+        results.append(values[key])
+    return np.array(results, dtype=float)
 
 
 def _choice(name: str, value: str, options) -> str:
@@ -403,6 +420,229 @@ class Chain:
         K_c, K_b = series_stiffness_for_power_law(K_si, n)
         m0 = ring.mass
         return cls.dual_spring(n_rings, K_c, K_b, ratio * m0, ring.spacing, m_gravity=m0, **dashpots)
+
+    @classmethod
+    def from_rings(
+        cls,
+        rings,
+        angles=None,
+        model: str = "dual-spring",
+        *,
+        m_eff_ratio: float = 1.0,
+        gamma: float = 0.0,
+        gamma_c: float = 0.0,
+        gamma_b: float = 0.0,
+        support: str = "fixed",
+    ) -> Chain:
+        """A chain of given rings, ring 0 at the impact end: each contact from the two rings it joins.
+
+        Parameters
+        ----------
+        rings : sequence of Ring
+            The rings in order along the chain (at least two), each able to form a chain (R/r >= 3).
+        angles : float or array_like, optional
+            Contact angle of each contact, rad: one number, or :attr:`n_contacts` values (the
+            last the support's contact when fixed).  Default: each ring's own ``angle``,
+            read as the angle it makes with the ring above it (the top ring's for the support).
+        model : {"dual-spring", "power-law"}
+            Dual-spring: each contact's K_c from its two rings
+            (:func:`~ringchain.theory.hertz_stiffness_pair`, Eq. 1 for equal rings), each
+            ring's K_b from its own geometry (Eq. 2).  Power-law: each contact's K and n
+            fitted to the series law of that contact and the ring below it (Eq. 4).
+        m_eff_ratio : float, optional
+            Inertial mass over ring mass, m_eff/m0 in (0, 1]; gravity acts on m0.
+        gamma : float or array_like, optional
+            Power-law contact dashpots, N s/m.
+        gamma_c, gamma_b : float or array_like, optional
+            Dual-spring contact and bending dashpots, N s/m.
+        support : {"fixed", "free"}, optional
+            The support's contact is that of the top ring with a ring like itself.
+
+        Notes
+        -----
+        The centre distance of two interlocked rings is (R1 - r1) + (R2 - r2), 2(R - r) for
+        equal rings.  Rings that are all the same give exactly :meth:`from_ring`'s chain.
+
+        Examples
+        --------
+        >>> big, small = Ring.from_aspect_ratio(9.0), Ring.from_aspect_ratio(6.0)
+        >>> chain = Chain.from_rings([big, big, small, small])
+        >>> (chain.a * 1e3).round(2).tolist()  # mm: 2(R - r), then (R1 - r1) + (R2 - r2)
+        [40.0, 32.5, 25.0]
+        """
+        rings = list(rings) if not isinstance(rings, Ring) else [rings]
+        if len(rings) < 2:
+            raise ValueError(f"rings must hold at least two rings, got {len(rings)}")
+        for i, ring in enumerate(rings):
+            if not isinstance(ring, Ring):
+                raise TypeError(f"rings[{i}] must be a ringchain.theory.Ring, got {type(ring).__name__}")
+            try:
+                ring.check_chain()
+            except ValueError as error:
+                raise ValueError(f"rings[{i}]: {error}") from None
+        _choice("model", model, MODELS)
+        _choice("support", support, SUPPORTS)
+        ratio = float(v.in_range("m_eff_ratio", m_eff_ratio, 0.0, 1.0))
+        n_rings = len(rings)
+        pairs = [(rings[i], rings[i + 1]) for i in range(n_rings - 1)]
+        if support == "fixed":
+            pairs.append((rings[-1], rings[-1]))
+        if angles is None:
+            angles = [below.angle for below, _ in pairs]
+        angles = v.in_range("angles", angles, 0.0, np.pi / 2)
+        if angles.ndim > 1 or angles.size not in (1, len(pairs)):
+            raise ValueError(f"angles must be one angle or {len(pairs)} (one per contact), got shape {angles.shape}")
+        angles = np.broadcast_to(angles, (len(pairs),))
+        # One evaluation per distinct contact (a uniform chain's numbers are then the ring's own).
+        K_c = _per_distinct(
+            lambda below, above, angle: float(hertz_stiffness_pair(
+                below.R, below.r, below.material.E, below.material.nu,
+                above.R, above.r, above.material.E, above.material.nu, angle)),
+            [(below, above, float(angle)) for (below, above), angle in zip(pairs, angles, strict=True)],
+            "contact of rings {i} and {j}",
+        )  # fmt: skip
+        K_b = _per_distinct(lambda ring: ring.K_b, [(ring,) for ring in rings], "ring {i}")
+        m0 = np.array([ring.mass for ring in rings])
+        a = np.array([(below.R - below.r) + (above.R - above.r) for below, above in pairs[: n_rings - 1]])
+        if model == "dual-spring":
+            if gamma is not None and np.any(gamma):
+                raise ValueError("gamma belongs to the power-law model; use gamma_c and gamma_b")
+            return cls.dual_spring(n_rings, K_c, K_b[:n_rings], ratio * m0, a, gamma_c, gamma_b, m0, support=support)
+        if np.any(gamma_c) or np.any(gamma_b):
+            raise ValueError("gamma_c and gamma_b belong to the dual-spring model; use gamma")
+        # Each period of the chain is a contact in series with the body of the ring below it (Eq. 3).
+        below_K_b = np.append(K_b, K_b[-1])[: len(pairs)]
+        fits = _per_distinct(lambda kc, kb: tuple(float(x) for x in fit_power_law(kc, kb)),
+                             list(zip(K_c.tolist(), below_K_b.tolist(), strict=True)), "contact {i}")  # fmt: skip
+        return cls.power_law(n_rings, fits[:, 0], fits[:, 1], ratio * m0, a, gamma, m0, support=support)
+
+    @classmethod
+    def graded(
+        cls,
+        ring: Ring,
+        n_rings: int,
+        *,
+        aspect_ratio=None,
+        angle=None,
+        profile: str = "linear",
+        model: str = "dual-spring",
+        **options,
+    ) -> Chain:
+        """A chain whose R/r or contact angle changes steadily from the impact end to the far end.
+
+        Parameters
+        ----------
+        ring : Ring
+            The ring the others are made from: its tube radius r, material and (unless graded)
+            angle.
+        n_rings : int
+        aspect_ratio : (float, float), optional
+            R/r of ring 0 and of the last ring; R = aspect_ratio * r.
+        angle : (float, float), optional
+            Contact angle of the first and of the last contact, rad.
+        profile : {"linear", "geometric"}, optional
+            Values spaced evenly ("linear") or by a constant ratio ("geometric").
+        model : {"dual-spring", "power-law"}
+        **options
+            Passed to :meth:`from_rings` (``m_eff_ratio``, dashpots, ``support``).
+
+        Examples
+        --------
+        >>> chain = Chain.graded(Ring.from_aspect_ratio(9.0), 5, aspect_ratio=(9.0, 5.0))
+        >>> bool(np.all(np.diff(chain.K_b) > 0))  # fatter rings bend less
+        True
+        """
+        if not isinstance(ring, Ring):
+            raise TypeError(f"ring must be a ringchain.theory.Ring, got {type(ring).__name__}")
+        n_rings = _count("n_rings", n_rings, 2)
+        _choice("profile", profile, GRADING_PROFILES)
+        if (aspect_ratio is None) == (angle is None):
+            raise ValueError("give one of aspect_ratio=(first, last) or angle=(first, last) to grade")
+        name, ends = ("aspect_ratio", aspect_ratio) if angle is None else ("angle", angle)
+        ends = v.positive(name, ends)
+        if ends.shape != (2,):
+            raise ValueError(f"{name} must be two values (first, last), got {ends.tolist()!r}")
+        count = n_rings if name == "aspect_ratio" else n_rings - 1 + (options.get("support", "fixed") == "fixed")
+        spaced = np.linspace if profile == "linear" else np.geomspace
+        values = spaced(ends[0], ends[1], count)
+        if name == "aspect_ratio":
+            rings = [Ring(R=float(q) * ring.r, r=ring.r, material=ring.material, angle=ring.angle, thin=ring.thin)
+                     for q in values]  # fmt: skip
+            return cls.from_rings(rings, model=model, **options)
+        return cls.from_rings([ring] * n_rings, angles=values, model=model, **options)
+
+    @classmethod
+    def alternating(cls, ring_a: Ring, ring_b: Ring, n_rings: int, angles=None, model="dual-spring", **options):
+        """A chain of two kinds of ring in turn, ``ring_a`` at the impact end.
+
+        Parameters
+        ----------
+        ring_a, ring_b : Ring
+        n_rings : int
+        angles : float or array_like, optional
+            As in :meth:`from_rings`; e.g. ``[pi/2, pi/3] * k`` for alternating angles.
+        model : {"dual-spring", "power-law"}
+        **options
+            Passed to :meth:`from_rings`.
+
+        Examples
+        --------
+        >>> chain = Chain.alternating(Ring.from_aspect_ratio(9.0), Ring.from_aspect_ratio(5.5), 6)
+        >>> len(set(np.round(chain.m, 6)))  # two ring masses
+        2
+        """
+        n_rings = _count("n_rings", n_rings, 2)
+        return cls.from_rings([ring_a, ring_b] * (n_rings // 2) + [ring_a] * (n_rings % 2), angles, model, **options)
+
+    @classmethod
+    def joined(cls, chain_a: Chain, chain_b: Chain, *, junction=None) -> Chain:
+        """``chain_a`` (at the impact end) hung from ``chain_b``: one chain of both chains' rings.
+
+        Parameters
+        ----------
+        chain_a, chain_b : Chain
+            Chains of the same model.  The joined chain takes ``chain_b``'s support.
+        junction : dict, optional
+            The contact between the last ring of ``chain_a`` and the first of ``chain_b``: K (and
+            for the power-law model n), gamma and the centre distance a, SI units.  Default:
+            ``chain_a``'s support contact (its last contact if its far end is free), as if
+            ``chain_a`` hung from ``chain_b`` as from its support, and a the mean of the two
+            chains' spacings at the junction ((R1 - r1) + (R2 - r2) for chains of rings).
+
+        Examples
+        --------
+        >>> stiff = Chain.power_law(4, K=2e7, n=1.5, m=0.01, a=0.04)
+        >>> soft = Chain.power_law(4, K=2e6, n=1.5, m=0.01, a=0.04)
+        >>> Chain.joined(stiff, soft).K.tolist()  # contacts: 3 of a, the junction, 3 of b, b's support
+        [20000000.0, 20000000.0, 20000000.0, 20000000.0, 2000000.0, 2000000.0, 2000000.0, 2000000.0]
+        """
+        for name, chain in (("chain_a", chain_a), ("chain_b", chain_b)):
+            if not isinstance(chain, Chain):
+                raise TypeError(f"{name} must be a Chain, got {type(chain).__name__}")
+        if chain_a.model != chain_b.model:
+            raise ValueError(f"both chains must be of one model, got {chain_a.model!r} and {chain_b.model!r}")
+        junction = dict(junction or {})
+        unknown = set(junction) - {"K", "n", "gamma", "a"}
+        if unknown:
+            raise ValueError(f"junction takes K, n, gamma and a, got {sorted(unknown)}")
+        joint = {name: float(chain_a.profile(name)[-1]) for name in ("K", "n", "gamma")}
+        joint["a"] = 0.5 * (float(chain_a.profile("a")[-1]) + float(chain_b.profile("a")[0]))
+        joint |= {name: float(value) for name, value in junction.items()}
+
+        def contacts(name):
+            a_part = chain_a.profile(name)[: chain_a.n_rings - 1]
+            return np.concatenate([a_part, [joint[name]], chain_b.profile(name)])
+
+        def per_ring(name):
+            return np.concatenate([chain_a.profile(name), chain_b.profile(name)])
+
+        dual = chain_a.model == "dual-spring"
+        return cls(
+            chain_a.model, chain_a.n_rings + chain_b.n_rings, contacts("K"), contacts("n"), per_ring("m"),
+            np.concatenate([chain_a.profile("a"), [joint["a"]], chain_b.profile("a")]), gamma=contacts("gamma"),
+            K_b=per_ring("K_b") if dual else None, gamma_b=per_ring("gamma_b") if dual else 0.0,
+            m_gravity=per_ring("m_gravity"), support=chain_b.support,
+        )  # fmt: skip
 
     # -- derived quantities -----------------------------------------------------------------
     @property

@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 from ringchain.numerics import Chain, initial_state, simulate, simulate_batch
 from ringchain.numerics.models import STANDARD_GRAVITY as G
+from ringchain.theory import Ring, fit_power_law, hertz_stiffness_pair
 
 RNG_SEED = 13
 
@@ -142,3 +143,80 @@ def test_wave_speed_of_a_varying_chain_uses_the_real_distance():
     sim = simulate(chain, 2e-3, drop_height=0.05, n_samples=4001)
     distance = float(np.sum(chain.a[1:5]))
     assert sim.wave_speed(1, 5) == pytest.approx(distance / sim.time_of_flight(1, 5), rel=1e-12)
+
+
+# -- chains of given rings ---------------------------------------------------------------------------
+
+NINE, SIX = Ring.from_aspect_ratio(9.0), Ring.from_aspect_ratio(6.0)
+
+
+@pytest.mark.parametrize("support", ["fixed", "free"])
+@pytest.mark.parametrize("model", ["dual-spring", "power-law"])
+def test_a_uniform_chain_built_ring_by_ring_is_exactly_the_uniform_chain(model, support):
+    built = Chain.from_rings([NINE] * 6, model=model, m_eff_ratio=0.37, support=support)
+    assert built == Chain.from_ring(NINE, 6, model, m_eff_ratio=0.37, support=support)
+    assert built.uniform
+
+
+def test_each_contact_from_the_two_rings_it_joins():
+    chain = Chain.from_rings([NINE, NINE, SIX, SIX], angles=[np.pi / 2, 1.2, np.pi / 2, 1.3])
+    steel = (NINE.material.E, NINE.material.nu)
+    assert chain.K[1] == hertz_stiffness_pair(NINE.R, NINE.r, *steel, SIX.R, SIX.r, *steel, 1.2)
+    assert chain.K[0] == NINE.K_c and chain.K[2] == SIX.K_c
+    assert chain.K[3] == Ring.from_aspect_ratio(6.0, angle=1.3).K_c  # the support: the top ring's like
+    assert chain.K_b.tolist() == [NINE.K_b, NINE.K_b, SIX.K_b, SIX.K_b]
+    # Centre distances: 2(R - r) between equal rings, (R1 - r1) + (R2 - r2) at the change.
+    np.testing.assert_array_equal(chain.a, [NINE.spacing, (NINE.R - NINE.r) + (SIX.R - SIX.r), SIX.spacing])
+    assert chain.m_gravity.tolist() == [NINE.mass, NINE.mass, SIX.mass, SIX.mass]
+
+
+def test_power_law_contacts_fit_the_series_law_of_contact_and_ring_below():
+    chain = Chain.from_rings([NINE, SIX, SIX], model="power-law", support="free")
+    steel = (NINE.material.E, NINE.material.nu)
+    K, n = fit_power_law(hertz_stiffness_pair(NINE.R, NINE.r, *steel, SIX.R, SIX.r, *steel), NINE.K_b)
+    assert (chain.K[0], chain.n[0]) == (float(K), float(n))
+    assert (chain.K[1], chain.n[1]) == SIX.power_law()
+
+
+@pytest.mark.parametrize("profile", ["linear", "geometric"])
+def test_graded_chains_space_their_values_as_asked(profile):
+    chain = Chain.graded(NINE, 6, aspect_ratio=(9.0, 5.0), profile=profile)
+    R = (chain.m_gravity / NINE.mass) * NINE.R  # ring mass grows with R at fixed r (Pappus)
+    expected = np.linspace(9.0, 5.0, 6) if profile == "linear" else np.geomspace(9.0, 5.0, 6)
+    np.testing.assert_allclose(R / NINE.r, expected, rtol=1e-14)  # rounding of mass ratios
+    angled = Chain.graded(NINE, 6, angle=(np.pi / 2, 1.0), profile=profile, support="free")
+    assert angled.K[0] == NINE.K_c and np.all(np.diff(angled.K) > 0)  # flatter contacts are stiffer (Gamma > 1)
+
+
+def test_alternating_and_joined_chains():
+    alternating = Chain.alternating(NINE, SIX, 5, angles=[np.pi / 2, 1.2] * 2 + [np.pi / 2])
+    assert alternating.K_b.tolist() == [NINE.K_b, SIX.K_b] * 2 + [NINE.K_b]
+    a, b = Chain.from_ring(NINE, 4), Chain.from_ring(SIX, 3, support="free")
+    joined = Chain.joined(a, b)
+    assert joined.n_rings == 7 and joined.support == "free" and joined.n_contacts == 6
+    assert joined.K.tolist() == [NINE.K_c] * 4 + [SIX.K_c] * 2  # a's support contact is the junction
+    assert joined.a.tolist() == [NINE.spacing] * 3 + [0.5 * (NINE.spacing + SIX.spacing)] + [SIX.spacing] * 2
+    custom = Chain.joined(a, b, junction={"K": 1e9, "a": 0.03})
+    assert custom.K[3] == 1e9 and custom.a[3] == 0.03
+    with pytest.raises(ValueError, match="one model"):
+        Chain.joined(a, Chain.from_ring(SIX, 3, "power-law"))
+    with pytest.raises(ValueError, match=r"junction takes K, n, gamma and a, got \['K_b'\]"):
+        Chain.joined(a, b, junction={"K_b": 1.0})
+
+
+@pytest.mark.parametrize(
+    ("call", "message"),
+    [
+        (lambda: Chain.from_rings([NINE]), "at least two rings"),
+        (lambda: Chain.from_rings([NINE, "ring"]), r"rings\[1\] must be a ringchain.theory.Ring"),
+        (lambda: Chain.from_rings([NINE, Ring.from_aspect_ratio(2.5)]), r"rings\[1\]: R/r = 2.5 is below 3"),
+        (lambda: Chain.from_rings([NINE, NINE], angles=[1.0, 1.2, 1.3]), r"angles must be one angle or 2"),
+        (lambda: Chain.from_rings([NINE, NINE], angles=0.5), r"contact of rings 0 and 1: angle 0.5 rad"),
+        (lambda: Chain.graded(NINE, 4), "give one of aspect_ratio"),
+        (lambda: Chain.graded(NINE, 4, aspect_ratio=(9, 5, 3)), r"aspect_ratio must be two values"),
+        (lambda: Chain.graded(NINE, 4, angle=(1.0, 1.2), profile="cubic"), "profile must be one of"),
+    ],
+)
+def test_ring_by_ring_constructors_name_the_bad_input(call, message):
+    with pytest.raises((ValueError, TypeError), match=message):
+        call()
