@@ -280,7 +280,7 @@ def test_waves_broadcast_or_name_the_arguments(forces, exponents):
 # --- issue 13: chains that change along their length (hertz_stiffness_pair, junction theory) ------------
 # Kept in one block so that it merges beside the other additions to this file.
 
-HETERO_COVERED = {"hertz_stiffness_pair"}
+HETERO_COVERED = {"hertz_stiffness_pair", "impedance", "junction_coefficients"}
 
 
 @SETTINGS
@@ -308,3 +308,30 @@ def test_hertz_pair_admissible_range(r1, aspect1, r_ratio, aspect2, E1, E2, nu1,
     K = finite_or_refused(lambda: theory.hertz_stiffness_pair(R1, r1, E1, nu1, R2, r2, E2, nu2, angle))
     if K is not None:
         assert K > 0
+
+
+@SETTINGS
+@given(ANY, ANY, ANY, ANY, ANY, ANY, ANY)
+def test_junction_any_input(Z1, Z2, F0, K, n, m, a):
+    finite_or_refused(lambda: theory.junction_coefficients(Z1, Z2))
+    finite_or_refused(lambda: theory.impedance(model="power-law", F0=F0, K=K, n=n, m=m, a=a))
+    finite_or_refused(lambda: theory.impedance(model="dual-spring", F0=F0, K=K, n=n, m=m, a=a, K_b=Z1))
+
+
+@SETTINGS
+@given(
+    Z1=log_uniform(1e-100, 1e100),
+    Z2=log_uniform(1e-100, 1e100),
+    F0=log_uniform(1e-30, 1e30),
+    K=log_uniform(1e-30, 1e30),
+    n=st.floats(1.0, 3.0),
+    m=log_uniform(1e-30, 1e30),
+    a=log_uniform(1e-30, 1e30),
+)
+def test_junction_admissible_range(Z1, Z2, F0, K, n, m, a):
+    coefficients = finite_or_refused(lambda: theory.junction_coefficients(Z1, Z2))
+    if coefficients is not None:
+        R, T = coefficients
+        assert -1 <= R <= 1 and 0 <= T <= 2
+    Z = finite_or_refused(lambda: theory.impedance(model="dual-spring", F0=F0, K=K, n=n, m=m, a=a, K_b=K))
+    assert Z is None or Z >= 0
