@@ -306,10 +306,21 @@ def _sweep_grid(args) -> dict:
     return grid
 
 
+def _write_rows(rows, out) -> int:
+    """The rows of a sweep as CSV, to standard output ("-") or to the file ``out``."""
+    from .sweep import write_csv
+
+    if out == "-":
+        write_csv(rows, sys.stdout)
+    else:
+        write_csv(rows, out)
+        print(f"{len(rows)} rows written to {out}")
+    return 0
+
+
 def _sweep_chain_file(args) -> int:
     """``ringchain sweep --chain FILE [--vary FIELD VALUES]``: one chain per value, the impacts as a batch."""
     from .chain_file import sweep_chain_file
-    from .sweep import write_csv
 
     defaults = _GEOMETRY_DEFAULTS | {"R_over_r": [[9.0]], "angle": [[90.0]], "rings": [[20]], "m_eff_ratio": [[1.0]]}
     opt.check_chain_file_alone(args, {k: v for k, v in defaults.items() if k != "m_eff_ratio"})
@@ -326,17 +337,12 @@ def _sweep_chain_file(args) -> int:
     rows = sweep_chain_file(args.chain, field, values, model=models[0], m_eff_ratio=ratios[0],
                             drop_heights=heights, impact_velocities=velocities, sensors=tuple(args.sensors),
                             t_end=args.t_end, n_samples=args.samples)  # fmt: skip
-    if args.out == "-":
-        write_csv(rows, sys.stdout)
-    else:
-        write_csv(rows, args.out)
-        print(f"{len(rows)} rows written to {args.out}")
-    return 0
+    return _write_rows(rows, args.out)
 
 
 def _sweep(args) -> int:
     from .executors import dask_client
-    from .sweep import expand, sweep, write_csv
+    from .sweep import expand, sweep
 
     if args.chain is not None:
         return _sweep_chain_file(args)
@@ -359,12 +365,7 @@ def _sweep(args) -> int:
     else:
         with opt.naming_t_end(args):
             rows = sweep(points, **options)
-    if args.out == "-":
-        write_csv(rows, sys.stdout)
-    else:
-        write_csv(rows, args.out)
-        print(f"{len(rows)} rows written to {args.out}")
-    return 0
+    return _write_rows(rows, args.out)
 
 
 # -- ringchain cache -----------------------------------------------------------------------------------
