@@ -287,11 +287,14 @@ class Lattice:
         """A function ``(x, u, out)`` writing the accelerations into ``out``.
 
         The inner loop of the integrators: work arrays and their views are made once,
-        so a call is about ten NumPy operations on whole arrays.  For an undamped regular
-        chain (the usual case) the forces are computed per unit mass on the contact and
-        spring bonds separately; otherwise by the general expression of the class
-        docstring, and the call returns ``(e, e_rate, f)`` (extensions, their rates and
-        the bond forces) for the dissipation rate.  ``u`` is only read if the lattice is
+        so a call is about ten NumPy operations on whole arrays.  For an undamped chain of
+        the two models' layout (the usual case) the forces are computed on the contact and
+        spring bonds separately, each coefficient a number when it is the same along the
+        chain and an array when it varies, and per unit mass when the masses are equal (the
+        uniform chain: one code for both, the uniform chain's arithmetic unchanged);
+        otherwise by the general expression of the class docstring, and the call returns
+        ``(e, e_rate, f)`` (extensions, their rates and the bond forces) for the
+        dissipation rate.  ``u`` is only read if the lattice is
         damped.  One stepper must not be called from two threads at once.
         """
         S, nb, n = self.n_sites, self.n_bonds, self.n
