@@ -324,6 +324,9 @@ def _sweep_chain_file(args) -> int:
 
     defaults = _GEOMETRY_DEFAULTS | {"R_over_r": [[9.0]], "angle": [[90.0]], "rings": [[20]], "m_eff_ratio": [[1.0]]}
     opt.check_chain_file_alone(args, {k: v for k, v in defaults.items() if k != "m_eff_ratio"})
+    if args.dask or args.workers is not None:
+        flag = "--dask" if args.dask else "--workers"
+        raise ValueError(f"argument {flag}: a sweep of a chain file runs in this process (one batch per chain)")
     if args.drop_height is None and args.impact_velocity is None:
         raise ValueError("a sweep of a chain file needs impacts: give --drop-height or --impact-velocity")
     field, values = opt.vary_values(args.vary) if args.vary else (None, [None])
