@@ -4,7 +4,9 @@ The numerical half of the paper (Sec. III.B): the chain integrated ring by ring.
 
 - :class:`Chain` -- the power-law chain (Eq. (7)) or the dual-spring chain
   (Eqs. (5)-(6)), built from K, n, m, a or from a :class:`~ringchain.theory.Ring`,
-  hanging from a fixed support under gravity or free;
+  hanging from a fixed support under gravity or free; beyond the paper, a chain that changes
+  along its length (per-ring and per-contact arrays; :meth:`Chain.from_rings`, :meth:`Chain.graded`,
+  :meth:`Chain.alternating`, :meth:`Chain.joined`; TOML descriptions in :mod:`.chain_file`);
 - :func:`simulate`, :func:`simulate_batch` -- an impact or a drop on ring 0, integrated
   with :func:`scipy.integrate.solve_ivp` or fixed-step velocity Verlet; a batch of runs
   is one vectorised array problem; ``initial=(x0, u0)`` starts from any other state;

@@ -384,3 +384,48 @@ def chain_options(p, *, many=False):
                    help="duration, s (default: long enough for the pulse to pass the far sensor)")  # fmt: skip
     p.add_argument("--samples", type=Checked(int, _count_samples), default=None,
                    help="samples of each force record (default: simulate's 2001, sweep's 1001)")  # fmt: skip
+
+
+def chain_file(text: str):
+    """argparse type of --chain: a TOML chain description, read and checked now (:mod:`.chain_file`)."""
+    from .chain_file import read_chain_file
+
+    try:
+        return read_chain_file(text)
+    except OSError as exc:
+        raise argparse.ArgumentTypeError(f"cannot read {text}: {exc.strerror or one_line(exc)}") from None
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(one_line(exc)) from None
+
+
+def chain_file_options(p, *, sweep=False):
+    """--chain FILE (a chain that changes along its length) and, for a sweep, --vary SPEC VALUES."""
+    p.add_argument("--chain", type=chain_file, metavar="FILE",
+                   help="TOML chain description (segments of ring count, R, r, material, angle; see "
+                        "ringchain.numerics.chain_file); replaces --R, --r, --angle, --material, --rings")  # fmt: skip
+    if sweep:
+        p.add_argument("--vary", nargs="+", metavar=("FIELD", "VALUES"),
+                       help="with --chain: a field of one segment and its values, e.g. --vary 2.R.last 0.01:0.02:5 "
+                            "(SEGMENT.FIELD or SEGMENT.FIELD.first/last; FIELD rings, R, r or angle)")  # fmt: skip
+
+
+def check_chain_file_alone(args, defaults: dict) -> None:
+    """--chain replaces the single-ring geometry: refuse those options when they differ from their defaults."""
+    for name, default in defaults.items():
+        if getattr(args, name, default) != default:
+            flag = "--" + name.replace("_", "-")
+            raise ValueError(f"argument {flag}: not allowed with --chain (the chain file gives every ring's geometry)")
+
+
+def vary_values(spec: list) -> tuple[str, list]:
+    """The field and the values of --vary FIELD VALUES... (numbers or start:stop:count)."""
+    if len(spec) < 2:
+        raise ValueError("argument --vary: give a field and at least one value, e.g. --vary 2.R.last 0.01:0.02:5")
+    parse = Values(Checked(float))
+    try:
+        values = flat([parse(text) for text in spec[1:]])
+    except argparse.ArgumentTypeError as exc:
+        raise ValueError(f"argument --vary: {exc}") from None
+    if len(values) > MAX_GRID_POINTS:
+        raise ValueError(f"argument --vary: at most {MAX_GRID_POINTS} values, got {len(values)}")
+    return spec[0], values

@@ -48,18 +48,25 @@ import numbers
 from dataclasses import dataclass
 
 import numpy as np
-from ringchain.theory import Ring, linear, n_per_mm_to_si, paper_data
+from ringchain.theory import Ring, fit_power_law, hertz_stiffness_pair, linear, n_per_mm_to_si, paper_data
 from ringchain.theory import _validate as v
 
 from .models import STANDARD_GRAVITY, Lattice
 
-__all__ = ["Chain", "MODELS", "SUPPORTS", "STIFFNESS_SOURCES"]
+__all__ = ["Chain", "MODELS", "SUPPORTS", "STIFFNESS_SOURCES", "GRADING_PROFILES"]
+
+#: What each parameter of a :class:`Chain` is given per, when it varies along the chain.
+_PROFILES = {"K": "contact", "n": "contact", "gamma": "contact", "m": "ring", "m_gravity": "ring", "K_b": "ring",
+             "gamma_b": "ring", "a": "pair"}  # fmt: skip
 
 #: The two lattice models of paper Sec. III.B (named once, in :mod:`ringchain.theory.linear`).
 MODELS = linear.MODELS
 
 #: Boundary at the far end from the impact: hanging from a fixed support, or free.
 SUPPORTS = ("fixed", "free")
+
+#: How :meth:`Chain.graded` spaces the values between its two ends.
+GRADING_PROFILES = ("linear", "geometric")
 
 #: Sources of the stiffness of :meth:`Chain.from_paper`: the paper's measured power law
 #: (Table I) or the ring's theory (Eqs. 1-4).
@@ -89,42 +96,83 @@ def _flag(name: str, value) -> bool:
     raise ValueError(f"{name} must be True or False, got {value!r}")
 
 
+def _parameter(name: str, value, length: int, check, unit: str, what: str):
+    """A chain parameter: a float (uniform) or a read-only array of ``length`` values (one per ``what``).
+
+    An array whose values are all equal becomes that float, so that a uniform chain has one
+    representation however it was built (and compares equal to the scalar-built chain).
+    """
+    if np.ndim(value) == 0:
+        return float(check(name, value, unit))
+    array = np.array(check(name, value, unit), dtype=float)
+    if array.shape != (length,):
+        raise ValueError(f"{name} must be one number or {length} values (one per {what}), got shape {array.shape}")
+    if np.ptp(array) == 0:
+        return float(array[0])
+    array.flags.writeable = False
+    return array
+
+
+def _per_distinct(evaluate, keys, what: str) -> np.ndarray:
+    """``evaluate(*key)`` for each key, once per distinct key (scalar calls: a uniform chain gets
+    its single ring's numbers exactly); an error names the first ``what`` (formatted with i, j)."""
+    values, results = {}, []
+    for i, key in enumerate(keys):
+        if key not in values:
+            try:
+                values[key] = evaluate(*key)
+            except ValueError as error:
+                raise ValueError(f"{what.format(i=i, j=i + 1)}: {error}") from None
+        results.append(values[key])
+    return np.array(results, dtype=float)
+
+
 def _choice(name: str, value: str, options) -> str:
     if value not in options:
         raise ValueError(f"{name} must be one of {options}, got {value!r}")
     return value
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Chain:
     r"""A chain of ``n_rings`` interlocked rings, ring 0 at the impact end.
 
     Build it with :meth:`power_law`, :meth:`dual_spring`, :meth:`from_ring` or
-    :meth:`from_paper`.  The contact law of both models is [K delta^n + gamma delta_dot]_+
-    (:func:`~ringchain.numerics.models.power_law_force`); the dual-spring model uses
-    K = K_c, n = 3/2, gamma = gamma_c and adds the bending spring K_b, gamma_b inside
-    each ring.
+    :meth:`from_paper`; a chain that changes along its length with :meth:`from_rings`,
+    :meth:`graded`, :meth:`alternating` or :meth:`joined`.  The contact law of both models
+    is [K delta^n + gamma delta_dot]_+ (:func:`~ringchain.numerics.models.power_law_force`);
+    the dual-spring model uses K = K_c, n = 3/2, gamma = gamma_c and adds the bending
+    spring K_b, gamma_b inside each ring.
+
+    Every parameter is one number (a uniform chain) or an array along the chain: per ring
+    (``m``, ``m_gravity``, ``K_b``, ``gamma_b``: ``n_rings`` values, ring 0 at the impact
+    end), per contact (``K``, ``n``, ``gamma``: :attr:`n_contacts` values, contact i
+    between ring i and ring i+1, the last one the support's contact when the support is
+    fixed) or per pair of neighbours (``a``: ``n_rings - 1`` values).  An array of equal
+    values is stored as its number, so a uniform chain is the same object however it was
+    built; the uniform chain is the case of the arrays with one value, run by the same code.
 
     Attributes
     ----------
     model : {"power-law", "dual-spring"}
     n_rings : int
-    K : float
-        Contact stiffness, N/m^n.
-    n : float
-        Contact exponent.
-    m : float
-        Inertial mass of a ring (the paper's m_eff), kg.
-    a : float
-        Distance between the centres of adjacent rings, m (a = 2(R - r)).
-    gamma : float
-        Contact dashpot, N s/m.
-    K_b : float or None
-        Bending stiffness, N/m (dual-spring only).
-    gamma_b : float
-        Bending dashpot, N s/m (dual-spring only).
-    m_gravity : float
-        Mass of a ring that gravity acts on, kg (default ``m``); see the module notes.
+    K : float or ndarray
+        Contact stiffness, N/m^n (per contact).
+    n : float or ndarray
+        Contact exponent (per contact).
+    m : float or ndarray
+        Inertial mass of a ring (the paper's m_eff), kg (per ring).
+    a : float or ndarray
+        Distance between the centres of adjacent rings, m (a = 2(R - r); for unequal
+        rings (R1 - r1) + (R2 - r2); per pair of neighbours).
+    gamma : float or ndarray
+        Contact dashpot, N s/m (per contact).
+    K_b : float, ndarray or None
+        Bending stiffness, N/m (dual-spring only; per ring).
+    gamma_b : float or ndarray
+        Bending dashpot, N s/m (dual-spring only; per ring).
+    m_gravity : float or ndarray
+        Mass of a ring that gravity acts on, kg (default ``m``; per ring); see the module notes.
     support : {"fixed", "free"}
         "fixed": the top ring (the far end) hangs from a fixed support through one more
         contact of the chain's contact law; "free": the far end is free.
@@ -147,24 +195,42 @@ class Chain:
         _choice("support", self.support, SUPPORTS)
         set_ = functools.partial(object.__setattr__, self)
         set_("n_rings", _count("n_rings", self.n_rings, 2))
-        set_("K", float(v.positive("K", self.K, "N/m^n")))
-        set_("n", float(v.in_range("n", self.n, 1.0, np.inf, closed_low=True, closed_high=False)))
-        set_("m", float(v.positive("m", self.m, "kg")))
-        set_("a", float(v.positive("a", self.a, "m")))
-        set_("gamma", float(v.nonnegative("gamma", self.gamma, "N s/m")))
-        set_("m_gravity", self.m if self.m_gravity is None else float(v.positive("m_gravity", self.m_gravity, "kg")))
+        rings, contacts, pairs = self.n_rings, self.n_contacts, self.n_rings - 1
+        exponent = functools.partial(v.in_range, low=1.0, high=np.inf, closed_low=True, closed_high=False)
+        set_("K", _parameter("K", self.K, contacts, v.positive, "N/m^n", "contact"))
+        set_("n", _parameter("n", self.n, contacts, lambda name, value, unit: exponent(name, value), "", "contact"))
+        set_("m", _parameter("m", self.m, rings, v.positive, "kg", "ring"))
+        set_("a", _parameter("a", self.a, pairs, v.positive, "m", "pair of neighbouring rings"))
+        set_("gamma", _parameter("gamma", self.gamma, contacts, v.nonnegative, "N s/m", "contact"))
+        m_gravity = self.m if self.m_gravity is None else self.m_gravity
+        set_("m_gravity", _parameter("m_gravity", m_gravity, rings, v.positive, "kg", "ring"))
         if self.model == "dual-spring":
-            if self.n != 1.5:
+            if np.any(np.asarray(self.n) != 1.5):
                 raise ValueError(
-                    f"the dual-spring model's contact is Hertz contact, n = 3/2 (Eq. 1); got n = {self.n:g} "
+                    f"the dual-spring model's contact is Hertz contact, n = 3/2 (Eq. 1); got n = {v.show(self.n)} "
                     "(a fitted exponent belongs to the power-law model)"
                 )
             if self.K_b is None:
                 raise ValueError("the dual-spring model needs the bending stiffness K_b")
-            set_("K_b", float(v.positive("K_b", self.K_b, "N/m")))
-            set_("gamma_b", float(v.nonnegative("gamma_b", self.gamma_b, "N s/m")))
-        elif self.K_b is not None or self.gamma_b:
+            set_("K_b", _parameter("K_b", self.K_b, rings, v.positive, "N/m", "ring"))
+            set_("gamma_b", _parameter("gamma_b", self.gamma_b, rings, v.nonnegative, "N s/m", "ring"))
+        elif self.K_b is not None or np.any(self.gamma_b):
             raise ValueError("K_b and gamma_b belong to the dual-spring model, not the power-law one")
+
+    def _key(self) -> tuple:
+        return tuple(
+            (value.shape, value.tobytes()) if isinstance(value, np.ndarray) else value
+            for value in (self.model, self.n_rings, self.K, self.n, self.m, self.a, self.gamma, self.K_b,
+                          self.gamma_b, self.m_gravity, self.support)
+        )  # fmt: skip
+
+    def __eq__(self, other):
+        if not isinstance(other, Chain):
+            return NotImplemented
+        return self._key() == other._key()
+
+    def __hash__(self):
+        return hash(self._key())
 
     # -- constructors ------------------------------------------------------------------
     @classmethod
@@ -355,6 +421,229 @@ class Chain:
         m0 = ring.mass
         return cls.dual_spring(n_rings, K_c, K_b, ratio * m0, ring.spacing, m_gravity=m0, **dashpots)
 
+    @classmethod
+    def from_rings(
+        cls,
+        rings,
+        angles=None,
+        model: str = "dual-spring",
+        *,
+        m_eff_ratio: float = 1.0,
+        gamma: float = 0.0,
+        gamma_c: float = 0.0,
+        gamma_b: float = 0.0,
+        support: str = "fixed",
+    ) -> Chain:
+        """A chain of given rings, ring 0 at the impact end: each contact from the two rings it joins.
+
+        Parameters
+        ----------
+        rings : sequence of Ring
+            The rings in order along the chain (at least two), each able to form a chain (R/r >= 3).
+        angles : float or array_like, optional
+            Contact angle of each contact, rad: one number, or :attr:`n_contacts` values (the
+            last the support's contact when fixed).  Default: each ring's own ``angle``,
+            read as the angle it makes with the ring above it (the top ring's for the support).
+        model : {"dual-spring", "power-law"}
+            Dual-spring: each contact's K_c from its two rings
+            (:func:`~ringchain.theory.hertz_stiffness_pair`, Eq. 1 for equal rings), each
+            ring's K_b from its own geometry (Eq. 2).  Power-law: each contact's K and n
+            fitted to the series law of that contact and the ring below it (Eq. 4).
+        m_eff_ratio : float, optional
+            Inertial mass over ring mass, m_eff/m0 in (0, 1]; gravity acts on m0.
+        gamma : float or array_like, optional
+            Power-law contact dashpots, N s/m.
+        gamma_c, gamma_b : float or array_like, optional
+            Dual-spring contact and bending dashpots, N s/m.
+        support : {"fixed", "free"}, optional
+            The support's contact is that of the top ring with a ring like itself.
+
+        Notes
+        -----
+        The centre distance of two interlocked rings is (R1 - r1) + (R2 - r2), 2(R - r) for
+        equal rings.  Rings that are all the same give exactly :meth:`from_ring`'s chain.
+
+        Examples
+        --------
+        >>> big, small = Ring.from_aspect_ratio(9.0), Ring.from_aspect_ratio(6.0)
+        >>> chain = Chain.from_rings([big, big, small, small])
+        >>> (chain.a * 1e3).round(2).tolist()  # mm: 2(R - r), then (R1 - r1) + (R2 - r2)
+        [40.0, 32.5, 25.0]
+        """
+        rings = list(rings) if not isinstance(rings, Ring) else [rings]
+        if len(rings) < 2:
+            raise ValueError(f"rings must hold at least two rings, got {len(rings)}")
+        for i, ring in enumerate(rings):
+            if not isinstance(ring, Ring):
+                raise TypeError(f"rings[{i}] must be a ringchain.theory.Ring, got {type(ring).__name__}")
+            try:
+                ring.check_chain()
+            except ValueError as error:
+                raise ValueError(f"rings[{i}]: {error}") from None
+        _choice("model", model, MODELS)
+        _choice("support", support, SUPPORTS)
+        ratio = float(v.in_range("m_eff_ratio", m_eff_ratio, 0.0, 1.0))
+        n_rings = len(rings)
+        pairs = [(rings[i], rings[i + 1]) for i in range(n_rings - 1)]
+        if support == "fixed":
+            pairs.append((rings[-1], rings[-1]))
+        if angles is None:
+            angles = [below.angle for below, _ in pairs]
+        angles = v.in_range("angles", angles, 0.0, np.pi / 2)
+        if angles.ndim > 1 or angles.size not in (1, len(pairs)):
+            raise ValueError(f"angles must be one angle or {len(pairs)} (one per contact), got shape {angles.shape}")
+        angles = np.broadcast_to(angles, (len(pairs),))
+        # One evaluation per distinct contact (a uniform chain's numbers are then the ring's own).
+        K_c = _per_distinct(
+            lambda below, above, angle: float(hertz_stiffness_pair(
+                below.R, below.r, below.material.E, below.material.nu,
+                above.R, above.r, above.material.E, above.material.nu, angle)),
+            [(below, above, float(angle)) for (below, above), angle in zip(pairs, angles, strict=True)],
+            "contact of rings {i} and {j}",
+        )  # fmt: skip
+        K_b = _per_distinct(lambda ring: ring.K_b, [(ring,) for ring in rings], "ring {i}")
+        m0 = np.array([ring.mass for ring in rings])
+        a = np.array([(below.R - below.r) + (above.R - above.r) for below, above in pairs[: n_rings - 1]])
+        if model == "dual-spring":
+            if gamma is not None and np.any(gamma):
+                raise ValueError("gamma belongs to the power-law model; use gamma_c and gamma_b")
+            return cls.dual_spring(n_rings, K_c, K_b[:n_rings], ratio * m0, a, gamma_c, gamma_b, m0, support=support)
+        if np.any(gamma_c) or np.any(gamma_b):
+            raise ValueError("gamma_c and gamma_b belong to the dual-spring model; use gamma")
+        # Each period of the chain is a contact in series with the body of the ring below it (Eq. 3).
+        below_K_b = np.append(K_b, K_b[-1])[: len(pairs)]
+        fits = _per_distinct(lambda kc, kb: tuple(float(x) for x in fit_power_law(kc, kb)),
+                             list(zip(K_c.tolist(), below_K_b.tolist(), strict=True)), "contact {i}")  # fmt: skip
+        return cls.power_law(n_rings, fits[:, 0], fits[:, 1], ratio * m0, a, gamma, m0, support=support)
+
+    @classmethod
+    def graded(
+        cls,
+        ring: Ring,
+        n_rings: int,
+        *,
+        aspect_ratio=None,
+        angle=None,
+        profile: str = "linear",
+        model: str = "dual-spring",
+        **options,
+    ) -> Chain:
+        """A chain whose R/r or contact angle changes steadily from the impact end to the far end.
+
+        Parameters
+        ----------
+        ring : Ring
+            The ring the others are made from: its tube radius r, material and (unless graded)
+            angle.
+        n_rings : int
+        aspect_ratio : (float, float), optional
+            R/r of ring 0 and of the last ring; R = aspect_ratio * r.
+        angle : (float, float), optional
+            Contact angle of the first and of the last contact, rad.
+        profile : {"linear", "geometric"}, optional
+            Values spaced evenly ("linear") or by a constant ratio ("geometric").
+        model : {"dual-spring", "power-law"}
+        **options
+            Passed to :meth:`from_rings` (``m_eff_ratio``, dashpots, ``support``).
+
+        Examples
+        --------
+        >>> chain = Chain.graded(Ring.from_aspect_ratio(9.0), 5, aspect_ratio=(9.0, 5.0))
+        >>> bool(np.all(np.diff(chain.K_b) > 0))  # fatter rings bend less
+        True
+        """
+        if not isinstance(ring, Ring):
+            raise TypeError(f"ring must be a ringchain.theory.Ring, got {type(ring).__name__}")
+        n_rings = _count("n_rings", n_rings, 2)
+        _choice("profile", profile, GRADING_PROFILES)
+        if (aspect_ratio is None) == (angle is None):
+            raise ValueError("give one of aspect_ratio=(first, last) or angle=(first, last) to grade")
+        name, ends = ("aspect_ratio", aspect_ratio) if angle is None else ("angle", angle)
+        ends = v.positive(name, ends)
+        if ends.shape != (2,):
+            raise ValueError(f"{name} must be two values (first, last), got {ends.tolist()!r}")
+        count = n_rings if name == "aspect_ratio" else n_rings - 1 + (options.get("support", "fixed") == "fixed")
+        spaced = np.linspace if profile == "linear" else np.geomspace
+        values = spaced(ends[0], ends[1], count)
+        if name == "aspect_ratio":
+            rings = [Ring(R=float(q) * ring.r, r=ring.r, material=ring.material, angle=ring.angle, thin=ring.thin)
+                     for q in values]  # fmt: skip
+            return cls.from_rings(rings, model=model, **options)
+        return cls.from_rings([ring] * n_rings, angles=values, model=model, **options)
+
+    @classmethod
+    def alternating(cls, ring_a: Ring, ring_b: Ring, n_rings: int, angles=None, model="dual-spring", **options):
+        """A chain of two kinds of ring in turn, ``ring_a`` at the impact end.
+
+        Parameters
+        ----------
+        ring_a, ring_b : Ring
+        n_rings : int
+        angles : float or array_like, optional
+            As in :meth:`from_rings`; e.g. ``[pi/2, pi/3] * k`` for alternating angles.
+        model : {"dual-spring", "power-law"}
+        **options
+            Passed to :meth:`from_rings`.
+
+        Examples
+        --------
+        >>> chain = Chain.alternating(Ring.from_aspect_ratio(9.0), Ring.from_aspect_ratio(5.5), 6)
+        >>> len(set(np.round(chain.m, 6)))  # two ring masses
+        2
+        """
+        n_rings = _count("n_rings", n_rings, 2)
+        return cls.from_rings([ring_a, ring_b] * (n_rings // 2) + [ring_a] * (n_rings % 2), angles, model, **options)
+
+    @classmethod
+    def joined(cls, chain_a: Chain, chain_b: Chain, *, junction=None) -> Chain:
+        """``chain_a`` (at the impact end) hung from ``chain_b``: one chain of both chains' rings.
+
+        Parameters
+        ----------
+        chain_a, chain_b : Chain
+            Chains of the same model.  The joined chain takes ``chain_b``'s support.
+        junction : dict, optional
+            The contact between the last ring of ``chain_a`` and the first of ``chain_b``: K (and
+            for the power-law model n), gamma and the centre distance a, SI units.  Default:
+            ``chain_a``'s support contact (its last contact if its far end is free), as if
+            ``chain_a`` hung from ``chain_b`` as from its support, and a the mean of the two
+            chains' spacings at the junction ((R1 - r1) + (R2 - r2) for chains of rings).
+
+        Examples
+        --------
+        >>> stiff = Chain.power_law(4, K=2e7, n=1.5, m=0.01, a=0.04)
+        >>> soft = Chain.power_law(4, K=2e6, n=1.5, m=0.01, a=0.04)
+        >>> Chain.joined(stiff, soft).K.tolist()  # contacts: 3 of a, the junction, 3 of b, b's support
+        [20000000.0, 20000000.0, 20000000.0, 20000000.0, 2000000.0, 2000000.0, 2000000.0, 2000000.0]
+        """
+        for name, chain in (("chain_a", chain_a), ("chain_b", chain_b)):
+            if not isinstance(chain, Chain):
+                raise TypeError(f"{name} must be a Chain, got {type(chain).__name__}")
+        if chain_a.model != chain_b.model:
+            raise ValueError(f"both chains must be of one model, got {chain_a.model!r} and {chain_b.model!r}")
+        junction = dict(junction or {})
+        unknown = set(junction) - {"K", "n", "gamma", "a"}
+        if unknown:
+            raise ValueError(f"junction takes K, n, gamma and a, got {sorted(unknown)}")
+        joint = {name: float(chain_a.profile(name)[-1]) for name in ("K", "n", "gamma")}
+        joint["a"] = 0.5 * (float(chain_a.profile("a")[-1]) + float(chain_b.profile("a")[0]))
+        joint |= {name: float(value) for name, value in junction.items()}
+
+        def contacts(name):
+            a_part = chain_a.profile(name)[: chain_a.n_rings - 1]
+            return np.concatenate([a_part, [joint[name]], chain_b.profile(name)])
+
+        def per_ring(name):
+            return np.concatenate([chain_a.profile(name), chain_b.profile(name)])
+
+        dual = chain_a.model == "dual-spring"
+        return cls(
+            chain_a.model, chain_a.n_rings + chain_b.n_rings, contacts("K"), contacts("n"), per_ring("m"),
+            np.concatenate([chain_a.profile("a"), [joint["a"]], chain_b.profile("a")]), gamma=contacts("gamma"),
+            K_b=per_ring("K_b") if dual else None, gamma_b=per_ring("gamma_b") if dual else 0.0,
+            m_gravity=per_ring("m_gravity"), support=chain_b.support,
+        )  # fmt: skip
+
     # -- derived quantities -----------------------------------------------------------------
     @property
     def K_c(self) -> float:
@@ -375,8 +664,37 @@ class Chain:
         return self.n_rings * self.sites_per_ring
 
     @property
+    def n_contacts(self) -> int:
+        """Contacts of the chain: n_rings - 1 between rings, and one more with a fixed support."""
+        return self.n_rings - 1 + (self.support == "fixed")
+
+    @property
+    def uniform(self) -> bool:
+        """Whether every parameter is one number (the chain does not change along its length)."""
+        return not any(isinstance(getattr(self, name), np.ndarray) for name in _PROFILES)
+
+    def profile(self, name: str) -> np.ndarray:
+        """Parameter ``name`` as an array along the chain, whether stored as one number or not.
+
+        Per ring for m, m_gravity, K_b, gamma_b; per contact for K, n, gamma (the support's
+        last when fixed); per pair of neighbours for a.  Units as the attribute's.
+
+        Examples
+        --------
+        >>> Chain.power_law(3, K=1e6, n=1.5, m=0.01, a=0.04).profile("K").tolist()  # two contacts and the support
+        [1000000.0, 1000000.0, 1000000.0]
+        """
+        if name not in _PROFILES:
+            raise ValueError(f"name must be one of {tuple(_PROFILES)}, got {name!r}")
+        value = getattr(self, name)
+        if value is None:
+            raise ValueError(f"the {self.model} chain has no {name}")
+        length = {"ring": self.n_rings, "contact": self.n_contacts, "pair": self.n_rings - 1}[_PROFILES[name]]
+        return np.broadcast_to(np.asarray(value, dtype=float), (length,))
+
+    @property
     def damped(self) -> bool:
-        return self.gamma > 0 or self.gamma_b > 0
+        return bool(np.any(self.gamma > 0) or np.any(self.gamma_b > 0))
 
     @property
     def contact_bonds(self) -> np.ndarray:
@@ -393,24 +711,42 @@ class Chain:
         """Lattice bond index of the contact with the fixed support, or None if free."""
         return self.n_sites - 1 if self.support == "fixed" else None
 
+    @property
+    def _contact_bond_indices(self) -> np.ndarray:
+        """Lattice bond of each contact (the support's last when fixed): per-contact arrays go there."""
+        bonds = self.contact_bonds
+        return np.append(bonds, self.support_bond) if self.support == "fixed" else bonds
+
     @functools.cached_property
     def lattice(self) -> Lattice:
         """The sites and bonds integrated by the solver."""
         k = self.sites_per_ring
         n_bonds = self.n_sites if self.support == "fixed" else self.n_sites - 1
         contact = np.zeros(n_bonds, dtype=bool)
-        contact[self.contact_bonds] = True
-        if self.support == "fixed":
-            contact[-1] = True
+        contact[self._contact_bond_indices] = True
         spring = ~contact
+
+        def on(bonds, value):
+            """Per-bond array: ``value`` (a number or one per bond of ``bonds``) on those bonds, 0 elsewhere."""
+            if np.ndim(value) == 0:
+                return np.where(bonds, value, 0.0)
+            out = np.zeros(n_bonds)
+            out[bonds] = value
+            return out
+
+        def per_site(value):
+            return np.full(self.n_sites, value / k) if np.ndim(value) == 0 else np.repeat(value / k, k)
+
+        # A spring bond has no contact force (K_contact = 0); its exponent is a placeholder 1.
+        n = self.n if np.ndim(self.n) == 0 else on(contact, self.n) + spring
         return Lattice(
-            mass=np.full(self.n_sites, self.m / k),
-            weight_mass=np.full(self.n_sites, self.m_gravity / k),
-            K_contact=np.where(contact, self.K, 0.0),
-            n=self.n,
-            K_spring=np.where(spring, self.K_b or 0.0, 0.0),
-            gamma_contact=np.where(contact, self.gamma, 0.0),
-            gamma_spring=np.where(spring, self.gamma_b, 0.0),
+            mass=per_site(self.m),
+            weight_mass=per_site(self.m_gravity),
+            K_contact=on(contact, self.K),
+            n=n,
+            K_spring=on(spring, 0.0 if self.K_b is None else self.K_b),
+            gamma_contact=on(contact, self.gamma),
+            gamma_spring=on(spring, self.gamma_b),
         )
 
     def ring_sites(self, i) -> np.ndarray:
@@ -442,9 +778,12 @@ class Chain:
             weights = weights.copy()
             weights[: self.sites_per_ring] = 0.0
         tension = np.cumsum(weights)[: self.lattice.n_bonds]
-        e = (tension / self.K) ** (1.0 / self.n)
-        if self.model == "dual-spring":
-            e[0::2] = tension[0::2] / self.K_b
+        if self.model == "power-law":  # every bond a contact: K and n per bond
+            return (tension / self.K) ** (1.0 / self.n)
+        e = np.empty_like(tension)
+        contacts = self._contact_bond_indices
+        e[contacts] = (tension[contacts] / self.K) ** (1.0 / self.n)
+        e[0::2] = tension[0::2] / self.K_b
         return e
 
     def displacement_from_extension(self, e) -> np.ndarray:

@@ -6,6 +6,8 @@
 - ``ringchain ring --R 22.5e-3 --r 2.5e-3`` -- everything about one ring contact;
 - ``ringchain simulate --rings 20 --drop-height 0.05`` -- one run, sensor traces as CSV;
 - ``ringchain sweep --R-over-r 6 9 --drop-height 0.01:0.1:10`` -- a grid, one CSV row per point;
+- ``ringchain simulate --chain FILE`` / ``ringchain sweep --chain FILE --vary 2.R.last 0.01:0.02:5`` -- a
+  chain that changes along its length, described segment by segment in TOML (:mod:`.chain_file`);
 - ``ringchain cache info`` / ``ringchain cache clear`` -- the disk cache of generated code.
 - ``ringchain fit static|speed|traces FILE`` -- parameters from measurements (:mod:`.fit_cli`).
 
@@ -151,12 +153,62 @@ def _simulate_point(args):
     )  # fmt: skip
 
 
+#: The single-ring options that --chain replaces, with their defaults.
+_GEOMETRY_DEFAULTS = {"R": 22.5e-3, "r": 2.5e-3, "angle": 90.0, "material": "stainless", "rings": 20}
+
+
+def _simulate_chain_file(args) -> int:
+    """``ringchain simulate --chain FILE``: a chain that changes along its length (:mod:`.chain_file`)."""
+    from .solve import simulate
+    from .sweep import default_t_end
+
+    description = args.chain
+    opt.check_chain_file_alone(args, _GEOMETRY_DEFAULTS)
+    opt.check_sensors(args.sensors, [description.n_rings])
+    impact = {"drop_height": args.drop_height} if args.drop_height is not None else {
+        "impact_velocity": args.impact_velocity}  # fmt: skip
+    for material in {segment.material for segment in description.segments}:
+        opt.check_impact(material, drop_heights=[args.drop_height] if args.drop_height else None,
+                         impact_velocities=[args.impact_velocity] if args.impact_velocity else None)  # fmt: skip
+    speed = math.sqrt(2.0 * 9.80665 * args.drop_height) if args.drop_height is not None else args.impact_velocity
+    with opt.computing(f"the chain of {description.source}"):
+        chain = description.chain(args.model, args.m_eff_ratio)
+        t_end = default_t_end(chain, [speed], args.sensors) if args.t_end is None else args.t_end
+    solver = {} if args.method is None else {"method": args.method}
+    if args.samples is not None:
+        solver["n_samples"] = args.samples
+    sim = simulate(chain, t_end, **impact, **solver)
+    near, far = args.sensors
+    columns = {"t_s": sim.t, **{f"sensor_ring{k}_N": sim.sensor(k) for k in (near, far)}}
+    if sim.support_force is not None:
+        columns["support_N"] = sim.support_force
+    np.savetxt(args.out, np.column_stack(list(columns.values())), delimiter=",", header=",".join(columns),
+               comments="", fmt="%.17g")  # fmt: skip
+    if args.plot:
+        _plot_traces(args.plot, sim, (near, far), speed)
+    lines = [f"{chain.n_rings} rings from {description.source} ({len(description.segments)} segments), "
+             f"{chain.model} model, impact at {speed:.4g} m/s, {t_end * 1e3:.4g} ms"]  # fmt: skip
+    for k in (near, far):
+        lines.append(f"  ring {k}: peak {sim.peak_force(k):.4g} N at {sim.arrival_time(k) * 1e3:.4g} ms")
+    lines.append(f"  time of flight {sim.time_of_flight(near, far) * 1e3:.4g} ms, speed "
+                 f"{sim.wave_speed(near, far):.4g} m/s")  # fmt: skip
+    if sim.support_force is not None:
+        lines.append(f"  support: largest force {np.max(sim.support_force):.4g} N")
+    print("\n".join(lines))
+    print(f"sensor traces written to {args.out}")
+    if args.plot:
+        print(f"plot written to {args.plot}")
+    return 0
+
+
 def _simulate(args) -> int:
     from .solve import simulate
     from .sweep import default_t_end
 
     if args.plot is not None and Path(args.plot).resolve() == Path(args.out).resolve():
         raise ValueError(f"arguments --out and --plot: both name {args.out}; give two files")
+    if args.chain is not None:
+        return _simulate_chain_file(args)
     point = _simulate_point(args)
     impact = {"drop_height": point.drop_height} if point.drop_height is not None else {
         "impact_velocity": point.impact_velocity}  # fmt: skip
@@ -176,7 +228,7 @@ def _simulate(args) -> int:
     np.savetxt(args.out, np.column_stack(list(columns.values())), delimiter=",", header=",".join(columns),
                comments="", fmt="%.17g")  # fmt: skip
     if args.plot:
-        _plot_traces(args.plot, sim, point)
+        _plot_traces(args.plot, sim, point.sensors, point.speed)
     print("\n".join(summary))
     print(f"sensor traces written to {args.out}")
     if args.plot:
@@ -205,13 +257,13 @@ def _run_summary(sim, point, t_end) -> list[str]:
     return lines
 
 
-def _plot_traces(path, sim, point) -> None:
+def _plot_traces(path, sim, sensors, speed) -> None:
     fig = _figure(figsize=(6, 3.6))
     ax = fig.add_subplot()
-    for k in point.sensors:
+    for k in sensors:
         ax.plot(sim.t * 1e3, sim.sensor(k), label=f"ring {k}")
     ax.set(xlabel="time after impact (ms)", ylabel="sensor force (N)",
-           title=f"{sim.chain.model}, {sim.chain.n_rings} rings, impact {point.speed:.3g} m/s")  # fmt: skip
+           title=f"{sim.chain.model}, {sim.chain.n_rings} rings, impact {speed:.3g} m/s")  # fmt: skip
     ax.legend()
     fig.savefig(path, dpi=120)
 
@@ -253,10 +305,51 @@ def _sweep_grid(args) -> dict:
     return grid
 
 
+def _write_rows(rows, out) -> int:
+    """The rows of a sweep as CSV, to standard output ("-") or to the file ``out``."""
+    from .sweep import write_csv
+
+    if out == "-":
+        write_csv(rows, sys.stdout)
+    else:
+        write_csv(rows, out)
+        print(f"{len(rows)} rows written to {out}")
+    return 0
+
+
+def _sweep_chain_file(args) -> int:
+    """``ringchain sweep --chain FILE [--vary FIELD VALUES]``: one chain per value, the impacts as a batch."""
+    from .chain_file import sweep_chain_file
+
+    defaults = _GEOMETRY_DEFAULTS | {"R_over_r": [[9.0]], "angle": [[90.0]], "rings": [[20]], "m_eff_ratio": [[1.0]]}
+    opt.check_chain_file_alone(args, {k: v for k, v in defaults.items() if k != "m_eff_ratio"})
+    if args.dask or args.workers is not None:
+        flag = "--dask" if args.dask else "--workers"
+        raise ValueError(f"argument {flag}: a sweep of a chain file runs in this process (one batch per chain)")
+    if args.drop_height is None and args.impact_velocity is None:
+        raise ValueError("a sweep of a chain file needs impacts: give --drop-height or --impact-velocity")
+    field, values = opt.vary_values(args.vary) if args.vary else (None, [None])
+    ratios, models = opt.flat(args.m_eff_ratio), args.model or ["dual-spring"]
+    if len(ratios) > 1 or len(models) > 1:
+        raise ValueError("with --chain, give one --model and one --m-eff-ratio (vary the chain with --vary)")
+    heights = opt.flat(args.drop_height) if args.drop_height is not None else None
+    velocities = opt.flat(args.impact_velocity) if args.impact_velocity is not None else None
+    for material in {segment.material for segment in args.chain.segments}:
+        opt.check_impact(material, drop_heights=heights, impact_velocities=velocities)
+    rows = sweep_chain_file(args.chain, field, values, model=models[0], m_eff_ratio=ratios[0],
+                            drop_heights=heights, impact_velocities=velocities, sensors=tuple(args.sensors),
+                            t_end=args.t_end, n_samples=args.samples)  # fmt: skip
+    return _write_rows(rows, args.out)
+
+
 def _sweep(args) -> int:
     from .executors import dask_client
-    from .sweep import expand, sweep, write_csv
+    from .sweep import expand, sweep
 
+    if args.chain is not None:
+        return _sweep_chain_file(args)
+    if args.vary:
+        raise ValueError("argument --vary: varies a field of a chain file; give --chain FILE")
     points = expand(_sweep_grid(args))
     options = dict(batch_size=args.batch_size, max_workers=args.workers, progress=sys.stderr.isatty(),
                    t_end=args.t_end)  # fmt: skip
@@ -274,12 +367,7 @@ def _sweep(args) -> int:
     else:
         with opt.naming_t_end(args):
             rows = sweep(points, **options)
-    if args.out == "-":
-        write_csv(rows, sys.stdout)
-    else:
-        write_csv(rows, args.out)
-        print(f"{len(rows)} rows written to {args.out}")
-    return 0
+    return _write_rows(rows, args.out)
 
 
 # -- ringchain cache -----------------------------------------------------------------------------------
@@ -374,6 +462,7 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--out", type=opt.output_file, required=True, metavar="CSV", help="CSV of the sensor traces")
     p.add_argument("--plot", type=opt.plot_file, metavar="FILE",
                    help="also plot the sensor traces (.png, .pdf, .svg...: the extension sets the format)")  # fmt: skip
+    opt.chain_file_options(p)
     p.set_defaults(func=_simulate)
 
     p = sub.add_parser("sweep", help="a grid of chains and impacts, one CSV row per point", allow_abbrev=False,
@@ -391,6 +480,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="seconds to wait for the Dask scheduler to answer (default 5)")  # fmt: skip
     p.add_argument("--out", type=opt.output_csv, default="-", metavar="CSV",
                    help="output CSV (default: standard output)")  # fmt: skip
+    opt.chain_file_options(p, sweep=True)
     p.set_defaults(func=_sweep)
 
     p = sub.add_parser("cache", help="the disk cache of the theory's generated code", allow_abbrev=False)

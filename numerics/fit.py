@@ -825,7 +825,7 @@ class _ParameterBatchLattice(Lattice):
     general path of :meth:`Lattice.stepper` broadcasts them against a batch of B states.
     """
 
-    _uniform_pattern = None  # the per-unit-mass fast path assumes one chain
+    _chain_pattern = None  # the fast path of Lattice.stepper assumes one chain
 
     @property
     def n_sites(self) -> int:

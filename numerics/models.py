@@ -145,8 +145,8 @@ class Lattice:
         Mass of each site that gravity acts on, kg.
     K_contact : ndarray, shape (n_bonds,)
         Contact stiffness of each bond, N/m^n (0 for a spring bond).
-    n : float
-        Contact exponent.
+    n : float or ndarray, shape (n_bonds,)
+        Contact exponent, one for all bonds or one per bond (any value >= 1 on a spring bond).
     K_spring : ndarray, shape (n_bonds,)
         Linear stiffness of each bond, N/m (0 for a contact bond).
     gamma_contact, gamma_spring : ndarray, shape (n_bonds,)
@@ -159,7 +159,7 @@ class Lattice:
     mass: np.ndarray
     weight_mass: np.ndarray
     K_contact: np.ndarray
-    n: float
+    n: float | np.ndarray
     K_spring: np.ndarray
     gamma_contact: np.ndarray
     gamma_spring: np.ndarray
@@ -167,6 +167,12 @@ class Lattice:
     def __post_init__(self):
         for name in ("mass", "weight_mass", "K_contact", "K_spring", "gamma_contact", "gamma_spring"):
             object.__setattr__(self, name, np.asarray(getattr(self, name), dtype=float))
+        try:
+            np.broadcast_shapes(np.shape(self.n), self.K_contact.shape)
+        except ValueError:
+            raise ValueError(
+                f"n must be one number or one per bond ({self.n_bonds}), got shape {np.shape(self.n)}"
+            ) from None
         if self.n_bonds not in (self.n_sites - 1, self.n_sites):
             raise ValueError(
                 f"{self.n_sites} sites need {self.n_sites - 1} or {self.n_sites} bonds, got {self.n_bonds}"
@@ -229,8 +235,9 @@ class Lattice:
             (self.K_contact, self.K_spring, self.gamma_contact, self.gamma_spring) if bonds is None else
             (self.K_contact[bonds], self.K_spring[bonds], self.gamma_contact[bonds], self.gamma_spring[bonds])
         )  # fmt: skip
+        n = self.n if bonds is None or np.ndim(self.n) == 0 else self.n[bonds]
         np.maximum(e, 0.0, out=work)
-        np.power(work, self.n, out=work)
+        np.power(work, n, out=work)
         work *= K_contact
         if self.damped and not elastic_only:
             work += gamma_contact * e_rate
@@ -261,31 +268,33 @@ class Lattice:
         return out
 
     @functools.cached_property
-    def _uniform_pattern(self):
-        """(contacts, springs, K, K_s, m, m_gravity) if the lattice is a regular chain of one
-        or two alternating bond kinds with equal masses, else None (see :meth:`stepper`)."""
+    def _chain_pattern(self):
+        """(contacts, springs) if the bonds are all contacts, or alternate spring, contact, ... (the
+        two chain models), as slices of the bonds; else None (see :meth:`stepper`)."""
         contact, spring = self.K_contact > 0, self.K_spring > 0
         if not spring.any() and contact.all():
-            layout = (slice(None), None)
-        elif contact[1::2].all() and spring[0::2].all() and not contact[0::2].any() and not spring[1::2].any():
-            layout = (slice(1, None, 2), slice(0, None, 2))
-        else:
-            return None
-        values = (self.K_contact[contact], self.K_spring[spring], self.mass, self.weight_mass)
-        if any(np.ptp(a) > 0 for a in values if a.size):
-            return None
-        K_s = float(self.K_spring[spring][0]) if spring.any() else 0.0
-        return (*layout, float(self.K_contact[contact][0]), K_s, float(self.mass[0]), float(self.weight_mass[0]))
+            return slice(None), None
+        if contact[1::2].all() and spring[0::2].all() and not contact[0::2].any() and not spring[1::2].any():
+            return slice(1, None, 2), slice(0, None, 2)
+        return None
+
+    @staticmethod
+    def _one_or_all(array):
+        """A float if every entry of ``array`` is the same, else the array."""
+        return float(array[0]) if array.size and np.ptp(array) == 0 else array
 
     def stepper(self, batch_shape, g):
         """A function ``(x, u, out)`` writing the accelerations into ``out``.
 
         The inner loop of the integrators: work arrays and their views are made once,
-        so a call is about ten NumPy operations on whole arrays.  For an undamped regular
-        chain (the usual case) the forces are computed per unit mass on the contact and
-        spring bonds separately; otherwise by the general expression of the class
-        docstring, and the call returns ``(e, e_rate, f)`` (extensions, their rates and
-        the bond forces) for the dissipation rate.  ``u`` is only read if the lattice is
+        so a call is about ten NumPy operations on whole arrays.  For an undamped chain of
+        the two models' layout (the usual case) the forces are computed on the contact and
+        spring bonds separately, each coefficient a number when it is the same along the
+        chain and an array when it varies, and per unit mass when the masses are equal (the
+        uniform chain: one code for both, the uniform chain's arithmetic unchanged);
+        otherwise by the general expression of the class docstring, and the call returns
+        ``(e, e_rate, f)`` (extensions, their rates and the bond forces) for the
+        dissipation rate.  ``u`` is only read if the lattice is
         damped.  One stepper must not be called from two threads at once.
         """
         S, nb, n = self.n_sites, self.n_bonds, self.n
@@ -297,7 +306,7 @@ class Lattice:
         padded = np.zeros((*batch_shape, S + 1))
         f = padded[..., 1 : 1 + nb]
         above, below = padded[..., 1:], padded[..., :-1]
-        pattern = None if self.damped else self._uniform_pattern
+        pattern = None if self.damped else self._chain_pattern
 
         # Site slices: plain ones for a single run (cheaper than ``...`` indexing).
         upper, lower, last = (slice(1, None), slice(None, -1), S - 1) if not batch_shape else (
@@ -309,8 +318,18 @@ class Lattice:
                 np.subtract(0.0, x[last], out=e_tail)  # see extension(): not np.negative
 
         if pattern is not None:
-            contacts, springs, K, K_s, m, m_g = pattern
-            K_per_mass, K_s_per_mass, g_acc = K / m, K_s / m, g * m_g / m
+            # Undamped chain: contact and spring bonds computed separately.  Each coefficient is
+            # a number when it is the same along the chain (the uniform chain: its speed and
+            # its rounding), else an array; with equal masses the forces are per unit mass.
+            contacts, springs = pattern
+            one = self._one_or_all
+            K, m, m_g = one(self.K_contact[contacts]), one(self.mass), one(self.weight_mass)
+            K_s = one(self.K_spring[springs]) if springs is not None else 0.0
+            n_c = n if np.ndim(n) == 0 else one(n[contacts])
+            if np.ndim(m) == 0:
+                K_per_mass, K_s_per_mass, g_acc, inv_mass = K / m, K_s / m, g * m_g / m, None
+            else:
+                K_per_mass, K_s_per_mass, g_acc, inv_mass = K, K_s, one(g * self.weight_mass / self.mass), 1.0 / m
             e_c, f_c = e[..., contacts], f[..., contacts]
             e_s, f_s = (e[..., springs], f[..., springs]) if springs is not None else (None, None)
             subtract, maximum, power, multiply = np.subtract, np.maximum, np.power, np.multiply
@@ -320,11 +339,13 @@ class Lattice:
                 if e_tail is not None:
                     subtract(0.0, x[last], out=e_tail)  # see extension(): not np.negative
                 maximum(e_c, 0.0, out=f_c)
-                power(f_c, n, out=f_c)
+                power(f_c, n_c, out=f_c)
                 multiply(f_c, K_per_mass, out=f_c)
                 if e_s is not None:
                     multiply(e_s, K_s_per_mass, out=f_s)
                 subtract(above, below, out=out)
+                if inv_mass is not None:
+                    multiply(out, inv_mass, out=out)
                 subtract(out, g_acc, out=out)
 
             return accelerations_into
@@ -354,6 +375,8 @@ class Lattice:
     def contact_energy(self, e):
         """Elastic energy of the contacts, sum of K delta_+^(n+1)/(n+1), J."""
         d = np.maximum(e, 0.0)
+        if np.ndim(self.n) == 1:  # one exponent per bond
+            return np.sum(self.K_contact / (self.n + 1.0) * d ** (self.n + 1.0), axis=-1)
         return np.sum(self.K_contact * d ** (self.n + 1.0), axis=-1) / (self.n + 1.0)
 
     def spring_energy(self, e):

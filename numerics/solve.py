@@ -234,11 +234,18 @@ def _scales(chain: Chain, x0, speeds, g):
     series for the dual-spring model).  Each run of a batch gets its own scales, so that
     a small impact beside a large one keeps its own accuracy.
     """
-    speed = np.maximum(speeds, max(1e-3 * np.sqrt(g * chain.a), 1e-9))
-    energy = 0.25 * chain.m * speed**2
-    X = ((chain.n + 1.0) * energy / chain.K) ** (1.0 / (chain.n + 1.0))
+    speed = np.maximum(speeds, max(1e-3 * np.sqrt(g * np.min(chain.a)), 1e-9))
+    energy = 0.25 * np.max(chain.m) * speed**2
+
+    # Along a chain that changes, the largest scale over its contacts and rings (the uniform
+    # chain's numbers are used as they are: the same arithmetic as before arrays existed).
+    def largest(values):
+        return values if chain.uniform else np.max(values, axis=-1)
+
+    along = energy if chain.uniform else energy[..., None]
+    X = largest(((chain.n + 1.0) * along / chain.K) ** (1.0 / (chain.n + 1.0)))
     if chain.K_b is not None:
-        X = X + np.sqrt(2.0 * energy / chain.K_b)
+        X = X + largest(np.sqrt(2.0 * along / chain.K_b))
     X = np.maximum(X, np.max(np.abs(chain.lattice.extension(x0)), axis=-1, initial=0.0))
     return X, speed, energy
 
@@ -247,9 +254,9 @@ def _verlet_step(chain: Chain, X, steps_per_period) -> float:
     """Time step: a fraction of the period of the fastest linearised mode (see module)."""
     lat = chain.lattice
     force = 4.0 * chain.K * X**chain.n  # generous bound on the peak bond force
-    k_max = chain.n * chain.K ** (1.0 / chain.n) * force ** ((chain.n - 1.0) / chain.n)
+    k_max = np.max(chain.n * chain.K ** (1.0 / chain.n) * force ** ((chain.n - 1.0) / chain.n))
     if chain.K_b is not None:
-        k_max = max(k_max, chain.K_b)
+        k_max = max(k_max, np.max(chain.K_b))
     omega_max = 2.0 * np.sqrt(k_max / lat.mass.min())
     return 2.0 * np.pi / omega_max / steps_per_period
 
@@ -1079,7 +1086,8 @@ class Simulation(_Record):
     def wave_speed(self, near: int, far: int, threshold=None) -> float:
         """(far - near) a over the time of flight, m/s (as measured in the paper)."""
         near, far = self._pair(near, far)
-        distance = (far - near) * self.chain.a
+        a = self.chain.a
+        distance = (far - near) * a if np.ndim(a) == 0 else float(np.sum(a[near:far]))  # centre to centre
         return signals.wave_speed(self.t, self.sensor(near), self.sensor(far), distance, threshold)
 
     def pulse_width(self, ring: int, threshold=None) -> float:

@@ -269,6 +269,8 @@ def default_t_end(chain: Chain, speeds, sensors) -> float:
     if speeds.size == 0:
         raise ValueError("speeds must hold at least one impact speed (m/s)")
     far = _sensor_pair(sensors, chain.n_rings)[1]
+    if not chain.uniform:
+        return _varying_t_end(chain, speeds, far)
     if chain.model == "dual-spring":
         K, n = (float(x) for x in fit_power_law(chain.K_c, chain.K_b))
     else:
@@ -280,6 +282,25 @@ def default_t_end(chain: Chain, speeds, sensors) -> float:
     V = float(solitary_wave_speed(force, K, n, chain.a, chain.m))
     width = min(float(solitary_wave_width(n, chain.a)), chain.n_rings * chain.a)
     return (1.5 * far * chain.a + 0.5 * width) / V
+
+
+def _varying_t_end(chain: Chain, speeds, far: int) -> float:
+    """:func:`default_t_end` of a chain that changes along its length: the same estimate contact by
+    contact (each contact's power law, the heaviest ring), the pulse's time summed over the
+    contacts up to the far sensor."""
+    from ringchain.theory import fit_power_law, solitary_wave_speed, solitary_wave_width
+
+    pairs = slice(0, chain.n_rings - 1)
+    if chain.model == "dual-spring":
+        K, n = fit_power_law(chain.profile("K")[pairs], chain.profile("K_b")[: chain.n_rings - 1])
+    else:
+        K, n = chain.profile("K")[pairs], chain.profile("n")[pairs]
+    m, a, speed = float(np.max(chain.m)), chain.profile("a"), float(np.min(speeds))
+    delta = ((n + 1.0) * 0.25 * m * speed**2 / K) ** (1.0 / (n + 1.0))
+    force = np.maximum(0.25 * K * delta**n, float(np.min(chain.m_gravity)) * STANDARD_GRAVITY)
+    V = solitary_wave_speed(force, K, n, a, m)
+    width = min(float(np.max(solitary_wave_width(n, a))), float(np.sum(a)))
+    return float(1.5 * np.sum(a[:far] / V[:far]) + 0.5 * width / np.min(V))
 
 
 def _statics(point: Point) -> dict:

@@ -7,6 +7,7 @@ see :mod:`ringchain.theory._codegen`).
 Static theory of one contact (paper Sec. II, Eqs. 1-4, App. A):
 
 - :func:`hertz_stiffness` -- K_c of two tori, circular or elliptical contact (Eq. 1);
+- :func:`hertz_stiffness_pair` -- K_c of two different tori (radii, materials), for chains that vary;
 - :func:`torus_gap`, :func:`contact_patches` -- the exact gap of two tori beyond its quadratic
   (Hertz) part, and the two contact points it has below theta_min (:mod:`.contact`, Sec. 4);
 - :func:`bending_stiffness` -- K_b of one ring by Castigliano (Eq. 2);
@@ -27,6 +28,8 @@ Linear waves and what the pulse carries (beyond the paper; modules :mod:`.linear
 - :func:`dispersion`, :func:`band_edges`, :func:`sound_speed` -- both lattice models linearised
   about a static force: branches, band edges (where the trailing oscillations sit), long-wave speed;
 - :func:`linear_travel_time` -- a small pulse through the hanging chain, whose weight grades the speed;
+- :func:`impedance`, :func:`junction_coefficients` -- a long wave meeting the junction of two chains:
+  reflected and transmitted force from the two impedances;
 - :func:`solitary_wave_energy`, :func:`solitary_wave_momentum` -- invariants of the compact wave;
 - :func:`impact_amplitude` -- the peak force launched by a striker at speed v0 (F_m ~ v0^(2n/(n+1))).
 
@@ -45,13 +48,22 @@ from .contact import (
     contact_modulus,
     contact_patches,
     hertz_stiffness,
+    hertz_stiffness_pair,
     minimum_contact_angle,
     smallest_patch_angle,
     torus_gap,
 )
 from .curved_beam import inextensional_frequency, ring_frequencies
 from .geometry import MIN_CHAIN_ASPECT_RATIO, PAPER_TUBE_RADIUS, Ring
-from .linear import BandEdges, band_edges, dispersion, linear_travel_time, sound_speed
+from .linear import (
+    BandEdges,
+    band_edges,
+    dispersion,
+    impedance,
+    junction_coefficients,
+    linear_travel_time,
+    sound_speed,
+)
 from .longwave import linear_sound_speed
 from .materials import MATERIALS, STAINLESS_STEEL_304, Material, get_material
 from .pulse import impact_amplitude, solitary_wave_energy, solitary_wave_momentum
@@ -78,6 +90,7 @@ from .solitary import (
 __all__ = [
     "paper_data",
     "hertz_stiffness",
+    "hertz_stiffness_pair",
     "contact_ellipse",
     "minimum_contact_angle",
     "contact_patches",
@@ -112,6 +125,8 @@ __all__ = [
     "BandEdges",
     "sound_speed",
     "linear_travel_time",
+    "impedance",
+    "junction_coefficients",
     "solitary_wave_energy",
     "solitary_wave_momentum",
     "impact_amplitude",

@@ -71,6 +71,13 @@ __all__ = [
     "carlson_form",
     "elliptical_table",
     "hertz_stiffness",
+    "hertz_stiffness_pair",
+    "pair_symbols",
+    "principal_radii_pair",
+    "curvature_sums_pair",
+    "curvature_product_pair",
+    "effective_modulus_pair",
+    "minimum_angle_pair",
     "contact_ellipse",
     "minimum_contact_angle",
     "gap_symbols",
@@ -128,15 +135,24 @@ def curvature_sums():
     """
     s = symbols()
     R, r = s["R"], s["r"]
-    R1p, R1pp, R2p, R2pp = principal_radii()
-    alpha = s["theta"]
+    total, radicand, c = _hertz_sums(*principal_radii())
+    difference = sp.sqrt(sp.factor(radicand)) / 2
+    difference = sp.refine(difference, sp.Q.positive(R - r)).subs(c, sp.cos(s["theta"]))
+    return sp.factor(sp.together(total)), difference
+
+
+def _hertz_sums(R1p, R1pp, R2p, R2pp):
+    """Hertz's A + B and (2 |A - B|)^2 of two bodies with principal radii (R1', R1''), (R2', R2'')
+    whose principal planes meet at the angle theta (App. A, Eqs. (A2a)-(A2b)).
+
+    Returns (A + B, (2 |A - B|)^2 in c = cos(theta), c), with cos(2 theta) = 2 c^2 - 1.
+    """
+    alpha = symbols()["theta"]
     total = sp.Rational(1, 2) * (1 / R1p + 1 / R1pp + 1 / R2p + 1 / R2pp)
     k1, k2 = 1 / R1p - 1 / R1pp, 1 / R2p - 1 / R2pp
     radicand = k1**2 + k2**2 + 2 * k1 * k2 * sp.cos(2 * alpha)
     c = sp.Symbol("c", nonnegative=True)  # cos(theta)
-    difference = sp.sqrt(sp.factor(radicand.subs(sp.cos(2 * alpha), 2 * c**2 - 1))) / 2
-    difference = sp.refine(difference, sp.Q.positive(R - r)).subs(c, sp.cos(alpha))
-    return sp.factor(sp.together(total)), difference
+    return total, radicand.subs(sp.cos(2 * alpha), 2 * c**2 - 1), c
 
 
 def relative_curvatures():
@@ -296,6 +312,66 @@ def elliptical_factor():
     return factor
 
 
+@functools.cache
+def pair_symbols():
+    """Symbols of two different rings: R1, r1, E1, nu1 and R2, r2, E2, nu2 (all positive)."""
+    names = "R_1 r_1 E_1 nu_1 R_2 r_2 E_2 nu_2"
+    return dict(zip(names.replace("_", "").split(), sp.symbols(names, positive=True), strict=True))
+
+
+def principal_radii_pair():
+    """(R1', R1'', R2', R2''): each torus's tube radius r_i and inner-equator radius -(R_i - r_i).
+
+    Step 1 of the module docstring for two different tori; with R2 = R1, r2 = r1 it is
+    :func:`principal_radii`.
+    """
+    p = pair_symbols()
+    return p["r1"], -(p["R1"] - p["r1"]), p["r2"], -(p["R2"] - p["r2"])
+
+
+def curvature_sums_pair():
+    """(A + B, |A - B|) of two different interlocked tori at the contact angle theta (Eqs. (A2a)-(A2b)).
+
+    The generalisation of :func:`curvature_sums` (the tests check that it reduces to it for
+    equal rings): |A - B| = sqrt((k1 - k2)^2 + 4 k1 k2 cos^2 theta)/2 with k_i = 1/r_i + 1/(R_i - r_i).
+    """
+    total, radicand, c = _hertz_sums(*principal_radii_pair())
+    difference = sp.sqrt(sp.factor(radicand)) / 2
+    return sp.factor(sp.together(total)), difference.subs(c, sp.cos(symbols()["theta"]))
+
+
+def curvature_product_pair():
+    """A B = ((A + B)^2 - (A - B)^2)/4 of two different tori, factored.
+
+    A = 2 A B/((A + B) + |A - B|) computes the smaller curvature without the cancellation of
+    (A + B) - |A - B| as theta approaches the angle where A = 0; A B is a difference of two
+    products, (1/r2 - 1/(R1 - r1))(1/r1 - 1/(R2 - r2)) - k1 k2 cos^2 theta, whose sign is that of A.
+    """
+    total, difference = curvature_sums_pair()
+    theta = symbols()["theta"]
+    S = sp.Symbol("S", positive=True)  # sin(theta)^2: cos^2 = 1 - S keeps the sign of A B exact
+    product = sp.factor(sp.expand((total**2 - difference**2) / 4).subs(sp.cos(theta) ** 2, 1 - S))
+    return product.subs(S, sp.sin(theta) ** 2)
+
+
+def minimum_angle_pair():
+    """Angle theta_min of two different tori at which A = 0: sin^2 theta_min = (r1 + r2)(R1 + R2 - r1 - r2)/(R1 R2).
+
+    Solves A B = 0 (:func:`curvature_product_pair`) for sin^2 theta; for equal rings it is
+    :func:`minimum_angle` (4 (r/R)(1 - r/R) = sin^2(2 asin(sqrt(r/R))), checked in the tests).
+    """
+    theta = symbols()["theta"]
+    S = sp.Symbol("S", positive=True)
+    (root,) = sp.solve(curvature_product_pair().subs(sp.sin(theta) ** 2, S), S)
+    return sp.asin(sp.sqrt(sp.factor(root)))
+
+
+def effective_modulus_pair():
+    """E* of two different materials, 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (App. A)."""
+    p = pair_symbols()
+    return effective_modulus(p["E1"], p["nu1"], p["E2"], p["nu2"])
+
+
 def carlson_form(expr):
     """``expr`` in terms of the complementary parameter m_1 = 1 - m, with K(m) -> R_F(0, m_1, 1)
     and E(m) -> R_F - m R_D(0, m_1, 1)/3 (DLMF 19.25.1), by way of the placeholders K_m and
@@ -425,6 +501,28 @@ def _stiffness_of_curvature():
     s = symbols()
     K_c, _ = circular_limit()
     return (s["A"], s["E"], s["nu"]), _material_and_shape(K_c, s["A"])
+
+
+@derived
+def _curvatures_pair():
+    """(A, |A - B|) of two different tori: A = 2 A B/((A + B) + |A - B|) (:func:`curvature_product_pair`)."""
+    p, s = pair_symbols(), symbols()
+    total, difference = curvature_sums_pair()
+    A = 2 * curvature_product_pair() / (total + difference)
+    return (p["R1"], p["r1"], p["R2"], p["r2"], s["theta"]), (A, difference)
+
+
+@derived
+def _minimum_angle_pair():
+    p = pair_symbols()
+    return (p["R1"], p["r1"], p["R2"], p["r2"]), minimum_angle_pair()
+
+
+@derived
+def _stiffness_of_curvature_pair():
+    p, s = pair_symbols(), symbols()
+    K_c, Es = circular_limit()
+    return (s["A"], p["E1"], p["nu1"], p["E2"], p["nu2"]), K_c.subs(Es, effective_modulus_pair())
 
 
 @derived
@@ -659,6 +757,86 @@ def hertz_stiffness(R, r, E, nu, angle=np.pi / 2):
             s = np.log1p(np.log1p(excess, out=excess if isinstance(excess, np.ndarray) else None))
             material, curvature = _stiffness_of_curvature(A, E, nu)
             K_c = _times(_times(_from_table(0, s, overwrite=True), curvature), material)
+    return v.finite_result(K_c, "K_c", "radii and elastic constants")
+
+
+def hertz_stiffness_pair(R1, r1, E1, nu1, R2, r2, E2, nu2, angle=np.pi / 2):
+    """Hertz contact stiffness K_c of two different interlocked tori, F = K_c delta^(3/2).
+
+    Parameters
+    ----------
+    R1, r1 : array_like
+        Major and tube radius of the first torus, m (R1 > 2 r1).
+    E1, nu1 : array_like
+        Its Young's modulus (Pa) and Poisson's ratio (in (-1, 0.5)).
+    R2, r2, E2, nu2 : array_like
+        The same for the second torus.
+    angle : array_like, optional
+        Contact angle theta between the ring planes, rad, in (0, pi/2]; default pi/2.  The
+        single elliptical contact needs A > 0 (below, the tori touch along a line or at two
+        patches, as for equal rings: :func:`minimum_contact_angle`).
+
+    Returns
+    -------
+    ndarray
+        K_c in N/m^1.5; symmetric in the two rings, and equal to :func:`hertz_stiffness`
+        (to its last digit: that evaluation is used) when the rings are the same.
+
+    Notes
+    -----
+    App. A of the paper (Eqs. (A2a)-(A2b)) with the principal radii of two different tori
+    (:func:`curvature_sums_pair`), the effective modulus of two materials
+    (:func:`effective_modulus_pair`), and the exact elliptical Hertz solution of
+    :func:`hertz_stiffness`: K_c = K_c(0, A) Gamma(m), Gamma from the same table
+    (:func:`elliptical_table`) at the shape B/A of this pair.  For perpendicular rings of
+    equal proportions it is Eq. (1).  The centre distance of the two rings is
+    (R1 - r1) + (R2 - r2).
+
+    Examples
+    --------
+    >>> K_c = hertz_stiffness_pair(22.5e-3, 2.5e-3, 193e9, 0.29, 15e-3, 2.5e-3, 193e9, 0.29)
+    >>> round(float(K_c) / 1e9, 3)  # GN/m^1.5: between the two rings' own 7.509 and 7.853
+    7.68
+    """
+    R1, r1 = _check_geometry(R1, r1)
+    R2, r2 = _check_geometry(R2, r2)
+    E1, nu1 = _check_material(E1, nu1)
+    E2, nu2 = _check_material(E2, nu2)
+    angle = _check_angle(angle)
+    v.broadcast_shape(R1=R1, r1=r1, E1=E1, nu1=nu1, R2=R2, r2=r2, E2=E2, nu2=nu2, angle=angle)
+    if np.array_equal(R1, R2) and np.array_equal(r1, r2) and np.array_equal(E1, E2) and np.array_equal(nu1, nu2):
+        return hertz_stiffness(R1, r1, E1, nu1, angle)  # the pair of identical tori
+    return _pair_stiffness(R1, r1, E1, nu1, R2, r2, E2, nu2, angle)
+
+
+def _pair_stiffness(R1, r1, E1, nu1, R2, r2, E2, nu2, angle):
+    """:func:`hertz_stiffness_pair` of checked arrays, by the two-torus derivation (also for equal rings)."""
+    with np.errstate(all="ignore"):
+        A, difference = _curvatures_pair(R1, r1, R2, r2, angle)
+        excess = difference / A
+    if not np.asarray(A).min() > 0:
+        with np.errstate(all="ignore"):
+            limit = _minimum_angle_pair(R1, r1, R2, r2)
+        shape = np.broadcast_shapes(*(np.shape(x) for x in (A, angle, limit)))
+        bad = ~(np.broadcast_to(A, shape) > 0)
+        given, at = np.broadcast_to(angle, shape)[bad].min(), np.broadcast_to(limit, shape)[bad].max()
+        reason = (
+            f"at or below the smallest angle of a single contact of this pair, {v.show(at)} rad "
+            f"({np.degrees(at):.6g} deg)" if np.isfinite(at) else
+            "impossible for this pair: the tubes are too thick for the holes, (r1 + r2)(R1 + R2 - r1 - r2) > R1 R2"
+        )  # fmt: skip
+        raise ValueError(
+            f"angle {v.show(given)} rad ({np.degrees(given):.6g} deg) is {reason}: the elliptical Hertz contact "
+            "of the two tori does not apply"
+        )
+    if not np.asarray(excess).max() <= _TABLE_MAX_EXCESS:
+        raise ValueError(
+            f"the contact ellipse is too elongated to represent (ln(B/A) > {_TABLE_MAX_LOG_RATIO:g}): the angle "
+            "lies within rounding of the smallest angle of a single contact of this pair"
+        )
+    with np.errstate(all="ignore"):
+        s = np.log1p(np.log1p(np.maximum(excess, 0.0)))
+        K_c = _from_table(0, s) * _stiffness_of_curvature_pair(A, E1, nu1, E2, nu2)
     return v.finite_result(K_c, "K_c", "radii and elastic constants")
 
 

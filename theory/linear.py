@@ -42,6 +42,18 @@ of the dual-spring ring is linear anyway.  Step by step:
    sum over the cells between them (the WKB, or ray, approximation: the speed
    changes slowly on the scale of the pulse).
 
+8. :func:`junction_symbolic` -- two chains joined end to end.  In the long-wave limit
+   each chain is a string of mass m/a per length and axial stiffness k a, whose
+   waves travel at the :func:`sound_speed` c = a sqrt(k/m); its impedance (force over
+   velocity of a travelling wave) is Z = m c/a = sqrt(m k) (:func:`impedance`).  A wave
+   arriving from chain 1 at the junction keeps the displacement and the force
+   continuous there; solving these two conditions gives the reflected and transmitted
+   force amplitudes R = (Z2 - Z1)/(Z1 + Z2) and T = 2 Z2/(Z1 + Z2)
+   (:func:`junction_coefficients`), with R^2 + (Z1/Z2) T^2 = 1 (energy).  A pulse going
+   into a stiffer or heavier chain (Z2 > Z1) is reflected with the same sign and
+   transmitted stronger in force; into a softer one, reflected inverted (a drop of
+   tension) and transmitted weaker.
+
 Which frequency rings behind a pulse?  A disturbance at a fixed ring is left, long
 after the front has passed, with the frequencies whose group velocity d omega/dq is
 zero: the band edges.  The edge 2 sqrt(K_b/m) -- each ring's two halves swinging
@@ -88,6 +100,9 @@ __all__ = [
     "band_edges",
     "sound_speed",
     "linear_travel_time",
+    "junction_symbolic",
+    "impedance",
+    "junction_coefficients",
 ]
 
 #: The two lattice models of paper Sec. III.B, by the names :mod:`ringchain.numerics` uses.
@@ -250,6 +265,30 @@ def dual_spring_sound_speed():
     s = symbols()
     acoustic, _ = dual_spring_branches()
     return _square_roots_simplified(sp.limit(sp.sqrt(acoustic) / s["q"], s["q"], 0))
+
+
+@functools.cache
+def junction_symbolic():
+    """(R, T): reflected and transmitted force over incident force at the junction of two chains.
+
+    Step 8 of the module docstring.  Chain i is, at long wavelengths, a string with wave
+    speed c_i and impedance Z_i (axial stiffness per length Z_i c_i).  With the junction at
+    x = 0, a harmonic incident wave exp(i w (t - x/c1)), the reflected one
+    r exp(i w (t + x/c1)) and the transmitted one t exp(i w (t - x/c2)) of displacement,
+    continuity of displacement and of force (Z c du/dx) fixes r and t; the force amplitudes
+    are -i w Z1, i w Z1 r and -i w Z2 t.  Returns expressions in ``Z_1``, ``Z_2``.
+    """
+    Z1, Z2, c1, c2, w = sp.symbols("Z_1 Z_2 c_1 c_2 omega", positive=True)
+    r, t, x, time = sp.symbols("r t x time")
+    u1 = sp.exp(sp.I * w * (time - x / c1)) + r * sp.exp(sp.I * w * (time + x / c1))
+    u2 = t * sp.exp(sp.I * w * (time - x / c2))
+    force1, force2 = Z1 * c1 * sp.diff(u1, x), Z2 * c2 * sp.diff(u2, x)
+    conditions = [(u1 - u2).subs(x, 0), (force1 - force2).subs(x, 0)]
+    solution = sp.solve(conditions, [r, t], dict=True)[0]
+    incident = -sp.I * w * Z1
+    reflected = sp.I * w * Z1 * solution[r]
+    transmitted = -sp.I * w * Z2 * solution[t]
+    return sp.factor(sp.simplify(reflected / incident)), sp.factor(sp.simplify(transmitted / incident))
 
 
 def _at_force(expr):
@@ -460,6 +499,75 @@ def sound_speed(*, model, F0, K, n, m, a, K_b=None):
     with np.errstate(all="ignore"):  # overflow is reported below, by value
         speed = np.asarray(_dual_spring_speed(F0, K, n, m, a, K_b), dtype=float)
     return v.finite_result(speed, "the sound speed", _CHAIN)
+
+
+@derived
+def _junction():
+    Z1, Z2 = sp.symbols("Z_1 Z_2", positive=True)
+    return (Z1, Z2), sp.Tuple(*junction_symbolic())
+
+
+def impedance(*, model, F0, K, n, m, a, K_b=None):
+    """Impedance of a chain to long linear waves under static force F0, N s/m.
+
+    Parameters
+    ----------
+    model, F0, K, n, m, a, K_b
+        As in :func:`dispersion`.
+
+    Returns
+    -------
+    ndarray
+        Z = m c/a = sqrt(m k): the force carried by a long travelling wave over the
+        velocity of its rings, with c the :func:`sound_speed` and k the chain's tangent
+        stiffness per ring (the contact's, or contact and ring body in series, Eq. (3)).
+
+    Notes
+    -----
+    Step 8 of the module docstring.  Beyond the paper.
+
+    Examples
+    --------
+    >>> float(impedance(model="power-law", F0=1.0, K=4.0, n=1.0, m=1.0, a=2.0))  # sqrt(m K)
+    2.0
+    """
+    c = sound_speed(model=model, F0=F0, K=K, n=n, m=m, a=a, K_b=K_b)
+    return np.asarray(v.positive("m", m, "kg") * c / v.positive("a", a, "m"), dtype=float)
+
+
+def junction_coefficients(Z1, Z2):
+    """Reflection and transmission of a long linear wave's force at the junction of two chains.
+
+    Parameters
+    ----------
+    Z1 : array_like
+        :func:`impedance` of the chain the wave comes from, N s/m.
+    Z2 : array_like
+        Impedance of the chain it goes into, N s/m.
+
+    Returns
+    -------
+    R, T : ndarray
+        Reflected and transmitted force over incident force: (Z2 - Z1)/(Z1 + Z2) and
+        2 Z2/(Z1 + Z2) (:func:`junction_symbolic`).  The energy fluxes F^2/Z balance:
+        R^2 + (Z1/Z2) T^2 = 1.
+
+    Notes
+    -----
+    Long-wave limit (the pulse spans many rings): the junction is then a point, whatever
+    the contact that makes it.  Small amplitudes about a pre-stretched state; a pulse
+    in a chain without static force is nonlinear at any amplitude (the sonic vacuum).
+    Beyond the paper.
+
+    Examples
+    --------
+    >>> [float(x) for x in junction_coefficients(1.0, 3.0)]
+    [0.5, 1.5]
+    """
+    Z1, Z2 = v.positive("Z1", Z1, "N s/m"), v.positive("Z2", Z2, "N s/m")
+    v.broadcast_shape(Z1=Z1, Z2=Z2)
+    R, T = _junction(Z1, Z2)
+    return np.asarray(R, dtype=float), np.asarray(T, dtype=float)
 
 
 def _ring_index(name, value):

@@ -97,6 +97,7 @@ def test_every_public_function_is_covered():
     data = {"paper_data", "DEFAULT_FORCE_WINDOW", "MIN_CHAIN_ASPECT_RATIO", "PAPER_TUBE_RADIUS", "MATERIALS"}
     data |= {"curved_beam"}  # a module: its public functions are ring_frequencies and inextensional_frequency
     data |= {"STAINLESS_STEEL_304"}
+    covered |= HETERO_COVERED  # issue 13: the block at the end of this file
     assert set(theory.__all__) == covered | data
 
 
@@ -476,3 +477,63 @@ def test_ring_modes_admissible_range(r, aspect, E, nu, rho, k, kind, options):
         assert np.all(frequencies >= 0) and np.all(np.diff(frequencies) >= 0)
     if classical is not None:
         assert classical > 0
+
+
+# --- issue 13: chains that change along their length (hertz_stiffness_pair, junction theory) ------------
+# Kept in one block so that it merges beside the other additions to this file.
+
+HETERO_COVERED = {"hertz_stiffness_pair", "impedance", "junction_coefficients"}
+
+
+@SETTINGS
+@given(ANY, ANY, ANY, ANY, ANY, ANY, ANY, ANY, ANY)
+def test_hertz_pair_any_input(R1, r1, E1, nu1, R2, r2, E2, nu2, angle):
+    finite_or_refused(lambda: theory.hertz_stiffness_pair(R1, r1, E1, nu1, R2, r2, E2, nu2, angle))
+
+
+@SETTINGS
+@given(
+    r1=log_uniform(1e-9, 1e3),
+    aspect1=log_uniform(2.0 + 1e-9, 1e6),
+    r_ratio=log_uniform(1e-3, 1e3),
+    aspect2=log_uniform(2.0 + 1e-9, 1e6),
+    E1=log_uniform(1e3, 1e15),
+    E2=log_uniform(1e3, 1e15),
+    nu1=st.floats(-0.999, 0.499),
+    nu2=st.floats(-0.999, 0.499),
+    fraction=st.one_of(st.floats(0.0, 1.0), log_uniform(1e-17, 1e-3)),
+)
+def test_hertz_pair_admissible_range(r1, aspect1, r_ratio, aspect2, E1, E2, nu1, nu2, fraction):
+    r2 = r1 * r_ratio
+    R1, R2 = aspect1 * r1, aspect2 * r2
+    angle = np.pi / 2 - fraction * np.pi / 4
+    K = finite_or_refused(lambda: theory.hertz_stiffness_pair(R1, r1, E1, nu1, R2, r2, E2, nu2, angle))
+    if K is not None:
+        assert K > 0
+
+
+@SETTINGS
+@given(ANY, ANY, ANY, ANY, ANY, ANY, ANY)
+def test_junction_any_input(Z1, Z2, F0, K, n, m, a):
+    finite_or_refused(lambda: theory.junction_coefficients(Z1, Z2))
+    finite_or_refused(lambda: theory.impedance(model="power-law", F0=F0, K=K, n=n, m=m, a=a))
+    finite_or_refused(lambda: theory.impedance(model="dual-spring", F0=F0, K=K, n=n, m=m, a=a, K_b=Z1))
+
+
+@SETTINGS
+@given(
+    Z1=log_uniform(1e-100, 1e100),
+    Z2=log_uniform(1e-100, 1e100),
+    F0=log_uniform(1e-30, 1e30),
+    K=log_uniform(1e-30, 1e30),
+    n=st.floats(1.0, 3.0),
+    m=log_uniform(1e-30, 1e30),
+    a=log_uniform(1e-30, 1e30),
+)
+def test_junction_admissible_range(Z1, Z2, F0, K, n, m, a):
+    coefficients = finite_or_refused(lambda: theory.junction_coefficients(Z1, Z2))
+    if coefficients is not None:
+        R, T = coefficients
+        assert -1 <= R <= 1 and 0 <= T <= 2
+    Z = finite_or_refused(lambda: theory.impedance(model="dual-spring", F0=F0, K=K, n=n, m=m, a=a, K_b=K))
+    assert Z is None or Z >= 0

@@ -1,0 +1,245 @@
+"""Chains that change along their length: per-ring and per-contact parameters, integration, energy."""
+
+import numpy as np
+import pytest
+from ringchain.numerics import Chain, initial_state, simulate, simulate_batch
+from ringchain.numerics.junction import junction_pulse
+from ringchain.numerics.models import STANDARD_GRAVITY as G
+from ringchain.theory import Ring, fit_power_law, hertz_stiffness_pair
+
+RNG_SEED = 13
+
+
+def _power_law(n_rings=8, support="fixed", **over):
+    rng = np.random.default_rng(RNG_SEED)
+    contacts = n_rings - 1 + (support == "fixed")
+    args = dict(
+        K=4.9e6 * rng.uniform(0.5, 2.0, contacts), n=rng.uniform(1.05, 1.6, contacts),
+        m=8.2e-3 * rng.uniform(0.5, 2.0, n_rings), a=0.04 * rng.uniform(0.8, 1.2, n_rings - 1),
+    ) | over  # fmt: skip
+    return Chain.power_law(n_rings, support=support, **args)
+
+
+def _dual_spring(n_rings=8, support="fixed", **over):
+    rng = np.random.default_rng(RNG_SEED + 1)
+    contacts = n_rings - 1 + (support == "fixed")
+    args = dict(
+        K_c=7.5e9 * rng.uniform(0.5, 2.0, contacts), K_b=3.3e6 * rng.uniform(0.5, 2.0, n_rings),
+        m=8.2e-3 * rng.uniform(0.5, 2.0, n_rings), a=0.04, m_gravity=2.2e-2 * rng.uniform(0.5, 2.0, n_rings),
+    ) | over  # fmt: skip
+    return Chain.dual_spring(n_rings, support=support, **args)
+
+
+def test_arrays_of_one_value_are_the_uniform_chain():
+    uniform = Chain.dual_spring(5, K_c=7.5e9, K_b=3.3e6, m=8.2e-3, a=0.04)
+    arrays = Chain.dual_spring(5, K_c=np.full(5, 7.5e9), K_b=[3.3e6] * 5, m=np.full(5, 8.2e-3), a=np.full(4, 0.04))
+    assert arrays == uniform and hash(arrays) == hash(uniform) and arrays.uniform
+    assert isinstance(arrays.K, float)  # stored as the number: the same code and rounding as the scalar chain
+    varied = Chain.dual_spring(5, K_c=[7.5e9] * 4 + [8e9], K_b=3.3e6, m=8.2e-3, a=0.04)
+    assert varied != uniform and not varied.uniform
+    assert varied.profile("K").tolist() == [7.5e9] * 4 + [8e9]
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "message"),
+    [
+        (dict(K=np.ones(3)), r"K must be one number or 5 values \(one per contact\), got shape \(3,\)"),
+        (dict(m=np.ones(4)), r"m must be one number or 5 values \(one per ring\)"),
+        (dict(a=np.ones(5)), r"a must be one number or 4 values \(one per pair of neighbouring rings\)"),
+        (dict(n=[1.2, 1.2, 0.9, 1.2, 1.2]), r"n must lie in \[1, inf\)"),
+        (dict(K=[1.0, 1.0, -1.0, 1.0, 1.0]), "K must be positive"),
+        (dict(gamma=np.ones((5, 1))), r"gamma must be one number or 5 values"),
+    ],
+)
+def test_per_contact_and_per_ring_arrays_are_validated(kwargs, message):
+    args = dict(n_rings=5, K=2e6, n=1.2, m=0.01, a=0.04) | kwargs
+    with pytest.raises(ValueError, match=message):
+        Chain.power_law(**args)
+
+
+def test_a_free_chain_has_one_contact_less():
+    chain = _power_law(support="free")
+    assert chain.n_contacts == 7 and chain.lattice.n_bonds == 7
+    np.testing.assert_array_equal(chain.lattice.K_contact, chain.K)
+    np.testing.assert_array_equal(chain.lattice.n, chain.n)
+
+
+def test_the_lattice_places_each_parameter_on_its_bond_and_site():
+    chain = _dual_spring(4)
+    lat = chain.lattice
+    np.testing.assert_array_equal(lat.K_contact[1::2], chain.K)
+    np.testing.assert_array_equal(lat.K_spring[0::2], chain.K_b)
+    np.testing.assert_array_equal(lat.mass, np.repeat(chain.m / 2, 2))
+    np.testing.assert_array_equal(lat.weight_mass, np.repeat(chain.m_gravity / 2, 2))
+
+
+@pytest.mark.parametrize("build", [_power_law, _dual_spring])
+def test_hanging_equilibrium_of_a_varying_chain_is_at_rest(build):
+    chain = build()
+    x, _ = initial_state(chain)
+    a = chain.lattice.accelerations(x[0], np.zeros(chain.n_sites), G)
+    # Static extensions invert each bond's own law exactly; the residual accelerations are
+    # rounding of forces ~ total weight (~1 N) over masses of grams: 1e-13 relative of g.
+    assert np.abs(a).max() < 1e-9 * G
+
+
+@pytest.mark.parametrize("build", [_power_law, _dual_spring])
+def test_fast_path_of_a_varying_chain_is_newtons_law(build):
+    """The undamped stepper (per-bond coefficients, per-site masses) against the plain sum of bond forces."""
+    chain = build()
+    lat = chain.lattice
+    x = np.random.default_rng(RNG_SEED).normal(scale=1e-6, size=(3, chain.n_sites))
+    f = lat.bond_forces(lat.extension(x))
+    below = np.pad(f, ((0, 0), (1, 0)))[:, : lat.n_sites]
+    expected = (f[:, : lat.n_sites] - below - lat.weight_mass * G) / lat.mass
+    # Same operations in another order: rounding, relative 1e-15 of the largest acceleration.
+    np.testing.assert_allclose(lat.accelerations(x, None, G), expected, rtol=0, atol=1e-13 * np.abs(expected).max())
+
+
+CASES = {
+    "power-law: K, n, m, a per ring/contact": lambda: _power_law(),
+    "power-law free end": lambda: _power_law(support="free"),
+    "dual-spring: K_c, K_b, m, m_gravity": lambda: _dual_spring(),
+    "dual-spring free end": lambda: _dual_spring(support="free"),
+    "alternating masses only": lambda: Chain.power_law(8, K=4.9e6, n=1.11, m=[8e-3, 2e-3] * 4, a=0.04),
+    "stiffness step only": lambda: Chain.dual_spring(8, K_c=[7.5e9] * 4 + [2e9] * 4, K_b=3.3e6, m=8e-3, a=0.04),
+}
+
+
+@pytest.mark.parametrize("method", ["odeint", "verlet"])
+@pytest.mark.parametrize("case", list(CASES))
+def test_energy_is_conserved_without_dashpots_on_every_kind_of_varying_chain(case, method):
+    chain = CASES[case]()
+    gravity = chain.support == "fixed"
+    sim = simulate(chain, 5e-4, impact_velocity=0.5, gravity=gravity, method=method, n_samples=201)
+    energy = sim.energy()
+    assert np.all(energy.dissipated == 0.0)
+    drift = np.abs(energy.total - energy.total[0]).max() / energy.kinetic[0]
+    # As for the uniform chain (tests/numerics/test_solve.py): LSODA at rtol 1e-9 over a short run
+    # (measured 2e-9 to 5e-8); Verlet's shadow energy at 60 steps per period, O((omega dt)^2) ~ 1e-3
+    # (measured 1.5e-5 to 3.6e-4).
+    assert drift < (1e-3 if method == "verlet" else 1e-6)
+
+
+@pytest.mark.parametrize("model", ["dual-spring", "power-law"])
+def test_dashpots_per_contact_and_per_ring_only_remove_energy(model):
+    rng = np.random.default_rng(RNG_SEED)
+    if model == "dual-spring":
+        chain = _dual_spring(6, gamma_c=rng.uniform(0, 4, 6), gamma_b=rng.uniform(0, 4, 6))
+    else:  # per-contact exponents through the general (damped) path
+        chain = _power_law(6, gamma=rng.uniform(0, 4, 6))
+    batch = simulate_batch(chain, 5e-4, drop_heights=[0.02, 0.05], n_samples=201)
+    energy = batch.energy()
+    assert np.all(np.diff(energy.dissipated, axis=-1) >= 0) and energy.dissipated[:, -1].min() > 0
+    # total (dissipated included) is conserved to the integration error (rtol 1e-9 scales; measured ~1e-9).
+    drift = np.abs(energy.total - energy.total[..., :1]).max(axis=-1) / energy.kinetic[:, 0]
+    assert drift.max() < 1e-6
+
+
+def test_odeint_and_verlet_agree_on_a_varying_chain():
+    chain = _power_law()
+    a = simulate(chain, 3e-4, drop_height=0.05, n_samples=61, rtol=1e-11)
+    b = simulate(chain, 3e-4, drop_height=0.05, n_samples=61, method="verlet", steps_per_period=400)
+    # Verlet at 400 steps per period: second-order error ~ (2 pi/400)^2 ~ 2.5e-4 of the force.
+    np.testing.assert_allclose(b.sensor_force, a.sensor_force, rtol=0, atol=1e-3 * np.abs(a.sensor_force).max())
+
+
+def test_wave_speed_of_a_varying_chain_uses_the_real_distance():
+    chain = _power_law(12)
+    sim = simulate(chain, 2e-3, drop_height=0.05, n_samples=4001)
+    distance = float(np.sum(chain.a[1:5]))
+    assert sim.wave_speed(1, 5) == pytest.approx(distance / sim.time_of_flight(1, 5), rel=1e-12)
+
+
+# -- chains of given rings ---------------------------------------------------------------------------
+
+NINE, SIX = Ring.from_aspect_ratio(9.0), Ring.from_aspect_ratio(6.0)
+
+
+@pytest.mark.parametrize("support", ["fixed", "free"])
+@pytest.mark.parametrize("model", ["dual-spring", "power-law"])
+def test_a_uniform_chain_built_ring_by_ring_is_exactly_the_uniform_chain(model, support):
+    built = Chain.from_rings([NINE] * 6, model=model, m_eff_ratio=0.37, support=support)
+    assert built == Chain.from_ring(NINE, 6, model, m_eff_ratio=0.37, support=support)
+    assert built.uniform
+
+
+def test_each_contact_from_the_two_rings_it_joins():
+    chain = Chain.from_rings([NINE, NINE, SIX, SIX], angles=[np.pi / 2, 1.2, np.pi / 2, 1.3])
+    steel = (NINE.material.E, NINE.material.nu)
+    assert chain.K[1] == hertz_stiffness_pair(NINE.R, NINE.r, *steel, SIX.R, SIX.r, *steel, 1.2)
+    assert chain.K[0] == NINE.K_c and chain.K[2] == SIX.K_c
+    assert chain.K[3] == Ring.from_aspect_ratio(6.0, angle=1.3).K_c  # the support: the top ring's like
+    assert chain.K_b.tolist() == [NINE.K_b, NINE.K_b, SIX.K_b, SIX.K_b]
+    # Centre distances: 2(R - r) between equal rings, (R1 - r1) + (R2 - r2) at the change.
+    np.testing.assert_array_equal(chain.a, [NINE.spacing, (NINE.R - NINE.r) + (SIX.R - SIX.r), SIX.spacing])
+    assert chain.m_gravity.tolist() == [NINE.mass, NINE.mass, SIX.mass, SIX.mass]
+
+
+def test_power_law_contacts_fit_the_series_law_of_contact_and_ring_below():
+    chain = Chain.from_rings([NINE, SIX, SIX], model="power-law", support="free")
+    steel = (NINE.material.E, NINE.material.nu)
+    K, n = fit_power_law(hertz_stiffness_pair(NINE.R, NINE.r, *steel, SIX.R, SIX.r, *steel), NINE.K_b)
+    assert (chain.K[0], chain.n[0]) == (float(K), float(n))
+    assert (chain.K[1], chain.n[1]) == SIX.power_law()
+
+
+@pytest.mark.parametrize("profile", ["linear", "geometric"])
+def test_graded_chains_space_their_values_as_asked(profile):
+    chain = Chain.graded(NINE, 6, aspect_ratio=(9.0, 5.0), profile=profile)
+    R = (chain.m_gravity / NINE.mass) * NINE.R  # ring mass grows with R at fixed r (Pappus)
+    expected = np.linspace(9.0, 5.0, 6) if profile == "linear" else np.geomspace(9.0, 5.0, 6)
+    np.testing.assert_allclose(R / NINE.r, expected, rtol=1e-14)  # rounding of mass ratios
+    angled = Chain.graded(NINE, 6, angle=(np.pi / 2, 1.0), profile=profile, support="free")
+    assert angled.K[0] == NINE.K_c and np.all(np.diff(angled.K) > 0)  # flatter contacts are stiffer (Gamma > 1)
+
+
+def test_alternating_and_joined_chains():
+    alternating = Chain.alternating(NINE, SIX, 5, angles=[np.pi / 2, 1.2] * 2 + [np.pi / 2])
+    assert alternating.K_b.tolist() == [NINE.K_b, SIX.K_b] * 2 + [NINE.K_b]
+    a, b = Chain.from_ring(NINE, 4), Chain.from_ring(SIX, 3, support="free")
+    joined = Chain.joined(a, b)
+    assert joined.n_rings == 7 and joined.support == "free" and joined.n_contacts == 6
+    assert joined.K.tolist() == [NINE.K_c] * 4 + [SIX.K_c] * 2  # a's support contact is the junction
+    assert joined.a.tolist() == [NINE.spacing] * 3 + [0.5 * (NINE.spacing + SIX.spacing)] + [SIX.spacing] * 2
+    custom = Chain.joined(a, b, junction={"K": 1e9, "a": 0.03})
+    assert custom.K[3] == 1e9 and custom.a[3] == 0.03
+    with pytest.raises(ValueError, match="one model"):
+        Chain.joined(a, Chain.from_ring(SIX, 3, "power-law"))
+    with pytest.raises(ValueError, match=r"junction takes K, n, gamma and a, got \['K_b'\]"):
+        Chain.joined(a, b, junction={"K_b": 1.0})
+
+
+@pytest.mark.parametrize(
+    ("call", "message"),
+    [
+        (lambda: Chain.from_rings([NINE]), "at least two rings"),
+        (lambda: Chain.from_rings([NINE, "ring"]), r"rings\[1\] must be a ringchain.theory.Ring"),
+        (lambda: Chain.from_rings([NINE, Ring.from_aspect_ratio(2.5)]), r"rings\[1\]: R/r = 2.5 is below 3"),
+        (lambda: Chain.from_rings([NINE, NINE], angles=[1.0, 1.2, 1.3]), r"angles must be one angle or 2"),
+        (lambda: Chain.from_rings([NINE, NINE], angles=0.5), r"contact of rings 0 and 1: angle 0.5 rad"),
+        (lambda: Chain.graded(NINE, 4), "give one of aspect_ratio"),
+        (lambda: Chain.graded(NINE, 4, aspect_ratio=(9, 5, 3)), r"aspect_ratio must be two values"),
+        (lambda: Chain.graded(NINE, 4, angle=(1.0, 1.2), profile="cubic"), "profile must be one of"),
+    ],
+)
+def test_ring_by_ring_constructors_name_the_bad_input(call, message):
+    with pytest.raises((ValueError, TypeError), match=message):
+        call()
+
+
+# -- the junction of two chains: small amplitudes against the impedance theory -----------------------
+
+
+@pytest.mark.parametrize("model", ["power-law", "dual-spring"])
+@pytest.mark.parametrize(("stiffness", "mass"), [(4.0, 1.0), (0.25, 1.0), (1.0, 3.0)])
+def test_small_pulse_at_a_junction_against_the_impedance_theory(model, stiffness, mass):
+    K1 = 4.9e6 if model == "power-law" else 7.5e9
+    reading = junction_pulse(model, (K1, stiffness * K1), (8e-3, mass * 8e-3))
+    R, T, R_theory, T_theory = reading.R, reading.T, reading.R_theory, reading.T_theory
+    assert abs(R_theory) > 0.04  # a junction that reflects
+    # Long-wave theory against a pulse 4 rings wide (dispersion ~ (a/w)^2/24 ~ 0.3 %) of 2 % of the
+    # static force (the tangent stiffness changes by (n - 1)/n of that, ~0.7 %, Z by half): 1 % of
+    # the incident force covers both (measured up to 0.72 %, R of the power-law chain with m2 = 3 m1).
+    assert R == pytest.approx(R_theory, abs=0.01)
+    assert T == pytest.approx(T_theory, abs=0.01)
