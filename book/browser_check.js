@@ -24,6 +24,7 @@
     const container = el.closest("mjx-container");
     if (container && container !== el) continue;      // MathJax internals: the container speaks for them
     if (el.closest("mjx-assistive-mml, script, style, .headerlink")) continue;
+    if (el.closest("details:not([open])") && !el.closest("summary")) continue;  // folded: the reader sees none of it
     const rect = el.getBoundingClientRect();
     if (rect.width === 0 && rect.height === 0) continue;  // folded or hidden
     let clipped = false;

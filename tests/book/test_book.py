@@ -109,6 +109,7 @@ def test_mathjax_is_never_committed_and_never_in_static():
 def _newest_source_mtime() -> float:
     paths = [*BOOK.glob("*.md"), *BOOK.glob("*.yml"), *BOOK.glob("*.py")]
     paths += [BOOK / "references.bib", BOOK / "matplotlibrc"]
+    paths += [BOOK / "browser_check.js", *(BOOK / "_css").glob("*.css")]
     paths += [*(ROOT / "theory").glob("*.py"), *(ROOT / "numerics").glob("*.py")]
     return max(p.stat().st_mtime for p in paths)
 
