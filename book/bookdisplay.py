@@ -37,6 +37,11 @@ COLOURS = {
     "R/r = 9": "#1f77b4",
     "R/r = 6": "#ff7f0e",
     "R/r = 5.5": "#2ca02c",
+    # other aspect ratios of the paper (finite elements, Table II)
+    "R/r = 3.1": "#8c564b",
+    "R/r = 4": "#7f7f7f",
+    "R/r = 8": "#bcbd22",
+    "R/r = 10": "#17becf",
 }
 
 #: Drop heights used by every chapter, m; the paper does not give its own.  ``LOW_DROP`` and ``HIGH_DROP``
