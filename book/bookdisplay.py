@@ -3,14 +3,76 @@
 They only format what the package returns: an equation is ``sympy.latex`` of the package's
 expression, with derivatives of the fields written as subscripts (u_xx for d^2u/dx^2) and
 long sums broken over lines; a table is Markdown built from numbers the page computed.
+An equation typed for the reader (a labelled ``{math}`` block) is checked by :func:`textbook`.
+
+The book's conventions live here too, defined once: the colour of each quantity in every figure
+(:data:`COLOURS`) and the drop heights of the experiment (:data:`DROP_HEIGHTS`).
 """
 
 from __future__ import annotations
 
+import random
+
 import sympy as sp
 from IPython.display import Markdown, Math, display
 
-__all__ = ["compact", "grouped", "show", "table"]
+__all__ = ["COLOURS", "DROP_HEIGHTS", "HIGH_DROP", "LOW_DROP", "compact", "grouped", "show", "table", "textbook"]
+
+#: One colour per quantity across the book (Matplotlib colours).  Sensors and models keep theirs in every
+#: chapter; the paper's own numbers are always black markers.
+COLOURS = {
+    "ring 6": "#1f77b4",  # the sensor nearer the impact
+    "ring 12": "#ff7f0e",  # the sensor further up
+    "dual-spring": "#2ca02c",
+    "power-law": "#d62728",
+    "rings that bend": "#444444",
+    "paper": "black",
+    "theory": "#1f77b4",  # a closed form of the package
+    "numerics": "#9467bd",  # boundary elements, lattice points
+    "kinetic": "#8c564b",
+    "contact": "#e377c2",
+    "bending": "#17becf",
+    "gravity": "#bcbd22",
+    # the three rings of the paper's Table I
+    "R/r = 9": "#1f77b4",
+    "R/r = 6": "#ff7f0e",
+    "R/r = 5.5": "#2ca02c",
+    # other aspect ratios of the paper (finite elements, Table II)
+    "R/r = 3.1": "#8c564b",
+    "R/r = 4": "#7f7f7f",
+    "R/r = 8": "#bcbd22",
+    "R/r = 10": "#17becf",
+}
+
+#: Drop heights used by every chapter, m; the paper does not give its own.  ``LOW_DROP`` and ``HIGH_DROP``
+#: stand for the low- and high-amplitude experiments of the paper's Fig. 1 d and e.
+DROP_HEIGHTS = (2e-3, 10e-3, 50e-3, 0.2, 0.5)
+LOW_DROP, HIGH_DROP = 2e-3, 50e-3
+
+
+def textbook(label: str, typed, derived, *, samples: int = 6) -> None:
+    """Fail the build unless ``typed`` (the page's typed form, in SymPy) equals the package's ``derived``.
+
+    SymPy must simplify the difference to zero, or, where its simplifier gives up on an identity, the two
+    must agree to 1e-25 (relative; the evaluation carries 40 digits) at ``samples`` seeded random points
+    with every symbol in (0.1, 1.1) (the book's symbols are positive; angles stay below pi/2).
+    """
+    typed, derived = sp.sympify(typed), sp.sympify(derived)
+    if isinstance(typed, sp.MatrixBase):
+        if typed.shape != derived.shape:
+            raise AssertionError(f"{label}: a {typed.shape} matrix typed for a {derived.shape} one")
+        for i, (a, b) in enumerate(zip(typed, derived, strict=True)):
+            textbook(f"{label}[{i}]", a, b, samples=samples)
+        return
+    if sp.simplify(typed - derived) == 0:
+        return
+    rng = random.Random(label)
+    symbols = sorted(typed.free_symbols | derived.free_symbols, key=str)
+    for _ in range(samples):
+        point = {s: sp.Rational(rng.randint(100, 1100), 1000) for s in symbols}
+        a, b = (complex(e.subs(point).evalf(40)) for e in (typed, derived))
+        if abs(a - b) > 1e-25 * max(abs(a), abs(b), 1e-300):
+            raise AssertionError(f"{label}: the typed equation differs from the package's: {typed} != {derived}")
 
 
 def compact(expr):

@@ -5,6 +5,8 @@
 #
 # - MathJax 3 comes from the npm registry (mathjax@3), is copied to book/_static_mathjax/mathjax
 #   (git-ignored, not committed) and served from the site itself: the built pages need no network.
+# - Headless Chromium, if installed, then screenshots every page at 1280 px and 390 px into
+#   book/_build/screenshots and checks the layout (book/browser_check.py).
 # - Every page is executed afresh (--all: a fresh Sphinx environment, so no page is skipped as
 #   unchanged); a cell error stops the build and every Sphinx warning, including anything a cell
 #   writes to stderr, is fatal (-W).
@@ -39,3 +41,9 @@ export PYDEVD_DISABLE_FILE_VALIDATION=1   # silences a debugger note ipykernel p
 start=$SECONDS
 "$PYTHON" -c "import sys; from jupyter_book.cli.main import main; sys.exit(main())" build "$book" --builder html --all -W --keep-going
 echo "book/build.sh: built $book/_build/html/index.html in $((SECONDS - start)) s"
+
+# --- what a browser shows ------------------------------------------------------------------------
+# Screenshots of every page at 1280 px and 390 px into _build/screenshots, with the layout checks of
+# book/browser_check.py written to _build/screenshots/report.json (tests/book reads them; the build
+# itself does not fail on them). Skipped when headless Chromium is not installed.
+"$PYTHON" "$book/browser_check.py" "$book/_build/html" --out "$book/_build/screenshots" --no-fail

@@ -204,10 +204,12 @@ def elliptic_placeholders():
 def hertz_elliptical_monomial():
     """K_c of an elliptical contact as a monomial in A, E*, K_m = K(m), D_m = (K - E)/m.
 
-    Johnson Sec. 4.2 (semi-axes a >= b, b = a sqrt(1 - m), peak pressure p0):
+    Johnson Sec. 4.2 (semi-axes a >= b, b = a sqrt(1 - m), peak pressure p0)::
+
         P = 2/3 pi a b p0,
         delta = p0 b K(m)/E*,
         A = p0 b (K(m) - E(m))/(E* a^2 m) = p0 b D_m/(E* a^2).
+
     Eliminating a, b and p0 leaves P = K_c delta^(3/2).  Returns (K_c, E*) with E* a
     Symbol named ``E^*``.
     """

@@ -48,6 +48,7 @@ __all__ = [
     "roark_elongation",
     "term_contributions",
     "neutral_axis_integrand",
+    "stiffness_expression",
     "bending_stiffness",
     "SHEAR_FORM_FACTOR_CIRCLE",
 ]
@@ -177,6 +178,15 @@ def _stiffness_expr(thin: bool):
     else:
         delta = elongation().subs({s[k]: section[k] for k in ("J", "A", "G", "F")})
     return (s["R"], s["r"], s["E"], s["nu"]), sp.simplify(s["W"] / delta)
+
+
+def stiffness_expression(thin: bool = False):
+    """K_b(R, r, E, nu) as a SymPy expression: W over the elongation of the loaded diameter (Eq. (2)).
+
+    ``thin=True``: bending energy only, with J = I (the thin-ring value); otherwise all four energy
+    terms of the curved beam with the solid circular section.  :func:`bending_stiffness` evaluates it.
+    """
+    return _stiffness_expr(thin=thin)[1]
 
 
 @derived

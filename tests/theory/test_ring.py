@@ -144,3 +144,15 @@ def test_positive(aspect, r_, nu_):
     for thin in (True, False):
         K = bending_stiffness(aspect * r_, r_, 193e9, nu_, thin=thin)
         assert np.isfinite(K) and K > 0
+
+
+def test_stiffness_expression_thin_is_the_classical_closed_form():
+    # Thin ring: delta = (pi/4 - 2/pi) W R^3/(E I) with I = pi r^4/4 (Roark, Table 9.2 case 1, k1 = k2 = 1).
+    s = ring.symbols()
+    R, r, E = s["R"], s["r"], s["E"]
+    classical = sp.pi**2 * E * r**4 / (R**3 * (sp.pi**2 - 8))
+    assert sp.simplify(ring.stiffness_expression(thin=True) - classical) == 0
+    # The thick form keeps the Poisson ratio (through G) and tends to the thin one for a slender ring.
+    thick = ring.stiffness_expression()
+    assert s["nu"] in thick.free_symbols
+    assert sp.simplify(sp.limit(thick / classical, R, sp.oo)) == 1
