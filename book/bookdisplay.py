@@ -1,9 +1,10 @@
 """Display helpers shared by the book's pages (run from book/, so ``import bookdisplay`` works).
 
-They only format what the package returns: an equation is ``sympy.latex`` of the package's
-expression, with derivatives of the fields written as subscripts (u_xx for d^2u/dx^2) and
-long sums broken over lines; a table is Markdown built from numbers the page computed.
-An equation typed for the reader (a labelled ``{math}`` block) is checked by :func:`textbook`.
+They only format what the package returns. The pages type their equations for the reader as labelled
+``{math}`` blocks, each checked against the package's expression by :func:`textbook` in a hidden cell;
+:func:`compact` writes derivatives of the fields as subscripts (u_xx for d^2u/dx^2) for those checks, and
+:func:`show` / :func:`grouped` still render an expression as SymPy prints it, with long sums broken over
+lines. A table is Markdown built from numbers the page computed.
 
 The book's conventions live here too, defined once: the colour of each quantity in every figure
 (:data:`COLOURS`) and the drop heights of the experiment (:data:`DROP_HEIGHTS`).
