@@ -30,7 +30,9 @@ displacements of micrometres and velocities of metres per second cannot share on
 absolute tolerance.  scipy's error norm is a root mean square over the
 whole state, so in a very long chain, where the pulse occupies a few of many rings, the
 control is looser per active ring than ``rtol`` suggests; Verlet has no such effect.
-A batch of runs of one chain is integrated as one array problem (:func:`simulate_batch`).
+A batch of runs of one chain is integrated as one array problem (:func:`simulate_batch`); so are
+several chains of one layout, one run each, their lattices stacked
+(:meth:`~ringchain.numerics.models.Lattice.stack`; the trace fits of :mod:`~ringchain.numerics.fit`).
 
 Checks.  The settings are validated before any work: ``dt`` must lie below the stability
 limit 2/omega_max of velocity Verlet (omega_max, the fastest linearised mode at four
