@@ -154,9 +154,11 @@ class Lattice:
     gamma_contact, gamma_spring : ndarray, shape (n_bonds,)
         Dashpots, N s/m.
 
+    Notes
+    -----
     n_bonds is n_sites - 1 (free far end) or n_sites (the last bond ties the last site to
-    a fixed anchor).  A lattice made by :meth:`stack` holds B chains: every array has a
-    leading axis of length B (:attr:`batch_shape`), and it drives states of shape
+    a fixed anchor).  A lattice made by :meth:`stack` holds B chains, every array with a
+    leading axis of length B (:attr:`batch_shape`); it drives states of shape
     (B, n_sites), one run per chain.
     """
 
