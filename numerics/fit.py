@@ -51,7 +51,7 @@ from ringchain.theory import _validate as v
 
 from .chain import Chain
 from .models import STANDARD_GRAVITY, Lattice
-from .solve import Simulation, _odeint, _scales, initial_state, simulate
+from .solve import Simulation, _adaptive, _scales, initial_state, simulate
 
 __all__ = [
     "read_traces",
@@ -817,31 +817,6 @@ def fit_speed_amplitude(F_m, V_s, *, K, n, a, m0, free_n=False, start=1.0, max_n
 
 
 # -- trace fits: the forward model --------------------------------------------------------------------
-@dataclass(frozen=True, eq=False)
-class _ParameterBatchLattice(Lattice):
-    """Lattices of several chains of one layout stacked along a leading axis (one run each).
-
-    Every array field has shape (B, n_sites) or (B, n_bonds) and ``n`` shape (B, 1): the
-    general path of :meth:`Lattice.stepper` broadcasts them against a batch of B states.
-    """
-
-    _chain_pattern = None  # the fast path of Lattice.stepper assumes one chain
-
-    @property
-    def n_sites(self) -> int:
-        return self.mass.shape[-1]
-
-    @property
-    def n_bonds(self) -> int:
-        return self.K_contact.shape[-1]
-
-    @classmethod
-    def stack(cls, lattices):
-        names = ("mass", "weight_mass", "K_contact", "K_spring", "gamma_contact", "gamma_spring")
-        arrays = {name: np.stack([getattr(lat, name) for lat in lattices]) for name in names}
-        return cls(n=np.array([[lat.n] for lat in lattices]), **arrays)
-
-
 def _simulate_parameter_sets(chains, speeds, dropped, t_grid, rings, *, rtol=FIT_RTOL, gravity=True,
                              g=STANDARD_GRAVITY, batched=True):  # fmt: skip
     """(parameter sets) -> simulated sensor forces: the forward model of :func:`fit_traces`.
@@ -869,9 +844,9 @@ def _simulate_parameter_sets(chains, speeds, dropped, t_grid, rings, *, rtol=FIT
 
     Notes
     -----
-    The batch is a :class:`_ParameterBatchLattice` (this module's own stacking of the
-    chains' lattices) driven through the integrator of :func:`simulate_batch`.  When
-    :func:`simulate_batch` takes a batch over chains, this body becomes that one call.
+    The batch is the chains' lattices stacked (:meth:`Lattice.stack`, run b on chain b)
+    and integrated as :func:`simulate_batch` integrates a batch of runs of one chain
+    (the same driver, :func:`ringchain.numerics.solve._adaptive`, and tolerances).
     """
     P, R = speeds.shape
     if not batched or P * R == 1:
@@ -890,16 +865,12 @@ def _simulate_parameter_sets(chains, speeds, dropped, t_grid, rings, *, rtol=FIT
         u0.append(u[0])
         scales.append(np.concatenate(_scales(chain, x, -u[:, 0], g)))
     x0, u0, scales = np.array(x0), np.array(u0), np.array(scales)
-    lat = _ParameterBatchLattice.stack([chain.lattice for chain, _ in runs])
-    B, S = x0.shape
-    n_w = B if lat.damped else 0
-    y0 = np.concatenate([np.stack([x0, u0], axis=-1).ravel(), np.zeros(n_w)])
-    atol = rtol * np.concatenate([np.repeat(scales[:, :2], S, axis=0).ravel(), scales[:n_w, 2]])
-    y, _ = _odeint(lat.first_order_rhs(B, g if gravity else 0.0), y0, 0.0, t_grid, rtol, atol, lat.BANDWIDTH)
-    states = y[: 2 * B * S].reshape(B, S, 2, -1)
+    lat = Lattice.stack([chain.lattice for chain, _ in runs])
+    xs, us, _, _ = _adaptive("odeint", lat, x0, u0, scales.T, t_grid, rtol, rtol, g if gravity else 0.0, None,
+                             watch=lambda *state: None)  # fmt: skip
     out = [np.empty((P, len(ks), t_grid.size)) for ks in rings]
     for b, (chain, r) in enumerate(runs):
-        sim = Simulation(chain=chain, t=t_grid, x=states[b, :, 0].T, u=states[b, :, 1].T,
+        sim = Simulation(chain=chain, t=t_grid, x=xs[b], u=us[b],
                          dissipated=np.zeros(t_grid.size), g=g, impact_velocity=float(speeds.flat[b]),
                          drop_height=None)  # fmt: skip
         out[r][b // R] = sim.sensor_force[:, list(rings[r])].T

@@ -19,7 +19,9 @@ does not move (displacement 0).
 
 Everything is vectorised over rings and over leading axes (a batch of runs, or
 time samples): arrays of site quantities have shape (..., n_sites), arrays of bond
-quantities (..., n_bonds).  There is no Python loop over rings.
+quantities (..., n_bonds).  There is no Python loop over rings.  Several chains of one
+layout are one lattice too (:meth:`Lattice.stack`): their parameters stacked along a
+leading axis, one run per chain, integrated together.
 """
 
 from __future__ import annotations
@@ -152,8 +154,12 @@ class Lattice:
     gamma_contact, gamma_spring : ndarray, shape (n_bonds,)
         Dashpots, N s/m.
 
+    Notes
+    -----
     n_bonds is n_sites - 1 (free far end) or n_sites (the last bond ties the last site to
-    a fixed anchor).
+    a fixed anchor).  A lattice made by :meth:`stack` holds B chains, every array with a
+    leading axis of length B (:attr:`batch_shape`); it drives states of shape
+    (B, n_sites), one run per chain.
     """
 
     mass: np.ndarray
@@ -178,13 +184,70 @@ class Lattice:
                 f"{self.n_sites} sites need {self.n_sites - 1} or {self.n_sites} bonds, got {self.n_bonds}"
             )
 
+    @classmethod
+    def stack(cls, lattices) -> Lattice:
+        """Lattices of several chains of one layout stacked along a leading axis: one run each.
+
+        Parameters
+        ----------
+        lattices : sequence of Lattice, length B
+            Lattices with the same numbers of sites and bonds (e.g. the
+            :attr:`~ringchain.numerics.Chain.lattice` of chains of one model, number of rings
+            and support, whatever their parameters, uniform or varying along the chain).
+
+        Returns
+        -------
+        Lattice
+            Arrays of shape (B, n_sites) and (B, n_bonds); ``n`` one number if every lattice
+            has the same single exponent, else shape (B, n_bonds).  Its :meth:`stepper` and
+            :meth:`first_order_rhs` take a batch of B states, row b being a run of lattice b:
+            the same code as a batch of runs of one chain (the fast path of the two chain
+            models included), each coefficient an array across the stack where it differs.
+
+        Examples
+        --------
+        >>> a = Lattice([1.0, 1.0], [1.0, 1.0], [2.0], 1.5, [0.0], [0.0], [0.0])
+        >>> b = Lattice([1.0, 2.0], [1.0, 2.0], [3.0], 1.5, [0.0], [0.0], [0.0])
+        >>> both = Lattice.stack([a, b])
+        >>> both.batch_shape, both.n_sites, both.n_bonds
+        ((2,), 2, 1)
+        >>> both.accelerations([[0.0, 1.0], [0.0, 1.0]], None, g=0.0).tolist()  # K delta^n / m
+        [[2.0, -2.0], [3.0, -1.5]]
+        """
+        lattices = list(lattices)
+        if not lattices:
+            raise ValueError("stack needs at least one lattice")
+        for i, lat in enumerate(lattices):
+            if not isinstance(lat, Lattice):
+                raise TypeError(f"lattices[{i}] must be a Lattice, got {type(lat).__name__}")
+            if lat.batch_shape:
+                raise ValueError(f"lattices[{i}] is already a stack of {lat.batch_shape[0]} lattices")
+            if (lat.n_sites, lat.n_bonds) != (lattices[0].n_sites, lattices[0].n_bonds):
+                raise ValueError(
+                    f"lattices of one layout are stacked: lattices[{i}] has {lat.n_sites} sites and {lat.n_bonds} "
+                    f"bonds, lattices[0] {lattices[0].n_sites} and {lattices[0].n_bonds}"
+                )
+        names = ("mass", "weight_mass", "K_contact", "K_spring", "gamma_contact", "gamma_spring")
+        arrays = {name: np.stack([getattr(lat, name) for lat in lattices]) for name in names}
+        exponents = [lat.n for lat in lattices]
+        if all(np.ndim(n) == 0 and n == exponents[0] for n in exponents):
+            n = exponents[0]  # one number: the power of the uniform chains, a scalar exponent
+        else:
+            n = np.stack([np.broadcast_to(np.asarray(n, dtype=float), lattices[0].K_contact.shape) for n in exponents])
+        return cls(n=n, **arrays)
+
+    @property
+    def batch_shape(self) -> tuple:
+        """() for one chain; (B,) for a :meth:`stack` of B chains."""
+        return self.mass.shape[:-1]
+
     @property
     def n_sites(self) -> int:
-        return self.mass.size
+        return self.mass.shape[-1]
 
     @property
     def n_bonds(self) -> int:
-        return self.K_contact.size
+        return self.K_contact.shape[-1]
 
     @property
     def anchored(self) -> bool:
@@ -233,9 +296,10 @@ class Lattice:
     def _bond_forces_into(self, e, e_rate, f, work, elastic_only=False, bonds=None):
         K_contact, K_spring, gamma_contact, gamma_spring = (
             (self.K_contact, self.K_spring, self.gamma_contact, self.gamma_spring) if bonds is None else
-            (self.K_contact[bonds], self.K_spring[bonds], self.gamma_contact[bonds], self.gamma_spring[bonds])
+            (self.K_contact[..., bonds], self.K_spring[..., bonds], self.gamma_contact[..., bonds],
+             self.gamma_spring[..., bonds])
         )  # fmt: skip
-        n = self.n if bonds is None or np.ndim(self.n) == 0 else self.n[bonds]
+        n = self.n if bonds is None or np.ndim(self.n) == 0 else self.n[..., bonds]
         np.maximum(e, 0.0, out=work)
         np.power(work, n, out=work)
         work *= K_contact
@@ -270,18 +334,20 @@ class Lattice:
     @functools.cached_property
     def _chain_pattern(self):
         """(contacts, springs) if the bonds are all contacts, or alternate spring, contact, ... (the
-        two chain models), as slices of the bonds; else None (see :meth:`stepper`)."""
+        two chain models), as slices of the bonds; else None (see :meth:`stepper`).  A stack has the
+        pattern if every chain of it has."""
         contact, spring = self.K_contact > 0, self.K_spring > 0
         if not spring.any() and contact.all():
             return slice(None), None
-        if contact[1::2].all() and spring[0::2].all() and not contact[0::2].any() and not spring[1::2].any():
+        odd, even = (Ellipsis, slice(1, None, 2)), (Ellipsis, slice(0, None, 2))
+        if contact[odd].all() and spring[even].all() and not contact[even].any() and not spring[odd].any():
             return slice(1, None, 2), slice(0, None, 2)
         return None
 
     @staticmethod
     def _one_or_all(array):
         """A float if every entry of ``array`` is the same, else the array."""
-        return float(array[0]) if array.size and np.ptp(array) == 0 else array
+        return float(array.flat[0]) if array.size and np.ptp(array) == 0 else array
 
     def stepper(self, batch_shape, g):
         """A function ``(x, u, out)`` writing the accelerations into ``out``.
@@ -323,9 +389,9 @@ class Lattice:
             # its rounding), else an array; with equal masses the forces are per unit mass.
             contacts, springs = pattern
             one = self._one_or_all
-            K, m, m_g = one(self.K_contact[contacts]), one(self.mass), one(self.weight_mass)
-            K_s = one(self.K_spring[springs]) if springs is not None else 0.0
-            n_c = n if np.ndim(n) == 0 else one(n[contacts])
+            K, m, m_g = one(self.K_contact[..., contacts]), one(self.mass), one(self.weight_mass)
+            K_s = one(self.K_spring[..., springs]) if springs is not None else 0.0
+            n_c = n if np.ndim(n) == 0 else one(n[..., contacts])
             if np.ndim(m) == 0:
                 K_per_mass, K_s_per_mass, g_acc, inv_mass = K / m, K_s / m, g * m_g / m, None
             else:
@@ -375,7 +441,7 @@ class Lattice:
     def contact_energy(self, e):
         """Elastic energy of the contacts, sum of K delta_+^(n+1)/(n+1), J."""
         d = np.maximum(e, 0.0)
-        if np.ndim(self.n) == 1:  # one exponent per bond
+        if np.ndim(self.n):  # one exponent per bond
             return np.sum(self.K_contact / (self.n + 1.0) * d ** (self.n + 1.0), axis=-1)
         return np.sum(self.K_contact * d ** (self.n + 1.0), axis=-1) / (self.n + 1.0)
 
@@ -410,11 +476,16 @@ class Lattice:
         then the energy W dissipated so far by each run (only if the lattice is damped).
         Interleaving keeps the Jacobian banded (:attr:`BANDWIDTH`), which implicit and
         stiff-switching solvers exploit; the W entries lie outside the band, which only
-        makes the Newton matrix approximate (W feeds back into nothing).
+        makes the Newton matrix approximate (W feeds back into nothing).  A :meth:`stack`
+        of B chains takes ``n_runs = B``, run b on chain b.
         """
+        if self.batch_shape and (n_runs,) != self.batch_shape:
+            raise ValueError(
+                f"a stack of {self.batch_shape[0]} lattices integrates one run each, got n_runs = {n_runs}"
+            )
         S = self.n_sites
         n_xu = 2 * n_runs * S
-        shape = () if n_runs == 1 else (n_runs,)  # one run: plain 1-d views, no reshaping
+        shape = () if n_runs == 1 and not self.batch_shape else (n_runs,)  # one run: plain 1-d views
         accelerations_into = self.stepper(shape, g)
         damped = self.damped
         x_part, u_part = slice(0, n_xu, 2), slice(1, n_xu, 2)

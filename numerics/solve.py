@@ -30,7 +30,9 @@ displacements of micrometres and velocities of metres per second cannot share on
 absolute tolerance.  scipy's error norm is a root mean square over the
 whole state, so in a very long chain, where the pulse occupies a few of many rings, the
 control is looser per active ring than ``rtol`` suggests; Verlet has no such effect.
-A batch of runs of one chain is integrated as one array problem (:func:`simulate_batch`).
+A batch of runs of one chain is integrated as one array problem (:func:`simulate_batch`); so are
+several chains of one layout, one run each, their lattices stacked
+(:meth:`~ringchain.numerics.models.Lattice.stack`; the trace fits of :mod:`~ringchain.numerics.fit`).
 
 Checks.  The settings are validated before any work: ``dt`` must lie below the stability
 limit 2/omega_max of velocity Verlet (omega_max, the fastest linearised mode at four
@@ -360,14 +362,22 @@ def _solve_ivp(rhs, method, y0, t0, times, rtol, atol, bandwidth):
     return sol.y, sol.nfev
 
 
-def _adaptive(method, lat, y0, t_eval, rtol, atol, n_runs, g, keep, watch):
+def _adaptive(method, lat, x0, u0, scales, t_eval, rtol, atol, g, keep, watch):
     """An adaptive method over ``t_eval``, in chunks of samples of at most :data:`_CHUNK_BYTES` of states.
 
-    Returns x and u of the sites ``keep`` (all if None), shape (B, T, K), the dissipated
-    energy (B, T) and stats.
+    ``x0``, ``u0`` (shape (B, n_sites)) start the B runs of ``lat`` (of one chain, or of a
+    :meth:`~ringchain.numerics.models.Lattice.stack` of B chains, one run each);
+    ``scales`` = (X, V, E) of each run (:func:`_scales`) times ``atol`` are the absolute
+    tolerances of its displacements, velocities and dissipated energy.  Returns x and u of
+    the sites ``keep`` (all if None), shape (B, T, K), the dissipated energy (B, T) and stats.
     """
-    rhs = lat.first_order_rhs(n_runs, g)
-    B, S, T = n_runs, lat.n_sites, t_eval.size
+    B, S, T = *x0.shape, t_eval.size
+    X, V, E = scales
+    n_w = B if lat.damped else 0
+    y0 = np.concatenate([np.stack([x0, u0], axis=-1).ravel(), np.zeros(n_w)])
+    per_site = np.repeat(np.stack([X, V], axis=-1), S, axis=0).ravel()  # x, u interleaved, run by run
+    atol = atol * np.concatenate([per_site, E[:n_w]])
+    rhs = lat.first_order_rhs(B, g)
     n_xu = 2 * B * S
     sel = slice(None) if keep is None else keep
     K = S if keep is None else keep.size
@@ -763,8 +773,8 @@ max_energy_drift
         max_energy_drift = float(v.positive("max_energy_drift", max_energy_drift))
     lat = chain.lattice
     x0, u0, t_eval = run["x0"], run["u0"], run["t_eval"]
-    B, S = x0.shape
-    X, V, E = run["scales"]
+    B = x0.shape[0]
+    E = run["scales"][2]
     g_dyn = run["g"] if run["gravity"] else 0.0
     advice = ("take a smaller dt or more steps_per_period" if method == "verlet" else
               "take a smaller rtol (and atol), or method='verlet'")  # fmt: skip
@@ -774,12 +784,8 @@ max_energy_drift
             xs, us, stats = _verlet(lat, x0, u0, t_eval, run["t_end"], run["dt"], g_dyn, run["keep"], watch)
             dissipated = np.zeros((B, t_eval.size))
         else:
-            n_w = B if lat.damped else 0
-            y0 = np.concatenate([np.stack([x0, u0], axis=-1).ravel(), np.zeros(n_w)])
-            per_site = np.repeat(np.stack([X, V], axis=-1), S, axis=0).ravel()  # x, u interleaved, run by run
-            atol = run["atol"] * np.concatenate([per_site, E[:n_w]])
-            xs, us, dissipated, stats = _adaptive(method, lat, y0, t_eval, run["rtol"], atol, B, g_dyn, run["keep"],
-                                                  watch)  # fmt: skip
+            xs, us, dissipated, stats = _adaptive(method, lat, x0, u0, run["scales"], t_eval, run["rtol"], run["atol"],
+                                                  g_dyn, run["keep"], watch)  # fmt: skip
     heights = None if drop_heights is None else np.atleast_1d(np.asarray(drop_heights, dtype=float))
     return BatchSimulation(
         chain=chain, t=t_eval, x=xs, u=us, dissipated=dissipated, g=g_dyn, impact_velocity=-u0[:, 0],

@@ -2,9 +2,10 @@
 
 import numpy as np
 import pytest
-from ringchain.numerics import Chain, initial_state, simulate, simulate_batch
+from ringchain.numerics import Chain, Lattice, initial_state, simulate, simulate_batch
 from ringchain.numerics.junction import junction_pulse
 from ringchain.numerics.models import STANDARD_GRAVITY as G
+from ringchain.numerics.solve import Simulation, _adaptive, _scales
 from ringchain.theory import Ring, fit_power_law, hertz_stiffness_pair
 
 RNG_SEED = 13
@@ -243,3 +244,83 @@ def test_small_pulse_at_a_junction_against_the_impedance_theory(model, stiffness
     # the incident force covers both (measured up to 0.72 %, R of the power-law chain with m2 = 3 m1).
     assert R == pytest.approx(R_theory, abs=0.01)
     assert T == pytest.approx(T_theory, abs=0.01)
+
+
+# -- several chains of one layout as one lattice (Lattice.stack) --------------------------------------
+
+STACKS = {  # three chains of one layout each: varying, uniform, varying otherwise
+    "dual-spring, undamped (fast path)": lambda: [
+        _dual_spring(6), Chain.dual_spring(6, K_c=7.5e9, K_b=3.3e6, m=8.2e-3, a=0.04), _dual_spring(6, m=5e-3)],
+    "power-law, damped (general path)": lambda: [
+        _power_law(6), Chain.power_law(6, K=4.9e6, n=1.11, m=8.2e-3, a=0.04, gamma=2.0),
+        _power_law(6, gamma=np.linspace(0.0, 3.0, 6))],
+}  # fmt: skip
+
+
+def _stacked_drops(chains, heights, t, rtol):
+    """Sensor forces of one drop per chain, the chains' lattices stacked and integrated as one batch."""
+    x0, u0, scales = [], [], []
+    for chain, h in zip(chains, heights, strict=True):
+        x, u = initial_state(chain, drop_height=h)
+        x0.append(x[0])
+        u0.append(u[0])
+        scales.append(np.concatenate(_scales(chain, x, -u[:, 0], G)))
+    lattice = Lattice.stack([chain.lattice for chain in chains])
+    xs, us, dissipated, _ = _adaptive("odeint", lattice, np.array(x0), np.array(u0), np.array(scales).T, t, rtol,
+                                      rtol, G, None, lambda *state: None)  # fmt: skip
+    return [
+        Simulation(chain=chain, t=t, x=xs[b], u=us[b], dissipated=dissipated[b], g=G,
+                   impact_velocity=float(-u0[b][0]), drop_height=h).sensor_force
+        for b, (chain, h) in enumerate(zip(chains, heights, strict=True))
+    ]  # fmt: skip
+
+
+@pytest.mark.parametrize("case", list(STACKS))
+def test_a_stack_of_lattices_moves_each_chain_by_its_own_law(case):
+    chains = STACKS[case]()
+    stack = Lattice.stack([chain.lattice for chain in chains])
+    assert stack.batch_shape == (3,) and stack.n_sites == chains[0].n_sites and stack.damped == ("general path" in case)
+    rng = np.random.default_rng(RNG_SEED)
+    x = rng.normal(0.0, 1e-6, (3, stack.n_sites))
+    u = rng.normal(0.0, 0.1, x.shape)
+    each = np.array([chain.lattice.accelerations(x[b], u[b]) for b, chain in enumerate(chains)])
+    # Rounding only: where a row differs from the others the stack multiplies K delta^n by 1/m,
+    # a uniform chain alone by K/m (measured 2.4e-16 of the largest acceleration).
+    np.testing.assert_allclose(stack.accelerations(x, u), each, rtol=0, atol=1e-14 * np.abs(each).max())
+
+
+@pytest.mark.parametrize("case", list(STACKS))
+def test_a_stack_of_different_chains_equals_their_separate_runs(case):
+    chains, heights = STACKS[case](), [0.02, 0.05, 0.01]
+    t = np.linspace(0.0, 5e-4, 201)
+    stacked = _stacked_drops(chains, heights, t, rtol=1e-9)
+    for chain, h, forces in zip(chains, heights, stacked, strict=True):
+        alone = simulate(chain, t[-1], drop_height=h, t_eval=t, rtol=1e-9).sensor_force
+        # Integrator tolerance: the batch shares its steps, so each run's error differs from its
+        # separate run's, each ~rtol times the scales; at rtol 1e-9 the two differ by at most 2.2e-7
+        # of the peak force (measured, as is each from a run at rtol 1e-12: up to 3.3e-7).
+        np.testing.assert_allclose(forces, alone, rtol=0, atol=2e-6 * np.abs(alone).max())
+
+
+def test_a_stack_of_one_uniform_chain_is_that_chains_batch_to_the_last_bit():
+    chain = Chain.dual_spring(6, K_c=7.5e9, K_b=3.3e6, m=8.2e-3, a=0.04)
+    heights, t = [0.02, 0.05], np.linspace(0.0, 3e-4, 61)
+    stacked = _stacked_drops([chain, chain], heights, t, rtol=1e-9)
+    batch = simulate_batch(chain, t[-1], drop_heights=heights, t_eval=t, rtol=1e-9).sensor_force
+    # Every coefficient is one number across the stack: the same arithmetic as one chain's batch.
+    assert np.array_equal(np.array(stacked), batch)
+
+
+def test_stacking_names_what_does_not_fit():
+    five, six = (Chain.power_law(k, K=4.9e6, n=1.11, m=8.2e-3, a=0.04) for k in (5, 6))
+    with pytest.raises(ValueError, match=r"lattices\[1\] has 5 sites and 5 bonds, lattices\[0\] 6 and 6"):
+        Lattice.stack([six.lattice, five.lattice])
+    with pytest.raises(TypeError, match=r"lattices\[0\] must be a Lattice, got Chain"):
+        Lattice.stack([six])
+    with pytest.raises(ValueError, match="at least one lattice"):
+        Lattice.stack([])
+    stack = Lattice.stack([six.lattice, six.lattice])
+    with pytest.raises(ValueError, match=r"lattices\[0\] is already a stack of 2"):
+        Lattice.stack([stack])
+    with pytest.raises(ValueError, match="a stack of 2 lattices integrates one run each, got n_runs = 3"):
+        stack.first_order_rhs(3, G)
