@@ -11,7 +11,6 @@ import html.parser
 import importlib.util
 import os
 import re
-import shutil
 import subprocess
 from pathlib import Path
 
@@ -193,10 +192,6 @@ def test_math_is_served_by_the_site_itself(site):
 # --- what a browser shows ----------------------------------------------------------------------
 
 
-def _chromium() -> str | None:
-    return shutil.which("chromium") or shutil.which("chromium-browser")
-
-
 @pytest.fixture(scope="session")
 def browser_report(site) -> tuple[Path, list[dict]]:
     """book/browser_check.py over the built site: its screenshots folder and its findings.
@@ -219,7 +214,7 @@ def browser_report(site) -> tuple[Path, list[dict]]:
 
 
 @pytest.mark.slow
-@pytest.mark.skipif(_chromium() is None, reason="needs the Debian package chromium (apt-get install chromium)")
+@pytest.mark.usefixtures("chromium")
 def test_browser_finds_no_overflow_raw_tex_broken_image_or_empty_figure(browser_report):
     """Every page in headless Chromium at 1280 px and 390 px: see book/browser_check.py for the rules."""
     _, findings = browser_report
@@ -228,7 +223,7 @@ def test_browser_finds_no_overflow_raw_tex_broken_image_or_empty_figure(browser_
 
 
 @pytest.mark.slow
-@pytest.mark.skipif(_chromium() is None, reason="needs the Debian package chromium (apt-get install chromium)")
+@pytest.mark.usefixtures("chromium")
 def test_the_build_saved_screenshots_of_every_page_at_both_widths(browser_report):
     from PIL import Image
 
