@@ -159,7 +159,8 @@ _GEOMETRY_DEFAULTS = {"R": 22.5e-3, "r": 2.5e-3, "angle": 90.0, "material": "sta
 
 def _simulate_chain_file(args) -> int:
     """``ringchain simulate --chain FILE``: a chain that changes along its length (:mod:`.chain_file`)."""
-    from .solve import simulate
+    from .models import STANDARD_GRAVITY
+    from .solve import _impact_speeds, simulate
     from .sweep import default_t_end
 
     description = args.chain
@@ -170,7 +171,7 @@ def _simulate_chain_file(args) -> int:
     for material in {segment.material for segment in description.segments}:
         opt.check_impact(material, drop_heights=[args.drop_height] if args.drop_height else None,
                          impact_velocities=[args.impact_velocity] if args.impact_velocity else None)  # fmt: skip
-    speed = math.sqrt(2.0 * 9.80665 * args.drop_height) if args.drop_height is not None else args.impact_velocity
+    speed = float(_impact_speeds(args.impact_velocity, args.drop_height, STANDARD_GRAVITY)[0][0])
     with opt.computing(f"the chain of {description.source}"):
         chain = description.chain(args.model, args.m_eff_ratio)
         t_end = default_t_end(chain, [speed], args.sensors) if args.t_end is None else args.t_end
