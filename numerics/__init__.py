@@ -30,49 +30,50 @@ The numerical half of the paper (Sec. III.B): the chain integrated ring by ring.
   (m_eff/m0 through Eq. (8)), :func:`fit_traces` (m, dashpots, K, n from sensor traces).
 """
 
-from . import signals
-from .chain import MODELS, STIFFNESS_SOURCES, SUPPORTS, Chain
+from ringchain.theory import STANDARD_GRAVITY
+
+from . import laws, signals
+from .chain import MODELS, STRIKERS, SUPPORTS, Chain, initial_state
 from .contact_bem import AnglePowerLaw, ContactCurve, HalfSpaceWarning, PressureMaps, angle_power_law, contact_curve
 from .effective_mass import fit_effective_mass, predict_effective_mass
-from .fit import (
-    DataError,
-    FitError,
-    FitResult,
-    fit_speed_amplitude,
-    fit_static,
-    fit_traces,
-    read_speed_amplitude,
-    read_static,
-    read_traces,
-)
-from .models import STANDARD_GRAVITY, Lattice, linear_spring_force, power_law_force
-from .paper import PaperExperiment, paper_experiment
-from .ring_beam import ReducedRing, RingChain, RingModel, RingSimulation, simulate_rings
-from .signals import NoPulseError, PulseError, TruncatedPulseError, UnresolvedPulseError
-from .solve import (
+from .fit import FitError, FitResult, fit_speed_amplitude, fit_static
+from .fit_dynamic import TraceRecord, fit_traces
+from .integrate import (
     ADAPTIVE_METHODS,
     DEFAULT_METHOD,
     DEFAULT_RTOL,
+    METHODS,
     VERLET_STEPS_PER_PERIOD,
-    BatchSimulation,
-    EnergyBudget,
     IntegrationError,
     RunEstimate,
     RunTooLargeError,
-    Simulation,
     estimate_run,
-    initial_state,
     simulate,
     simulate_batch,
 )
+from .laws import linear_spring_force, power_law_force
+from .network import ANCHOR, Links, Network
+from .paper import STIFFNESS_SOURCES, PaperExperiment, paper_chain, paper_experiment
+from .results import BatchSimulation, EnergyBudget, NetworkBatch, NetworkSimulation, Simulation
+from .ring_beam import ReducedRing, RingChain, RingModel, RingSimulation, simulate_rings
+from .signals import NoPulseError, PulseError, TruncatedPulseError, UnresolvedPulseError
 from .sweep import Point, sweep, write_csv
+from .traces import DataError, read_speed_amplitude, read_static, read_traces, write_traces
 
 __all__ = [
     "Chain",
     "MODELS",
     "SUPPORTS",
     "STIFFNESS_SOURCES",
-    "Lattice",
+    "Network",
+    "Links",
+    "ANCHOR",
+    "laws",
+    "NetworkSimulation",
+    "NetworkBatch",
+    "STRIKERS",
+    "METHODS",
+    "paper_chain",
     "power_law_force",
     "linear_spring_force",
     "STANDARD_GRAVITY",
@@ -107,6 +108,8 @@ __all__ = [
     "angle_power_law",
     "AnglePowerLaw",
     "read_traces",
+    "write_traces",
+    "TraceRecord",
     "read_static",
     "read_speed_amplitude",
     "fit_static",

@@ -17,10 +17,8 @@ import os
 from pathlib import Path
 
 import numpy as np
-from ringchain.theory import PAPER_TUBE_RADIUS, paper_data
+from ringchain.theory import PAPER_TUBE_RADIUS, impact_speed, paper_data
 from ringchain.theory import _validate as v
-
-from .chain import _count
 
 # -- option values: parsed and checked before any work, errors in the user's units ---------------------
 #: Most values of one sweep axis and most points of one sweep the command line runs: a guard against a
@@ -70,7 +68,7 @@ def fraction(what):
 
 def integer(what, minimum):
     """An integer >= ``minimum``."""
-    return Checked(int, lambda n: _count(what, n, minimum))
+    return Checked(int, lambda n: v.count(what, n, minimum))
 
 
 def material(name):
@@ -278,14 +276,12 @@ def check_impact(material: str, *, drop_heights=None, impact_velocities=None) ->
     """
     from ringchain.theory import get_material
 
-    from .models import STANDARD_GRAVITY
-
     mat = get_material(material)
     c0 = math.sqrt(mat.E / mat.rho)
     speeds = [(f"argument --impact-velocity: {u:g} m/s", u) for u in impact_velocities or ()]
     for h in drop_heights or ():
         speeds.append((f"argument --drop-height: a drop of {h:g} m gives an impact at {{:.3g}} m/s, which",
-                       math.sqrt(2.0 * STANDARD_GRAVITY * h)))  # fmt: skip
+                       float(impact_speed(h))))  # fmt: skip
     for text, speed in speeds:
         if speed >= c0:
             raise ValueError(
@@ -368,7 +364,7 @@ def impact_options(p, *, many=False, required=False):
 def chain_options(p, *, many=False):
     """The lattice run: --rings, --model, --sensors, --t-end, --samples."""
     from .chain import MODELS
-    from .solve import _count_samples
+    from .integrate import check_samples
 
     rings = integer("rings", 2)
     if many:
@@ -382,7 +378,7 @@ def chain_options(p, *, many=False):
                    metavar=("NEAR", "FAR"), help="sensor rings counted from the impact (default 6 12)")  # fmt: skip
     p.add_argument("--t-end", type=DURATION, default=None, metavar="S",
                    help="duration, s (default: long enough for the pulse to pass the far sensor)")  # fmt: skip
-    p.add_argument("--samples", type=Checked(int, _count_samples), default=None,
+    p.add_argument("--samples", type=Checked(int, check_samples), default=None,
                    help="samples of each force record (default: simulate's 2001, sweep's 1001)")  # fmt: skip
 
 
@@ -429,3 +425,93 @@ def vary_values(spec: list) -> tuple[str, list]:
     if len(values) > MAX_GRID_POINTS:
         raise ValueError(f"argument --vary: at most {MAX_GRID_POINTS} values, got {len(values)}")
     return spec[0], values
+
+
+# -- the chain of ringchain simulate, the points of ringchain sweep: every input checked first ----------
+#: The single-ring options that --chain replaces, with their defaults.
+GEOMETRY_DEFAULTS = {"R": 22.5e-3, "r": 2.5e-3, "angle": 90.0, "material": "stainless", "rings": 20}
+
+
+def simulated_chain(args):
+    """The chain of ``ringchain simulate`` (of --chain FILE, or of the ring options) and how to name it."""
+    from .sweep import Point
+
+    impacts = {"drop_heights": [args.drop_height] if args.drop_height is not None else None,
+               "impact_velocities": [args.impact_velocity] if args.impact_velocity is not None else None}  # fmt: skip
+    if args.chain is not None:
+        description = args.chain
+        check_chain_file_alone(args, GEOMETRY_DEFAULTS)
+        check_sensors(args.sensors, [description.n_rings])
+        for material in {segment.material for segment in description.segments}:
+            check_impact(material, **impacts)
+        with computing(f"the chain of {description.source}"):
+            chain = description.chain(args.model, args.m_eff_ratio)
+        return chain, f" from {description.source} ({len(description.segments)} segments)"
+    aspect = aspect_ratio(args.R, args.r)
+    check_geometry(aspect, [args.angle], chain=True, given="arguments --R and --r")
+    check_sensors(args.sensors, [args.rings])
+    check_impact(args.material, **impacts)
+    ring_of(aspect * args.r, args.r, args.material, args.angle, f"the ring of --R {args.R:g} m and --r {args.r:g} m")
+    point = Point(R_over_r=aspect, r=args.r, angle=math.radians(args.angle), material=args.material, model=args.model,
+                  n_rings=args.rings, m_eff_ratio=args.m_eff_ratio, sensors=tuple(args.sensors))  # fmt: skip
+    with computing(f"the chain of {args.rings} rings"):
+        chain = point.chain()
+    return chain, f", R/r = {aspect:g}"
+
+
+def sweep_points(args) -> list:
+    """The points of ``ringchain sweep``: a grid of ring options, or the values of --vary on --chain FILE."""
+    from .sweep import FilePoint, expand
+
+    if args.chain is None:
+        if args.vary:
+            raise ValueError("argument --vary: varies a field of a chain file; give --chain FILE")
+        return expand(_sweep_grid(args))
+    defaults = GEOMETRY_DEFAULTS | {"R_over_r": [[9.0]], "angle": [[90.0]], "rings": [[20]]}
+    check_chain_file_alone(args, defaults)
+    if args.drop_height is None and args.impact_velocity is None:
+        raise ValueError("a sweep of a chain file needs impacts: give --drop-height or --impact-velocity")
+    field, values = vary_values(args.vary) if args.vary else (None, [None])
+    ratios, models = flat(args.m_eff_ratio), args.model or ["dual-spring"]
+    heights, velocities = flat(args.drop_height), flat(args.impact_velocity)
+    for material in {segment.material for segment in args.chain.segments}:
+        check_impact(material, drop_heights=heights, impact_velocities=velocities)
+    impacts = [{"drop_height": h} for h in heights] if heights else [{"impact_velocity": u} for u in velocities]
+    return [FilePoint(args.chain, field, value, model, ratio, sensors=tuple(args.sensors), **impact)
+            for model in models for ratio in ratios for value in values for impact in impacts]  # fmt: skip
+
+
+def _sweep_grid(args) -> dict:
+    """The grid of ``ringchain sweep``, every value checked against the others before any work."""
+    aspects, angles, rings = flat(args.R_over_r), flat(args.angle), flat(args.rings)
+    impacts = {"drop_height": flat(args.drop_height)} if args.drop_height is not None else (
+        {"impact_velocity": flat(args.impact_velocity)} if args.impact_velocity is not None else {})  # fmt: skip
+    for aspect in aspects:
+        check_geometry(aspect, angles, chain=bool(impacts), given="argument --R-over-r")
+    if impacts:
+        check_sensors(args.sensors, rings)
+        check_impact(args.material, drop_heights=impacts.get("drop_height"),
+                     impact_velocities=impacts.get("impact_velocity"))  # fmt: skip
+    # Axis order fixes the row order: the impact varies fastest, so runs of one chain are adjacent.
+    grid = {
+        "model": args.model or ["dual-spring"],
+        "n_rings": rings,
+        "R_over_r": aspects,
+        "angle": [math.radians(a) for a in angles],
+        "m_eff_ratio": flat(args.m_eff_ratio),
+        "r": [args.r],
+        "material": [args.material],
+        "sensors": [tuple(args.sensors)],
+        **impacts,
+    }
+    size = math.prod(len(values) for values in grid.values())
+    if size > MAX_GRID_POINTS:
+        shape = " x ".join(str(len(values)) for values in grid.values() if len(values) > 1)
+        raise ValueError(f"the grid has {size} points ({shape}); the command line runs at most {MAX_GRID_POINTS} "
+                         "(split it, or call ringchain.numerics.sweep)")  # fmt: skip
+    # The rings at the corners of the grid, where the theory's numbers are most extreme.
+    for aspect in {min(aspects), max(aspects)}:
+        for angle in {min(angles), max(angles)}:
+            ring_of(aspect * args.r, args.r, args.material, angle,
+                    f"the ring of --R-over-r {aspect:g}, --r {args.r:g} m, --angle {angle:g} deg")  # fmt: skip
+    return grid

@@ -1,7 +1,9 @@
-r"""A chain of interlocked rings as a lattice: masses, springs, dashpots, gravity, support.
+r"""A chain of interlocked rings as a network: masses, springs, dashpots, gravity, support.
 
 :class:`Chain` holds the parameters of one of the paper's two models (Sec. III.B) and
-builds the :class:`~ringchain.numerics.models.Lattice` that is integrated.
+builds the :class:`~ringchain.numerics.Network` that is integrated (:meth:`Chain.network`):
+a layout of the engine.  Simulating a chain is simulating its network from the chain's
+initial state, and reading the result as the paper reads its chain.
 
 Site labelling of the dual-spring model
 ---------------------------------------
@@ -38,22 +40,45 @@ contacts accelerates at g m_gravity/m (about 2.7 g for m/m0 = 0.37), and an impa
 speed v carries momentum m v, not m0 v.  This is why a drop is started at the instant
 the slack is taken up, with the free-fall speed sqrt(2 g h) of the real ring
 (:func:`ringchain.numerics.simulate`), rather than integrated through the fall.
+
+Initial conditions (paper Sec. III.A)
+-------------------------------------
+With gravity the chain hangs from its fixed support in static equilibrium (each contact
+carries the weight below it, :meth:`Chain.static_extension`).  The impact is one of
+
+- ``impact_velocity`` v: ring 0 starts moving away from the chain at speed v (along
+  -axis) from the equilibrium of the whole chain;
+- ``drop_height`` h: ring 0 was lifted and released, fell freely with its contacts
+  slack, and the integration starts when its contact with ring 1 is just taut again,
+  ring 0 moving away from the chain at sqrt(2 g h) (:func:`ringchain.theory.impact_speed`),
+  unstretched (a freely falling ring carries no internal load), and the rest of the chain
+  hanging at rest without ring 0's weight.  h is the free-fall height, from release to the
+  instant the slack is taken up: the lift above the hanging position is h plus the static
+  extension of contact 0, a few micrometres.
+
+The striker
+-----------
+Ring 0, the struck ring, has the inertial mass of every lattice ring (the paper's
+convention, the default) or its own ``striker_mass``: a ring in free fall moves as a rigid
+body, so a rigid striker brings the momentum m0 v0 and the energy m0 v0^2/2 of the real ring
+(``striker_mass="m0"``), however the inertia is shared inside the wave that follows.
 """
 
 from __future__ import annotations
 
 import functools
-import math
-import numbers
 from dataclasses import dataclass
 
 import numpy as np
-from ringchain.theory import Ring, fit_power_law, hertz_stiffness_pair, linear, n_per_mm_to_si, paper_data
+from ringchain.theory import STANDARD_GRAVITY, Ring, fit_power_law, hertz_stiffness_pair, linear
 from ringchain.theory import _validate as v
 
-from .models import STANDARD_GRAVITY, Lattice
+from .integrate import impact_speeds
+from .laws import LinearSpring, PowerLaw
+from .network import ANCHOR, Links, Network
+from .results import BatchSimulation
 
-__all__ = ["Chain", "MODELS", "SUPPORTS", "STIFFNESS_SOURCES", "GRADING_PROFILES"]
+__all__ = ["Chain", "MODELS", "SUPPORTS", "GRADING_PROFILES", "STRIKERS", "initial_state", "sensor_pair", "ring_index"]
 
 #: What each parameter of a :class:`Chain` is given per, when it varies along the chain.
 _PROFILES = {"K": "contact", "n": "contact", "gamma": "contact", "m": "ring", "m_gravity": "ring", "K_b": "ring",
@@ -68,32 +93,9 @@ SUPPORTS = ("fixed", "free")
 #: How :meth:`Chain.graded` spaces the values between its two ends.
 GRADING_PROFILES = ("linear", "geometric")
 
-#: Sources of the stiffness of :meth:`Chain.from_paper`: the paper's measured power law
-#: (Table I) or the ring's theory (Eqs. 1-4).
-STIFFNESS_SOURCES = ("table", "theory")
-
-
-def _integer(name: str, value) -> int:
-    """``value`` as an int: a whole number (2 or 2.0), not a bool, a string or 2.7 (ValueError naming it)."""
-    if isinstance(value, bool | np.bool_) or not isinstance(value, numbers.Real):
-        raise ValueError(f"{name} must be an integer, got {value!r}")
-    if not math.isfinite(value) or int(value) != value:
-        raise ValueError(f"{name} must be an integer, got {value!r}")
-    return int(value)
-
-
-def _count(name: str, value, minimum: int) -> int:
-    value = _integer(name, value)
-    if value < minimum:
-        raise ValueError(f"{name} must be at least {minimum}, got {value}")
-    return value
-
-
-def _flag(name: str, value) -> bool:
-    """``value`` as a bool: True or False only (a string such as "no" is refused, not read as true)."""
-    if isinstance(value, bool | np.bool_):
-        return bool(value)
-    raise ValueError(f"{name} must be True or False, got {value!r}")
+#: The struck ring's inertia: the lattice's (``"m_eff"``, the paper's convention) or the real
+#: ring's mass m0 (``"m0"``, a rigid ring in free fall); a number in kg is taken as it is.
+STRIKERS = ("m_eff", "m0")
 
 
 def _parameter(name: str, value, length: int, check, unit: str, what: str):
@@ -127,20 +129,15 @@ def _per_distinct(evaluate, keys, what: str) -> np.ndarray:
     return np.array(results, dtype=float)
 
 
-def _choice(name: str, value: str, options) -> str:
-    if value not in options:
-        raise ValueError(f"{name} must be one of {options}, got {value!r}")
-    return value
-
-
 @dataclass(frozen=True, eq=False)
 class Chain:
     r"""A chain of ``n_rings`` interlocked rings, ring 0 at the impact end.
 
-    Build it with :meth:`power_law`, :meth:`dual_spring`, :meth:`from_ring` or
-    :meth:`from_paper`; a chain that changes along its length with :meth:`from_rings`,
-    :meth:`graded`, :meth:`alternating` or :meth:`joined`.  The contact law of both models
-    is [K delta^n + gamma delta_dot]_+ (:func:`~ringchain.numerics.models.power_law_force`);
+    Build it with :meth:`power_law`, :meth:`dual_spring` or :meth:`from_ring` (the paper's
+    own chain: :func:`ringchain.numerics.paper.paper_chain`); a chain that changes along its
+    length with :meth:`from_rings`, :meth:`graded`, :meth:`alternating` or :meth:`joined`.
+    The contact law of both models is [K delta^n + gamma delta_dot]_+
+    (:class:`~ringchain.numerics.laws.PowerLaw`);
     the dual-spring model uses K = K_c, n = 3/2, gamma = gamma_c and adds the bending
     spring K_b, gamma_b inside each ring.
 
@@ -176,6 +173,10 @@ class Chain:
     support : {"fixed", "free"}
         "fixed": the top ring (the far end) hangs from a fixed support through one more
         contact of the chain's contact law; "free": the far end is free.
+    striker_mass : float or None
+        Inertial mass of ring 0, the struck ring, kg; None: ``m`` of ring 0 (the paper's
+        convention).  The constructors take ``"m0"`` for the ring's own mass (``m_gravity``
+        of ring 0: a rigid striker) and ``"m_eff"`` for None (module notes).
     """
 
     model: str
@@ -189,12 +190,13 @@ class Chain:
     gamma_b: float = 0.0
     m_gravity: float | None = None
     support: str = "fixed"
+    striker_mass: float | str | None = None
 
     def __post_init__(self):
-        _choice("model", self.model, MODELS)
-        _choice("support", self.support, SUPPORTS)
+        v.choice("model", self.model, MODELS)
+        v.choice("support", self.support, SUPPORTS)
         set_ = functools.partial(object.__setattr__, self)
-        set_("n_rings", _count("n_rings", self.n_rings, 2))
+        set_("n_rings", v.count("n_rings", self.n_rings, 2))
         rings, contacts, pairs = self.n_rings, self.n_contacts, self.n_rings - 1
         exponent = functools.partial(v.in_range, low=1.0, high=np.inf, closed_low=True, closed_high=False)
         set_("K", _parameter("K", self.K, contacts, v.positive, "N/m^n", "contact"))
@@ -216,12 +218,16 @@ class Chain:
             set_("gamma_b", _parameter("gamma_b", self.gamma_b, rings, v.nonnegative, "N s/m", "ring"))
         elif self.K_b is not None or np.any(self.gamma_b):
             raise ValueError("K_b and gamma_b belong to the dual-spring model, not the power-law one")
+        striker = self.striker_mass
+        if isinstance(striker, str):
+            striker = None if v.choice("striker_mass", striker, STRIKERS) == "m_eff" else self.profile("m_gravity")[0]
+        set_("striker_mass", None if striker is None else float(v.positive("striker_mass", striker, "kg")))
 
     def _key(self) -> tuple:
         return tuple(
             (value.shape, value.tobytes()) if isinstance(value, np.ndarray) else value
             for value in (self.model, self.n_rings, self.K, self.n, self.m, self.a, self.gamma, self.K_b,
-                          self.gamma_b, self.m_gravity, self.support)
+                          self.gamma_b, self.m_gravity, self.support, self.striker_mass)
         )  # fmt: skip
 
     def __eq__(self, other):
@@ -234,7 +240,7 @@ class Chain:
 
     # -- constructors ------------------------------------------------------------------
     @classmethod
-    def power_law(cls, n_rings, K, n, m, a, gamma=0.0, m_gravity=None, *, support="fixed") -> Chain:
+    def power_law(cls, n_rings, K, n, m, a, gamma=0.0, m_gravity=None, *, support="fixed", striker_mass=None) -> Chain:
         """Power-law chain, paper Eq. (7): one mass m per ring, contacts K delta^n.
 
         Parameters
@@ -256,18 +262,21 @@ class Chain:
             Mass gravity acts on, kg; default ``m``.
         support : {"fixed", "free"}, optional
             Far end hanging from a fixed support (default) or free.
+        striker_mass : float or {"m_eff", "m0"}, optional
+            Inertial mass of ring 0, kg; default ``m`` (the paper's convention); "m0": ``m_gravity``.
 
         Examples
         --------
         >>> chain = Chain.power_law(20, K=4.9e6, n=1.11, m=8.2e-3, a=0.04)
-        >>> chain.n_sites, chain.lattice.n_bonds  # 19 contacts and the support
+        >>> chain.n_sites, chain.network().n_links  # 19 contacts and the support
         (20, 20)
         """
-        return cls("power-law", n_rings, K, n, m, a, gamma=gamma, m_gravity=m_gravity, support=support)
+        return cls("power-law", n_rings, K, n, m, a, gamma=gamma, m_gravity=m_gravity, support=support,
+                   striker_mass=striker_mass)  # fmt: skip
 
     @classmethod
     def dual_spring(
-        cls, n_rings, K_c, K_b, m, a, gamma_c=0.0, gamma_b=0.0, m_gravity=None, *, support="fixed"
+        cls, n_rings, K_c, K_b, m, a, gamma_c=0.0, gamma_b=0.0, m_gravity=None, *, support="fixed", striker_mass=None
     ) -> Chain:
         """Dual-spring chain, paper Eqs. (5)-(6): two masses m/2 per ring.
 
@@ -289,16 +298,18 @@ class Chain:
             Mass gravity acts on, kg; default ``m``.
         support : {"fixed", "free"}, optional
             Far end hanging from a fixed support (through one more Hertz contact) or free.
+        striker_mass : float or {"m_eff", "m0"}, optional
+            Inertial mass of ring 0 (both halves), kg; default ``m``; "m0": ``m_gravity``.
 
         Examples
         --------
         >>> chain = Chain.dual_spring(20, K_c=7.5e9, K_b=3.3e6, m=8.2e-3, a=0.04)
-        >>> chain.n_sites, chain.contact_bonds[:3].tolist(), chain.bending_bonds[:3].tolist()
+        >>> chain.n_sites, chain.contact_links[:3].tolist(), chain.bending_links[:3].tolist()
         (40, [1, 3, 5], [0, 2, 4])
         """
         return cls(
             "dual-spring", n_rings, K_c, 1.5, m, a, gamma=gamma_c, K_b=K_b, gamma_b=gamma_b,
-            m_gravity=m_gravity, support=support,
+            m_gravity=m_gravity, support=support, striker_mass=striker_mass,
         )  # fmt: skip
 
     @classmethod
@@ -315,6 +326,7 @@ class Chain:
         gamma_c: float = 0.0,
         gamma_b: float = 0.0,
         support: str = "fixed",
+        striker_mass=None,
     ) -> Chain:
         """A chain of identical :class:`~ringchain.theory.Ring` s.
 
@@ -336,6 +348,9 @@ class Chain:
         gamma_c, gamma_b : float, optional
             Dual-spring contact and bending dashpots, N s/m.
         support : {"fixed", "free"}, optional
+        striker_mass : float or {"m_eff", "m0"}, optional
+            Inertial mass of ring 0, kg: default the lattice's m_eff (the paper's convention);
+            "m0" the ring's mass (a rigid ring in free fall; module notes).
 
         Examples
         --------
@@ -346,80 +361,24 @@ class Chain:
         if not isinstance(ring, Ring):
             raise TypeError(f"ring must be a ringchain.theory.Ring, got {type(ring).__name__}")
         ring.check_chain()
-        _choice("model", model, MODELS)
+        v.choice("model", model, MODELS)
         ratio = float(v.in_range("m_eff_ratio", m_eff_ratio, 0.0, 1.0))
         m0 = ring.mass
         if model == "dual-spring":
             if K is not None or n is not None or gamma:
                 raise ValueError("K, n and gamma belong to the power-law model; use gamma_c and gamma_b")
             return cls.dual_spring(
-                n_rings, ring.K_c, ring.K_b, ratio * m0, ring.spacing, gamma_c, gamma_b, m0, support=support
-            )
+                n_rings, ring.K_c, ring.K_b, ratio * m0, ring.spacing, gamma_c, gamma_b, m0, support=support,
+                striker_mass=striker_mass,
+            )  # fmt: skip
         if gamma_c or gamma_b:
             raise ValueError("gamma_c and gamma_b belong to the dual-spring model; use gamma")
         if (K is None) != (n is None):
             raise ValueError("give both K and n, or neither (then the series law is fitted, Eq. 4)")
         if K is None:
             K, n = ring.power_law()
-        return cls.power_law(n_rings, K, n, ratio * m0, ring.spacing, gamma, m0, support=support)
-
-    @classmethod
-    def from_paper(
-        cls,
-        model: str = "power-law",
-        aspect_ratio: float = 9.0,
-        n_rings: int = paper_data.CHAIN_RINGS,
-        *,
-        stiffness: str | None = None,
-        **dashpots,
-    ) -> Chain:
-        """The paper's experimental chain: Table I parameters for ``aspect_ratio``.
-
-        Both models use the fitted m_eff/m0 as inertial mass and m0 for gravity; the rings
-        are the paper's, r = 2.5 mm, stainless steel.  ``dashpots`` are passed on (default
-        undamped: the paper does not report its fitted gamma values).
-
-        Parameters
-        ----------
-        model : {"power-law", "dual-spring"}
-        aspect_ratio : float
-            A row of Table I (9, 6 or 5.5).
-        n_rings : int
-        stiffness : {"table", "theory"}, optional
-            "table": the power-law chain takes the measured K (N/mm^n, converted to SI)
-            and n; the dual-spring chain the K_c and K_b whose series law reduces to that
-            power law over 1-100 N
-            (:func:`ringchain.numerics.paper.series_stiffness_for_power_law`).  "theory":
-            the ring's K_c and K_b (Eqs. 1-2), and for the power-law chain the power law
-            fitted to them (Eq. 4).  Default: as the paper did (Sec. III.B), "table" for
-            the power-law chain and "theory" for the dual-spring chain.
-
-        Examples
-        --------
-        >>> chain = Chain.from_paper("power-law")
-        >>> chain.n_rings, chain.n, round(chain.m / chain.m_gravity, 2)
-        (20, 1.11, 0.37)
-        """
-        if aspect_ratio not in paper_data.TABLE_I:
-            raise ValueError(f"Table I has aspect ratios {sorted(paper_data.TABLE_I)}, got {aspect_ratio!r}")
-        _choice("model", model, MODELS)
-        if stiffness is None:
-            stiffness = "table" if model == "power-law" else "theory"
-        _choice("stiffness", stiffness, STIFFNESS_SOURCES)
-        K_mm, n, ratio = paper_data.TABLE_I[aspect_ratio]
-        ring = Ring.from_aspect_ratio(aspect_ratio, r=paper_data.TUBE_RADIUS)
-        if stiffness == "theory":
-            return cls.from_ring(ring, n_rings, model, m_eff_ratio=ratio, **dashpots)
-        K_si = float(n_per_mm_to_si(K_mm, n))
-        if model == "power-law":
-            return cls.from_ring(ring, n_rings, model, m_eff_ratio=ratio, K=K_si, n=n, **dashpots)
-        from .paper import series_stiffness_for_power_law
-
-        if "gamma" in dashpots:
-            raise ValueError("K, n and gamma belong to the power-law model; use gamma_c and gamma_b")
-        K_c, K_b = series_stiffness_for_power_law(K_si, n)
-        m0 = ring.mass
-        return cls.dual_spring(n_rings, K_c, K_b, ratio * m0, ring.spacing, m_gravity=m0, **dashpots)
+        return cls.power_law(n_rings, K, n, ratio * m0, ring.spacing, gamma, m0, support=support,
+                             striker_mass=striker_mass)  # fmt: skip
 
     @classmethod
     def from_rings(
@@ -433,6 +392,7 @@ class Chain:
         gamma_c: float = 0.0,
         gamma_b: float = 0.0,
         support: str = "fixed",
+        striker_mass=None,
     ) -> Chain:
         """A chain of given rings, ring 0 at the impact end: each contact from the two rings it joins.
 
@@ -457,6 +417,8 @@ class Chain:
             Dual-spring contact and bending dashpots, N s/m.
         support : {"fixed", "free"}, optional
             The support's contact is that of the top ring with a ring like itself.
+        striker_mass : float or {"m_eff", "m0"}, optional
+            Inertial mass of ring 0, kg (see :meth:`from_ring`).
 
         Notes
         -----
@@ -480,8 +442,8 @@ class Chain:
                 ring.check_chain()
             except ValueError as error:
                 raise ValueError(f"rings[{i}]: {error}") from None
-        _choice("model", model, MODELS)
-        _choice("support", support, SUPPORTS)
+        v.choice("model", model, MODELS)
+        v.choice("support", support, SUPPORTS)
         ratio = float(v.in_range("m_eff_ratio", m_eff_ratio, 0.0, 1.0))
         n_rings = len(rings)
         pairs = [(rings[i], rings[i + 1]) for i in range(n_rings - 1)]
@@ -507,14 +469,16 @@ class Chain:
         if model == "dual-spring":
             if gamma is not None and np.any(gamma):
                 raise ValueError("gamma belongs to the power-law model; use gamma_c and gamma_b")
-            return cls.dual_spring(n_rings, K_c, K_b[:n_rings], ratio * m0, a, gamma_c, gamma_b, m0, support=support)
+            return cls.dual_spring(n_rings, K_c, K_b[:n_rings], ratio * m0, a, gamma_c, gamma_b, m0, support=support,
+                                   striker_mass=striker_mass)  # fmt: skip
         if np.any(gamma_c) or np.any(gamma_b):
             raise ValueError("gamma_c and gamma_b belong to the dual-spring model; use gamma")
         # Each period of the chain is a contact in series with the body of the ring below it (Eq. 3).
         below_K_b = np.append(K_b, K_b[-1])[: len(pairs)]
         fits = _per_distinct(lambda kc, kb: tuple(float(x) for x in fit_power_law(kc, kb)),
                              list(zip(K_c.tolist(), below_K_b.tolist(), strict=True)), "contact {i}")  # fmt: skip
-        return cls.power_law(n_rings, fits[:, 0], fits[:, 1], ratio * m0, a, gamma, m0, support=support)
+        return cls.power_law(n_rings, fits[:, 0], fits[:, 1], ratio * m0, a, gamma, m0, support=support,
+                             striker_mass=striker_mass)  # fmt: skip
 
     @classmethod
     def graded(
@@ -554,8 +518,8 @@ class Chain:
         """
         if not isinstance(ring, Ring):
             raise TypeError(f"ring must be a ringchain.theory.Ring, got {type(ring).__name__}")
-        n_rings = _count("n_rings", n_rings, 2)
-        _choice("profile", profile, GRADING_PROFILES)
+        n_rings = v.count("n_rings", n_rings, 2)
+        v.choice("profile", profile, GRADING_PROFILES)
         if (aspect_ratio is None) == (angle is None):
             raise ValueError("give one of aspect_ratio=(first, last) or angle=(first, last) to grade")
         name, ends = ("aspect_ratio", aspect_ratio) if angle is None else ("angle", angle)
@@ -591,7 +555,7 @@ class Chain:
         >>> len(set(np.round(chain.m, 6)))  # two ring masses
         2
         """
-        n_rings = _count("n_rings", n_rings, 2)
+        n_rings = v.count("n_rings", n_rings, 2)
         return cls.from_rings([ring_a, ring_b] * (n_rings // 2) + [ring_a] * (n_rings % 2), angles, model, **options)
 
     @classmethod
@@ -641,7 +605,7 @@ class Chain:
             chain_a.model, chain_a.n_rings + chain_b.n_rings, contacts("K"), contacts("n"), per_ring("m"),
             np.concatenate([chain_a.profile("a"), [joint["a"]], chain_b.profile("a")]), gamma=contacts("gamma"),
             K_b=per_ring("K_b") if dual else None, gamma_b=per_ring("gamma_b") if dual else 0.0,
-            m_gravity=per_ring("m_gravity"), support=chain_b.support,
+            m_gravity=per_ring("m_gravity"), support=chain_b.support, striker_mass=chain_a.striker_mass,
         )  # fmt: skip
 
     # -- derived quantities -----------------------------------------------------------------
@@ -696,58 +660,68 @@ class Chain:
     def damped(self) -> bool:
         return bool(np.any(self.gamma > 0) or np.any(self.gamma_b > 0))
 
+    # -- the network --------------------------------------------------------------------------
     @property
-    def contact_bonds(self) -> np.ndarray:
-        """Lattice bond index of the contact between ring i and ring i+1, i = 0..n_rings-2."""
+    def contact_links(self) -> np.ndarray:
+        """Network link index of the contact between ring i and ring i+1, i = 0..n_rings-2."""
         return self.sites_per_ring * np.arange(self.n_rings - 1) + (self.sites_per_ring - 1)
 
     @property
-    def bending_bonds(self) -> np.ndarray | None:
-        """Lattice bond index of the bending spring of ring i (dual-spring), else None."""
+    def bending_links(self) -> np.ndarray | None:
+        """Network link index of the bending spring of ring i (dual-spring), else None."""
         return 2 * np.arange(self.n_rings) if self.model == "dual-spring" else None
 
     @property
-    def support_bond(self) -> int | None:
-        """Lattice bond index of the contact with the fixed support, or None if free."""
+    def support_link(self) -> int | None:
+        """Network link index of the contact with the fixed support, or None if free."""
         return self.n_sites - 1 if self.support == "fixed" else None
 
-    @property
-    def _contact_bond_indices(self) -> np.ndarray:
-        """Lattice bond of each contact (the support's last when fixed): per-contact arrays go there."""
-        bonds = self.contact_bonds
-        return np.append(bonds, self.support_bond) if self.support == "fixed" else bonds
+    def network(self) -> Network:
+        """The sites and links the engine integrates (one site per ring, or two halves of m/2 for the
+        dual-spring model; :attr:`contact_links`, :attr:`bending_links`, :attr:`support_link` say
+        which link is which).  Built once per chain.
+
+        Examples
+        --------
+        >>> chain = Chain.dual_spring(3, K_c=7.5e9, K_b=3.3e6, m=8.2e-3, a=0.04)
+        >>> net = chain.network()
+        >>> net.n_sites, net.n_links, net.i.tolist(), net.j.tolist()  # spring, contact, spring, ..., the support
+        (6, 6, [0, 1, 2, 3, 4, 5], [1, 2, 3, 4, 5, -1])
+        """
+        return self._network
 
     @functools.cached_property
-    def lattice(self) -> Lattice:
-        """The sites and bonds integrated by the solver."""
-        k = self.sites_per_ring
-        n_bonds = self.n_sites if self.support == "fixed" else self.n_sites - 1
-        contact = np.zeros(n_bonds, dtype=bool)
-        contact[self._contact_bond_indices] = True
-        spring = ~contact
-
-        def on(bonds, value):
-            """Per-bond array: ``value`` (a number or one per bond of ``bonds``) on those bonds, 0 elsewhere."""
-            if np.ndim(value) == 0:
-                return np.where(bonds, value, 0.0)
-            out = np.zeros(n_bonds)
-            out[bonds] = value
-            return out
+    def _network(self) -> Network:
+        k, N = self.sites_per_ring, self.n_rings
 
         def per_site(value):
             return np.full(self.n_sites, value / k) if np.ndim(value) == 0 else np.repeat(value / k, k)
 
-        # A spring bond has no contact force (K_contact = 0); its exponent is a placeholder 1.
-        n = self.n if np.ndim(self.n) == 0 else on(contact, self.n) + spring
-        return Lattice(
-            mass=per_site(self.m),
-            weight_mass=per_site(self.m_gravity),
-            K_contact=on(contact, self.K),
-            n=n,
-            K_spring=on(spring, 0.0 if self.K_b is None else self.K_b),
-            gamma_contact=on(contact, self.gamma),
-            gamma_spring=on(spring, self.gamma_b),
-        )
+        mass = per_site(self.m)
+        if self.striker_mass is not None:
+            mass = mass.copy() if np.ndim(self.m) else mass
+            mass[:k] = self.striker_mass / k
+        # Rest positions along the axis (only the length scale of the tolerances reads them): the
+        # ring centres a apart, the halves of a dual-spring ring a quarter spacing either side.
+        a = self.profile("a")
+        centres = np.concatenate([[0.0], np.cumsum(a)])
+        if k == 2:
+            below, above = np.concatenate([[a[0]], a]), np.concatenate([a, [a[-1]]])
+            positions = np.stack([centres - below / 4, centres + above / 4], axis=-1).ravel()
+        else:
+            positions = centres
+        # Contact c joins ring c (its upper half) to ring c + 1 (its lower half); the support's, the top ring to
+        # the anchor.
+        i = k * np.arange(self.n_contacts) + (k - 1)
+        j = i + 1
+        if self.support == "fixed":
+            j[-1] = ANCHOR
+        links = [Links(i, j, PowerLaw(self.K, self.n, self.gamma), index=i)]
+        if self.model == "dual-spring":
+            springs = k * np.arange(N)
+            links.insert(0, Links(springs, springs + 1, LinearSpring(self.K_b, self.gamma_b), index=springs))
+        return Network(mass, links, weight_mass=per_site(self.m_gravity), positions=positions,
+                       rings=np.repeat(np.arange(N), k))  # fmt: skip
 
     def ring_sites(self, i) -> np.ndarray:
         """Site indices of ring i (one site, or lower and upper half); ``i`` an index or an array of them."""
@@ -756,11 +730,41 @@ class Chain:
             raise ValueError(f"ring indices must be integers in 0..{self.n_rings - 1}, got {i.tolist()!r}")
         return self.sites_per_ring * i[..., None] + np.arange(self.sites_per_ring)
 
-    def static_extension(self, g=STANDARD_GRAVITY, *, first_ring_hanging=True) -> np.ndarray:
-        """Bond extensions, m, of the chain hanging at rest from its support.
+    def ring_index(self, ring) -> int:
+        """``ring`` as a ring index of this chain (ValueError naming it otherwise)."""
+        return ring_index(ring, self.n_rings)
 
-        Bond k carries the weight of every site below it (the sites 0..k); its extension
-        inverts its force law: (T/K)^(1/n) for a contact, T/K_b for a bending spring.
+    def sensor_links(self, rings) -> tuple[np.ndarray, np.ndarray]:
+        """Links read by the sensors of ``rings`` and their weights, each of shape (len(rings), 2).
+
+        The dual-spring sensor is ring j's bending link; the power-law sensor is the mean of
+        the contacts below (j - 1) and above (j) ring j (see
+        :attr:`~ringchain.numerics.Simulation.sensor_force`).  A link that does not exist (below
+        ring 0, above a free top ring) has weight 0.
+        """
+        rings = np.asarray(rings, dtype=int)
+        if self.model == "dual-spring":
+            links = np.stack([2 * rings, 2 * rings], axis=-1)
+            return links, np.broadcast_to([1.0, 0.0], links.shape)
+        below, above = rings - 1, rings
+        has_below, has_above = below >= 0, above < self.n_contacts
+        links = np.stack([np.where(has_below, below, above), np.where(has_above, above, below)], axis=-1)
+        return links, 0.5 * np.stack([has_below, has_above], axis=-1)
+
+    def recorded_sites(self, rings) -> np.ndarray:
+        """Sites whose states the sensors of ``rings`` need (sorted)."""
+        links, weights = self.sensor_links(np.array(rings))
+        used = links[weights > 0]
+        net = self.network()
+        sites = np.concatenate([net.i[used], net.j[used]])
+        return np.unique(sites[sites != ANCHOR])
+
+    # -- statics ---------------------------------------------------------------------------------
+    def static_extension(self, g=STANDARD_GRAVITY, *, first_ring_hanging=True) -> np.ndarray:
+        """Link extensions, m, of the chain hanging at rest from its support.
+
+        Link k carries the weight of every site below it; its extension inverts its law:
+        (T/K)^(1/n) for a contact, T/K_b for a bending spring.
 
         Parameters
         ----------
@@ -768,28 +772,106 @@ class Chain:
             Gravity, m/s^2.
         first_ring_hanging : bool, optional
             False when ring 0 is held up (lifted for a drop): its weight is then not on
-            the chain and its own bonds are unloaded.
+            the chain and its own links are unloaded.
         """
-        first_ring_hanging = _flag("first_ring_hanging", first_ring_hanging)
+        first_ring_hanging = v.flag("first_ring_hanging", first_ring_hanging)
         if self.support != "fixed" and g > 0:
             raise ValueError("a chain with a free far end has no static equilibrium under gravity")
-        weights = g * self.lattice.weight_mass
+        net = self.network()
+        weights = g * net.weight_mass
         if not first_ring_hanging:
             weights = weights.copy()
             weights[: self.sites_per_ring] = 0.0
-        tension = np.cumsum(weights)[: self.lattice.n_bonds]
-        if self.model == "power-law":  # every bond a contact: K and n per bond
-            return (tension / self.K) ** (1.0 / self.n)
-        e = np.empty_like(tension)
-        contacts = self._contact_bond_indices
-        e[contacts] = (tension[contacts] / self.K) ** (1.0 / self.n)
-        e[0::2] = tension[0::2] / self.K_b
-        return e
+        return net.extension_at(np.cumsum(weights)[: net.n_links])  # link k carries sites 0..k
 
     def displacement_from_extension(self, e) -> np.ndarray:
-        """Site displacements, m, with bond extensions ``e``: the support is the fixed
+        """Site displacements, m, with link extensions ``e``: the support is the fixed
         reference when present, else site 0 is at 0."""
         e = np.asarray(e, dtype=float)
         if self.support == "fixed":
             return 0.0 - np.cumsum(e[..., ::-1], axis=-1)[..., ::-1]  # 0.0 - : no -0.0
         return np.concatenate([np.zeros((*e.shape[:-1], 1)), np.cumsum(e, axis=-1)], axis=-1)
+
+    # -- the model contract (ringchain.numerics.integrate) -------------------------------------------
+    def dynamics(self) -> Network:
+        """What the engine integrates: :meth:`network`."""
+        return self.network()
+
+    def impact_state(self, speeds, dropped, gravity, g):
+        """Displacements and velocities of B runs at t = 0 (module notes); ``speeds`` validated (m/s)."""
+        if gravity and self.support != "fixed":
+            raise ValueError("gravity needs the chain to hang from a fixed support (support='fixed')")
+        e = self.static_extension(g if gravity else 0.0, first_ring_hanging=not dropped)
+        x = np.broadcast_to(self.displacement_from_extension(e), (speeds.size, self.n_sites)).copy()
+        u = np.zeros_like(x)
+        u[:, : self.sites_per_ring] = -speeds[:, None]
+        return x, u
+
+    def recorded(self, rings):
+        """The rings to record (sorted, validated) and the sites their sensors need; (None, None) for all."""
+        if rings is None:
+            return None, None
+        values = [rings] if np.ndim(rings) == 0 else list(rings)
+        if not values:
+            raise ValueError("rings must name at least one ring (or be None for every ring)")
+        rings = tuple(sorted({self.ring_index(r) for r in values}))
+        return rings, self.recorded_sites(rings)
+
+    def result(self, **record) -> BatchSimulation:
+        """The record of a batch of runs of this chain."""
+        return BatchSimulation(chain=self, network=self.network(), **record)
+
+
+def initial_state(chain: Chain, *, impact_velocity=None, drop_height=None, gravity=True, g=STANDARD_GRAVITY):
+    """Site displacements and velocities at t = 0, shape (B, n_sites) each.
+
+    Parameters
+    ----------
+    chain : Chain
+    impact_velocity : float or array_like, optional
+        Speed of ring 0 moving away from the chain, m/s (one run per value).
+    drop_height : float or array_like, optional
+        Free-fall height of ring 0, m; the impact speed is sqrt(2 g h) (see module notes).
+    gravity : bool, optional
+        Start from the hanging equilibrium (needs a fixed support) or, if False, from the
+        unstretched chain with every contact just taut.
+    g : float, optional
+        Gravity, m/s^2; also sets sqrt(2 g h) when gravity is off.
+
+    Returns
+    -------
+    x, u : ndarray, shape (B, n_sites)
+        Displacements (m) and velocities (m/s) along the axis pointing away from the impact.
+
+    Examples
+    --------
+    >>> chain = Chain.power_law(3, K=1e6, n=1.5, m=0.01, a=0.04)
+    >>> x, u = initial_state(chain, impact_velocity=[0.5, 1.0], gravity=False)
+    >>> x.tolist(), u.tolist()
+    ([[0.0, 0.0, 0.0], [0.0, 0.0, 0.0]], [[-0.5, 0.0, 0.0], [-1.0, 0.0, 0.0]])
+    """
+    if not isinstance(chain, Chain):
+        raise TypeError(f"chain must be a Chain, got {type(chain).__name__}")
+    g = float(v.positive("g", g, "m/s^2"))
+    speeds, dropped = impact_speeds(impact_velocity, drop_height, g)
+    return chain.impact_state(speeds, dropped, v.flag("gravity", gravity), g)
+
+
+def ring_index(ring, n_rings: int) -> int:
+    """``ring`` as the index of a ring of a chain of ``n_rings`` (ValueError naming it otherwise)."""
+    i = v.integer("ring", ring)
+    if not 0 <= i < n_rings:
+        raise ValueError(f"ring {i} is not in a chain of {n_rings} rings (0..{n_rings - 1})")
+    return i
+
+
+def sensor_pair(sensors, n_rings=None) -> tuple[int, int]:
+    """Two sensor rings, near then far from the impact, within ``n_rings`` if given (ValueError saying why)."""
+    if isinstance(sensors, str) or np.ndim(sensors) != 1 or len(sensors) != 2:
+        raise ValueError(f"sensors must be two rings, near then far from the impact, got {sensors!r}")
+    near, far = (v.integer("sensor ring", s) for s in sensors)
+    if not 0 <= near < far:
+        raise ValueError(f"sensors must be two rings, near then far, counted from 0, got {tuple(sensors)!r}")
+    if n_rings is not None and far >= n_rings:
+        raise ValueError(f"sensor ring {far} is not in a chain of {n_rings} rings (0..{n_rings - 1})")
+    return near, far

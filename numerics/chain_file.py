@@ -37,14 +37,14 @@ import numpy as np
 from ringchain.theory import Ring, get_material
 from ringchain.theory import _validate as v
 
-from .chain import GRADING_PROFILES, SUPPORTS, Chain, _count
+from .chain import GRADING_PROFILES, SUPPORTS, Chain
 
 try:  # Python 3.11+
     import tomllib
 except ModuleNotFoundError:  # pragma: no cover - Python 3.10
     import tomli as tomllib
 
-__all__ = ["Segment", "ChainFile", "read_chain_file", "parse_chain", "vary", "sweep_chain_file"]
+__all__ = ["Segment", "ChainFile", "read_chain_file", "parse_chain", "vary"]
 
 _FIELDS = ("rings", "R", "r", "material", "angle", "profile")
 _GRADED = ("R", "r", "angle")
@@ -177,7 +177,7 @@ def _segment(where: str, table) -> Segment:
         if name not in table:
             raise ValueError(f"{where}: field {name!r} is missing")
     fields = {
-        "rings": _field(where, "rings", table["rings"], lambda x: _count("rings", x, 1)),
+        "rings": _field(where, "rings", table["rings"], lambda x: v.count("rings", x, 1)),
         "R": _field(where, "R", table["R"], _graded("R", "m", 0.0, np.inf)),
         "r": _field(where, "r", table["r"], _graded("r", "m", 0.0, np.inf)),
         "angle": _field(where, "angle", table.get("angle", 90.0), _graded("angle", "degrees", 0.0, 90.0)),
@@ -249,7 +249,7 @@ def vary(description: ChainFile, spec: str, value: float) -> ChainFile:
     if name == "rings":
         if len(parts) == 3:
             raise ValueError("the ring count is one number: vary K.rings, not its first or last")
-        new = _field(where, "rings", value, lambda x: _count("rings", x, 1))
+        new = _field(where, "rings", value, lambda x: v.count("rings", x, 1))
     else:
         unit, high = ("degrees", 90.0) if name == "angle" else ("m", np.inf)
         one = _field(where, name, value, _graded(name, unit, 0.0, high))
@@ -262,70 +262,3 @@ def vary(description: ChainFile, spec: str, value: float) -> ChainFile:
     segments = list(description.segments)
     segments[k - 1] = dataclasses.replace(segment, **{name: new})
     return dataclasses.replace(description, segments=tuple(segments))
-
-
-def sweep_chain_file(description: ChainFile, field=None, values=(None,), *, model="dual-spring", m_eff_ratio=1.0,
-                     drop_heights=None, impact_velocities=None, sensors=(6, 12), t_end=None, n_samples=None,
-                     method=None) -> list[dict]:  # fmt: skip
-    """One row per value of ``field`` (:func:`vary`) and impact: sensor peaks, time of flight, support force.
-
-    Parameters
-    ----------
-    description : ChainFile
-    field : str, optional
-        The varied field (``"2.R.last"``...); None runs ``description`` as it is.
-    values : sequence
-        Its values (m, degrees or ring counts).
-    model, m_eff_ratio
-        As in :meth:`ChainFile.chain`.
-    drop_heights, impact_velocities : sequence of float
-        The impacts (m, or m/s), integrated together as one batch per chain.
-    sensors : (int, int)
-        Near and far sensor rings.
-    t_end : float, optional
-        Duration, s; default :func:`ringchain.numerics.sweep.default_t_end` of each chain.
-    n_samples : int, optional
-        Samples per record (default the sweep's).
-    method : str, optional
-        Integrator (default the sweep's, velocity Verlet).
-
-    Returns
-    -------
-    list of dict
-        Columns: the varied field's value, the impact, peak sensor forces (N), arrival
-        times and time of flight (s), wave speed (m/s), the largest force on the support (N).
-    """
-    from .solve import simulate_batch
-    from .sweep import DEFAULT_SAMPLES, SWEEP_METHOD, default_t_end
-
-    if (drop_heights is None) == (impact_velocities is None):
-        raise ValueError("give drop_heights or impact_velocities")
-    near, far = sensors
-    from .models import STANDARD_GRAVITY
-
-    speeds = [math.sqrt(2.0 * STANDARD_GRAVITY * h) for h in drop_heights] if drop_heights else list(impact_velocities)
-    impact = {"drop_heights": drop_heights} if drop_heights else {"impact_velocities": impact_velocities}
-    rows = []
-    for value in values:
-        chain_description = description if field is None else vary(description, field, value)
-        chain = chain_description.chain(model, m_eff_ratio)
-        if far >= chain.n_rings:
-            raise ValueError(f"sensor ring {far} is not in the chain of {chain.n_rings} rings of {field} = {value:g}")
-        duration = default_t_end(chain, speeds, sensors) if t_end is None else t_end
-        batch = simulate_batch(chain, duration, **impact, n_samples=n_samples or DEFAULT_SAMPLES,
-                               method=method or SWEEP_METHOD)  # fmt: skip
-        for k, run in enumerate(batch):
-            row = {} if field is None else {field: value}
-            row |= {"n_rings": chain.n_rings, "model": chain.model, "impact_velocity_m_s": speeds[k]}
-            if drop_heights:
-                row["drop_height_m"] = drop_heights[k]
-            row |= {
-                "sensor_near": near, "sensor_far": far,
-                "peak_force_near_N": run.peak_force(near), "peak_force_far_N": run.peak_force(far),
-                "arrival_near_s": run.arrival_time(near), "arrival_far_s": run.arrival_time(far),
-                "time_of_flight_s": run.time_of_flight(near, far), "wave_speed_m_s": run.wave_speed(near, far),
-                "support_peak_N": None if run.support_force is None else float(np.max(run.support_force)),
-                "t_end_s": float(run.t[-1]),
-            }  # fmt: skip
-            rows.append(row)
-    return rows

@@ -25,11 +25,8 @@ import sys
 import warnings
 from pathlib import Path
 
-import numpy as np
-
 from . import _cli_options as opt
 from .paper import PAPER_DROP_HEIGHT, PAPER_FIGURES, STIFFNESS_SOURCES
-from .paper import new_figure as _figure
 
 __all__ = ["main", "build_parser"]
 
@@ -132,69 +129,25 @@ def _ring(args) -> int:
 
 
 # -- ringchain simulate ------------------------------------------------------------------------------
-def _simulate_point(args):
-    """The sweep point of ``ringchain simulate``, every input checked against the others."""
-    from .sweep import Point
+def _simulate(args) -> int:
+    from .experiment import run_experiment
 
-    aspect = opt.aspect_ratio(args.R, args.r)
-    opt.check_geometry(aspect, [args.angle], chain=True, given="arguments --R and --r")
-    opt.check_sensors(args.sensors, [args.rings])
-    if args.drop_height is not None:
-        impact = {"drop_height": args.drop_height}
-        opt.check_impact(args.material, drop_heights=[args.drop_height])
-    else:
-        impact = {"impact_velocity": args.impact_velocity}
-        opt.check_impact(args.material, impact_velocities=[args.impact_velocity])
-    given = f"the ring of --R {args.R:g} m and --r {args.r:g} m"
-    opt.ring_of(aspect * args.r, args.r, args.material, args.angle, given)
-    return Point(
-        R_over_r=aspect, r=args.r, angle=math.radians(args.angle), material=args.material, model=args.model,
-        n_rings=args.rings, m_eff_ratio=args.m_eff_ratio, sensors=tuple(args.sensors), **impact,
-    )  # fmt: skip
-
-
-#: The single-ring options that --chain replaces, with their defaults.
-_GEOMETRY_DEFAULTS = {"R": 22.5e-3, "r": 2.5e-3, "angle": 90.0, "material": "stainless", "rings": 20}
-
-
-def _simulate_chain_file(args) -> int:
-    """``ringchain simulate --chain FILE``: a chain that changes along its length (:mod:`.chain_file`)."""
-    from .models import STANDARD_GRAVITY
-    from .solve import _impact_speeds, simulate
-    from .sweep import default_t_end
-
-    description = args.chain
-    opt.check_chain_file_alone(args, _GEOMETRY_DEFAULTS)
-    opt.check_sensors(args.sensors, [description.n_rings])
+    if args.plot is not None and Path(args.plot).resolve() == Path(args.out).resolve():
+        raise ValueError(f"arguments --out and --plot: both name {args.out}; give two files")
+    chain, described = opt.simulated_chain(args)
     impact = {"drop_height": args.drop_height} if args.drop_height is not None else {
         "impact_velocity": args.impact_velocity}  # fmt: skip
-    for material in {segment.material for segment in description.segments}:
-        opt.check_impact(material, drop_heights=[args.drop_height] if args.drop_height else None,
-                         impact_velocities=[args.impact_velocity] if args.impact_velocity else None)  # fmt: skip
-    speed = float(_impact_speeds(args.impact_velocity, args.drop_height, STANDARD_GRAVITY)[0][0])
-    with opt.computing(f"the chain of {description.source}"):
-        chain = description.chain(args.model, args.m_eff_ratio)
-        t_end = default_t_end(chain, [speed], args.sensors) if args.t_end is None else args.t_end
-    solver = {} if args.method is None else {"method": args.method}
-    if args.samples is not None:
-        solver["n_samples"] = args.samples
-    sim = simulate(chain, t_end, **impact, **solver)
-    near, far = args.sensors
-    columns = {"t_s": sim.t, **{f"sensor_ring{k}_N": sim.sensor(k) for k in (near, far)}}
-    if sim.support_force is not None:
-        columns["support_N"] = sim.support_force
-    np.savetxt(args.out, np.column_stack(list(columns.values())), delimiter=",", header=",".join(columns),
-               comments="", fmt="%.17g")  # fmt: skip
-    if args.plot:
-        _plot_traces(args.plot, sim, (near, far), speed)
-    lines = [f"{chain.n_rings} rings from {description.source} ({len(description.segments)} segments), "
-             f"{chain.model} model, impact at {speed:.4g} m/s, {t_end * 1e3:.4g} ms"]  # fmt: skip
-    for k in (near, far):
-        lines.append(f"  ring {k}: peak {sim.peak_force(k):.4g} N at {sim.arrival_time(k) * 1e3:.4g} ms")
-    lines.append(f"  time of flight {sim.time_of_flight(near, far) * 1e3:.4g} ms, speed "
-                 f"{sim.wave_speed(near, far):.4g} m/s")  # fmt: skip
-    if sim.support_force is not None:
-        lines.append(f"  support: largest force {np.max(sim.support_force):.4g} N")
+    solver = {
+        name: value for name, value in (("method", args.method), ("n_samples", args.samples)) if value is not None
+    }
+    run = run_experiment(chain, **impact, sensors=tuple(args.sensors), t_end=args.t_end, out=args.out, plot=args.plot,
+                         **solver)  # fmt: skip
+    try:
+        lines = run.summary(described)
+    except ValueError as exc:
+        hint = "; give a longer --t-end" if args.t_end is not None else ""
+        reason = opt.one_line(exc)
+        raise ValueError(f"the traces are written, but their leading pulses cannot be read: {reason}{hint}") from None
     print("\n".join(lines))
     print(f"sensor traces written to {args.out}")
     if args.plot:
@@ -202,156 +155,12 @@ def _simulate_chain_file(args) -> int:
     return 0
 
 
-def _simulate(args) -> int:
-    from .solve import simulate
-    from .sweep import default_t_end
-
-    if args.plot is not None and Path(args.plot).resolve() == Path(args.out).resolve():
-        raise ValueError(f"arguments --out and --plot: both name {args.out}; give two files")
-    if args.chain is not None:
-        return _simulate_chain_file(args)
-    point = _simulate_point(args)
-    impact = {"drop_height": point.drop_height} if point.drop_height is not None else {
-        "impact_velocity": point.impact_velocity}  # fmt: skip
-    with opt.computing(f"the chain of {args.rings} rings"):
-        chain = point.chain()
-        t_end = default_t_end(chain, [point.speed], point.sensors) if args.t_end is None else args.t_end
-    solver = {} if args.method is None else {"method": args.method}
-    if args.samples is not None:
-        solver["n_samples"] = args.samples
-    sim = simulate(chain, t_end, **impact, **solver)
-    try:
-        summary = _run_summary(sim, point, t_end)
-        failure = None
-    except ValueError as exc:
-        summary, failure = [], exc
-    columns = {"t_s": sim.t, **{f"sensor_ring{k}_N": sim.sensor(k) for k in point.sensors}}
-    np.savetxt(args.out, np.column_stack(list(columns.values())), delimiter=",", header=",".join(columns),
-               comments="", fmt="%.17g")  # fmt: skip
-    if args.plot:
-        _plot_traces(args.plot, sim, point.sensors, point.speed)
-    print("\n".join(summary))
-    print(f"sensor traces written to {args.out}")
-    if args.plot:
-        print(f"plot written to {args.plot}")
-    if failure is not None:
-        hint = "; give a longer --t-end" if args.t_end is not None else ""
-        reason = opt.one_line(failure)
-        raise ValueError(f"the traces are written, but their leading pulses cannot be read: {reason}{hint}")
-    return 0
-
-
-def _run_summary(sim, point, t_end) -> list[str]:
-    """The lines ``ringchain simulate`` prints about one run: peaks, arrivals, time of flight, speed."""
-    from ringchain.theory import solitary_wave_speed
-
-    chain = sim.chain
-    near, far = point.sensors
-    K, n = (chain.K, chain.n) if chain.model == "power-law" else point.ring.power_law()
-    lines = [f"{chain.n_rings} rings, {chain.model} model, R/r = {point.R_over_r:g}, impact at {point.speed:.4g} "
-             f"m/s, {t_end * 1e3:.4g} ms"]  # fmt: skip
-    for k in point.sensors:
-        lines.append(f"  ring {k}: peak {sim.peak_force(k):.4g} N at {sim.arrival_time(k) * 1e3:.4g} ms")
-    V_s = float(solitary_wave_speed(sim.peak_force(near), K, n, chain.a, chain.m))
-    lines.append(f"  time of flight {sim.time_of_flight(near, far) * 1e3:.4g} ms, speed "
-                 f"{sim.wave_speed(near, far):.4g} m/s (Eq. (8) at ring {near}'s peak: {V_s:.4g} m/s)")  # fmt: skip
-    return lines
-
-
-def _plot_traces(path, sim, sensors, speed) -> None:
-    fig = _figure(figsize=(6, 3.6))
-    ax = fig.add_subplot()
-    for k in sensors:
-        ax.plot(sim.t * 1e3, sim.sensor(k), label=f"ring {k}")
-    ax.set(xlabel="time after impact (ms)", ylabel="sensor force (N)",
-           title=f"{sim.chain.model}, {sim.chain.n_rings} rings, impact {speed:.3g} m/s")  # fmt: skip
-    ax.legend()
-    fig.savefig(path, dpi=120)
-
-
 # -- ringchain sweep -------------------------------------------------------------------------------
-def _sweep_grid(args) -> dict:
-    """The grid of ``ringchain sweep``, every value checked against the others before any work."""
-    aspects, angles, rings = opt.flat(args.R_over_r), opt.flat(args.angle), opt.flat(args.rings)
-    impacts = {"drop_height": opt.flat(args.drop_height)} if args.drop_height is not None else (
-        {"impact_velocity": opt.flat(args.impact_velocity)} if args.impact_velocity is not None else {})  # fmt: skip
-    for aspect in aspects:
-        opt.check_geometry(aspect, angles, chain=bool(impacts), given="argument --R-over-r")
-    if impacts:
-        opt.check_sensors(args.sensors, rings)
-        opt.check_impact(args.material, drop_heights=impacts.get("drop_height"),
-                         impact_velocities=impacts.get("impact_velocity"))  # fmt: skip
-    # Axis order fixes the row order: the impact varies fastest, so runs of one chain are adjacent.
-    grid = {
-        "model": args.model or ["dual-spring"],
-        "n_rings": rings,
-        "R_over_r": aspects,
-        "angle": [math.radians(a) for a in angles],
-        "m_eff_ratio": opt.flat(args.m_eff_ratio),
-        "r": [args.r],
-        "material": [args.material],
-        "sensors": [tuple(args.sensors)],
-        **impacts,
-    }
-    size = math.prod(len(values) for values in grid.values())
-    if size > opt.MAX_GRID_POINTS:
-        shape = " x ".join(str(len(values)) for values in grid.values() if len(values) > 1)
-        raise ValueError(f"the grid has {size} points ({shape}); the command line runs at most {opt.MAX_GRID_POINTS} "
-                         "(split it, or call ringchain.numerics.sweep)")  # fmt: skip
-    # The rings at the corners of the grid, where the theory's numbers are most extreme.
-    for aspect in {min(aspects), max(aspects)}:
-        for angle in {min(angles), max(angles)}:
-            opt.ring_of(aspect * args.r, args.r, args.material, angle,
-                        f"the ring of --R-over-r {aspect:g}, --r {args.r:g} m, --angle {angle:g} deg")  # fmt: skip
-    return grid
-
-
-def _write_rows(rows, out) -> int:
-    """The rows of a sweep as CSV, to standard output ("-") or to the file ``out``."""
-    from .sweep import write_csv
-
-    if out == "-":
-        write_csv(rows, sys.stdout)
-    else:
-        write_csv(rows, out)
-        print(f"{len(rows)} rows written to {out}")
-    return 0
-
-
-def _sweep_chain_file(args) -> int:
-    """``ringchain sweep --chain FILE [--vary FIELD VALUES]``: one chain per value, the impacts as a batch."""
-    from .chain_file import sweep_chain_file
-
-    defaults = _GEOMETRY_DEFAULTS | {"R_over_r": [[9.0]], "angle": [[90.0]], "rings": [[20]], "m_eff_ratio": [[1.0]]}
-    opt.check_chain_file_alone(args, {k: v for k, v in defaults.items() if k != "m_eff_ratio"})
-    if args.dask or args.workers is not None:
-        flag = "--dask" if args.dask else "--workers"
-        raise ValueError(f"argument {flag}: a sweep of a chain file runs in this process (one batch per chain)")
-    if args.drop_height is None and args.impact_velocity is None:
-        raise ValueError("a sweep of a chain file needs impacts: give --drop-height or --impact-velocity")
-    field, values = opt.vary_values(args.vary) if args.vary else (None, [None])
-    ratios, models = opt.flat(args.m_eff_ratio), args.model or ["dual-spring"]
-    if len(ratios) > 1 or len(models) > 1:
-        raise ValueError("with --chain, give one --model and one --m-eff-ratio (vary the chain with --vary)")
-    heights = opt.flat(args.drop_height) if args.drop_height is not None else None
-    velocities = opt.flat(args.impact_velocity) if args.impact_velocity is not None else None
-    for material in {segment.material for segment in args.chain.segments}:
-        opt.check_impact(material, drop_heights=heights, impact_velocities=velocities)
-    rows = sweep_chain_file(args.chain, field, values, model=models[0], m_eff_ratio=ratios[0],
-                            drop_heights=heights, impact_velocities=velocities, sensors=tuple(args.sensors),
-                            t_end=args.t_end, n_samples=args.samples)  # fmt: skip
-    return _write_rows(rows, args.out)
-
-
 def _sweep(args) -> int:
     from .executors import dask_client
-    from .sweep import expand, sweep
+    from .sweep import sweep, write_csv
 
-    if args.chain is not None:
-        return _sweep_chain_file(args)
-    if args.vary:
-        raise ValueError("argument --vary: varies a field of a chain file; give --chain FILE")
-    points = expand(_sweep_grid(args))
+    points = opt.sweep_points(args)
     options = dict(batch_size=args.batch_size, max_workers=args.workers, progress=sys.stderr.isatty(),
                    t_end=args.t_end)  # fmt: skip
     if args.samples is not None:
@@ -368,7 +177,12 @@ def _sweep(args) -> int:
     else:
         with opt.naming_t_end(args):
             rows = sweep(points, **options)
-    return _write_rows(rows, args.out)
+    if args.out == "-":
+        write_csv(rows, sys.stdout)
+    else:
+        write_csv(rows, args.out)
+        print(f"{len(rows)} rows written to {args.out}")
+    return 0
 
 
 # -- ringchain cache -----------------------------------------------------------------------------------
@@ -414,13 +228,6 @@ def _cache_clear(args) -> int:
     return 0
 
 
-# -- ringchain fit (numerics/fit_cli.py) -------------------------------------------------------------------
-def _fit(args) -> int:
-    from .fit_cli import run
-
-    return run(args)
-
-
 # -- the parser ----------------------------------------------------------------------------------------
 class _Parser(argparse.ArgumentParser):
     """argparse with one-line errors: ``prog: error: message (see prog --help)``, exit code 2."""
@@ -430,7 +237,7 @@ class _Parser(argparse.ArgumentParser):
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from .solve import ADAPTIVE_METHODS
+    from .integrate import METHODS
 
     parser = _Parser(prog="ringchain", description=__doc__.split("\n\n")[0], allow_abbrev=False)
     sub = parser.add_subparsers(dest="command", required=True, metavar="{paper,ring,simulate,sweep,cache,fit}")
@@ -458,7 +265,7 @@ def build_parser() -> argparse.ArgumentParser:
     opt.geometry_options(p)
     opt.impact_options(p, required=True)
     opt.chain_options(p)
-    p.add_argument("--method", choices=(*ADAPTIVE_METHODS, "verlet"), default=None,
+    p.add_argument("--method", choices=METHODS, default=None,
                    help="integrator of ringchain.numerics.simulate (default its DEFAULT_METHOD)")  # fmt: skip
     p.add_argument("--out", type=opt.output_file, required=True, metavar="CSV", help="CSV of the sensor traces")
     p.add_argument("--plot", type=opt.plot_file, metavar="FILE",
@@ -492,8 +299,7 @@ def build_parser() -> argparse.ArgumentParser:
                        allow_abbrev=False).set_defaults(func=_cache_clear)  # fmt: skip
     from .fit_cli import add_parser as add_fit_parser
 
-    add_fit_parser(sub, geometry=opt.geometry_options)
-    sub.choices["fit"].set_defaults(func=_fit)
+    add_fit_parser(sub, geometry=opt.geometry_options)  # sets its own func (fit_cli.run)
     return parser
 
 

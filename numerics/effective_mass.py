@@ -33,8 +33,9 @@ from ringchain.theory import _validate as v
 
 from . import signals
 from .chain import Chain
+from .integrate import simulate_batch
+from .results import Simulation
 from .ring_beam import DEFAULT_ELEMENTS, DEFAULT_MODES, RingChain, RingSimulation, simulate_rings
-from .solve import Simulation, simulate_batch
 
 __all__ = [
     "DEFAULT_CUTOFF",

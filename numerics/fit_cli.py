@@ -29,7 +29,7 @@ DEFAULT_FREE = "m,gamma,t0"
 def _free_list(text: str) -> tuple:
     import argparse
 
-    from .fit import CHAIN_PARAMETERS
+    from .fit_dynamic import CHAIN_PARAMETERS
 
     names = tuple(name.strip() for name in text.split(",") if name.strip())
     allowed = (*CHAIN_PARAMETERS, "t0", "v0", "h0")
@@ -94,6 +94,7 @@ def add_parser(sub, *, geometry) -> None:
                         "h0)")  # fmt: skip
     p.add_argument("--no-offsets", action="store_true", help="do not fit a DC offset per channel")
     common(p)
+    fit.set_defaults(func=run)
 
 
 def run(args) -> int:
@@ -121,7 +122,8 @@ def _print(args, results) -> None:
 def _static(args) -> int:
     import numpy as np
 
-    from .fit import fit_static, read_static
+    from .fit import fit_static
+    from .traces import read_static
 
     delta, force = read_static(args.file)
     models = ("power-law", "series") if args.model == "both" else (args.model,)
@@ -133,9 +135,9 @@ def _static(args) -> int:
         other = max(aic, key=aic.get)
         print(f"\nthe data support the {best} law: AIC lower by {aic[other] - aic[best]:.3g} than the {other} law's")
     if args.plot:
-        from .cli import _figure
+        from .plots import new_figure
 
-        fig = _figure(figsize=(6, 5))
+        fig = new_figure(figsize=(6, 5))
         ax, ax_r = fig.subplots(2, 1, sharex=True, gridspec_kw={"height_ratios": (3, 1)})
         order = np.argsort(delta)
         ax.plot(delta * 1e6, force, ".", color="0.5", label="data")
@@ -168,7 +170,8 @@ def _power_law(args, ring):
 
 
 def _speed(args) -> int:
-    from .fit import fit_speed_amplitude, read_speed_amplitude
+    from .fit import fit_speed_amplitude
+    from .traces import read_speed_amplitude
 
     F_m, V_s = read_speed_amplitude(args.file)
     ring = _ring(args)
@@ -181,9 +184,9 @@ def _speed(args) -> int:
     if args.plot:
         import numpy as np
 
-        from .cli import _figure
+        from .plots import new_figure
 
-        fig = _figure(figsize=(6, 4))
+        fig = new_figure(figsize=(6, 4))
         ax = fig.add_subplot()
         ax.plot(F_m, V_s, "o", label="data")
         order = np.argsort(F_m)
@@ -198,7 +201,8 @@ def _speed(args) -> int:
 
 def _traces(args) -> int:
     from .chain import Chain
-    from .fit import fit_traces, read_traces
+    from .fit_dynamic import fit_traces
+    from .traces import read_traces
 
     impacts = args.drop_height if args.drop_height is not None else args.impact_velocity
     if len(impacts) != len(args.files):
@@ -240,10 +244,10 @@ def _traces(args) -> int:
 
 
 def _plot_traces(result, path, labels) -> None:
-    from .cli import _figure
+    from .plots import new_figure
 
     records = result.records
-    fig = _figure(figsize=(7, 2.2 + 2.6 * len(records)))
+    fig = new_figure(figsize=(7, 2.2 + 2.6 * len(records)))
     fig.subplots_adjust(hspace=0.35, left=0.12, top=0.95, bottom=0.07)
     axes = fig.subplots(2 * len(records), 1, gridspec_kw={"height_ratios": (3, 1) * len(records)})
     for i, (record, label) in enumerate(zip(records, labels, strict=True)):

@@ -11,13 +11,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from ringchain.theory import STANDARD_GRAVITY, impedance, junction_coefficients, sound_speed
 from ringchain.theory import _validate as v
-from ringchain.theory import impedance, junction_coefficients, sound_speed
 from scipy.special import erf
 
-from .chain import MODELS, Chain, _choice
-from .models import STANDARD_GRAVITY
-from .solve import initial_state, simulate
+from .chain import MODELS, Chain, initial_state
+from .integrate import simulate
 
 __all__ = ["JunctionReading", "junction_pulse"]
 
@@ -87,7 +86,7 @@ def junction_pulse(model, K, m, *, n=1.5, K_b=3.3e6, a=0.04, F0=5.0, amplitude=0
     last ring of the first chain and the first of the second is the junction and has the first
     chain's stiffness.
     """
-    _choice("model", model, MODELS)
+    v.choice("model", model, MODELS)
     (K1, K2), (m1, m2) = (tuple(float(x) for x in v.positive(name, pair)) for name, pair in (("K", K), ("m", m)))
     N1, N2 = (int(x) for x in rings)
     if N1 < 36 or N2 < 16:

@@ -19,7 +19,7 @@ one source of stiffness for both models (``stiffness``):
 - ``"table"`` (default): the power-law chain takes Table I's K and n; the dual-spring
   chain takes the contact and bending stiffnesses whose series law (Eq. 3), reduced to a
   power law over the same force window as the theory (Eq. 4, 1-100 N), *is* Table I's K
-  and n (:func:`series_stiffness_for_power_law`: two springs, two measured numbers, an
+  and n (:func:`ringchain.theory.series_stiffness_for_power_law`: two springs, two measured numbers, an
   exact match).  Keeping the theory's K_b and choosing K_c alone cannot match both: at
   R/r = 9 bending carries most of the compliance, and softening the contact enough to
   reach Table I's K raises n well above 1.11;
@@ -36,16 +36,18 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
+from ringchain.theory import Ring, n_per_mm_to_si, paper_data, series_stiffness_for_power_law
 from ringchain.theory import _validate as v
-from ringchain.theory import paper_data
 
-from .chain import MODELS, STIFFNESS_SOURCES, Chain, _choice
-from .solve import Simulation, _sensor_pair, simulate
+from .chain import MODELS, Chain, sensor_pair
+from .experiment import run_experiment
+from .plots import new_figure
+from .results import Simulation
 
 __all__ = [
     "PaperExperiment",
+    "paper_chain",
     "paper_experiment",
-    "series_stiffness_for_power_law",
     "stiffness_note",
     "Table",
     "static_table",
@@ -55,7 +57,6 @@ __all__ = [
     "experiment_runs",
     "table_parameters",
     "write_figures",
-    "new_figure",
     "paper_job",
     "STIFFNESS_SOURCES",
     "PAPER_FORCES",
@@ -77,73 +78,69 @@ PAPER_DROP_HEIGHT = 0.05
 PAPER_FIGURES = "ringchain-paper-figures"
 
 
-# -- stiffness ------------------------------------------------------------------------------------
-def series_stiffness_for_power_law(K, n, F_min=None, F_max=None) -> tuple[float, float]:
-    """Contact and bending stiffness whose series law reduces to the power law K delta^n (Eqs. 3-4).
+#: Sources of the stiffness of :func:`paper_chain`: the paper's measured power law (Table I) or
+#: the ring's theory (Eqs. 1-4).
+STIFFNESS_SOURCES = ("table", "theory")
 
-    The series law delta(F) = (F/K_c)^(2/3) + F/K_b (Eq. 3) can be written
-    (F/K_b) (1 + (F*/F)^(1/3)) with the crossover force F* = K_b^3/K_c^2, so the exponent of
-    its least-squares power law over a force window (Eq. 4,
-    :func:`ringchain.theory.fit_power_law`) depends on F* alone, rising from 1 (F* -> 0,
-    bending only) to 3/2 (F* -> infinity, Hertz only), and K_b then scales K as K_b^n.
-    One root finding gives F*, a power gives K_b: the fit of the result is (K, n) to the
-    root finder's tolerance.
+
+# -- the paper's chain ------------------------------------------------------------------------------
+def paper_chain(model="power-law", aspect_ratio=9.0, n_rings=paper_data.CHAIN_RINGS, *, stiffness=None,
+                striker_mass=None, **dashpots) -> Chain:  # fmt: skip
+    """The paper's experimental chain: Table I parameters for ``aspect_ratio``.
+
+    Both models use the fitted m_eff/m0 as inertial mass and m0 for gravity; the rings
+    are the paper's, r = 2.5 mm, stainless steel.  ``dashpots`` are passed on (default
+    undamped: the paper does not report its fitted gamma values).
 
     Parameters
     ----------
-    K : float
-        Power-law stiffness, N/m^n (e.g. Table I's, through
-        :func:`ringchain.theory.n_per_mm_to_si`).
-    n : float
-        Exponent, strictly between 1 and 3/2.
-    F_min, F_max : float, optional
-        Force window, N; default the theory's (:data:`ringchain.theory.DEFAULT_FORCE_WINDOW`).
-
-    Returns
-    -------
-    K_c : float
-        Contact stiffness, N/m^1.5.
-    K_b : float
-        Bending stiffness, N/m.
+    model : {"power-law", "dual-spring"}
+    aspect_ratio : float
+        A row of Table I (9, 6 or 5.5).
+    n_rings : int
+    stiffness : {"table", "theory"}, optional
+        "table": the power-law chain takes the measured K (N/mm^n, converted to SI)
+        and n; the dual-spring chain the K_c and K_b whose series law reduces to that
+        power law over 1-100 N (:func:`ringchain.theory.series_stiffness_for_power_law`).
+        "theory": the ring's K_c and K_b (Eqs. 1-2), and for the power-law chain the power
+        law fitted to them (Eq. 4).  Default: as the paper did (Sec. III.B), "table" for the
+        power-law chain and "theory" for the dual-spring chain.
+    striker_mass : float or {"m_eff", "m0"}, optional
+        Inertial mass of the struck ring 0 (:class:`~ringchain.numerics.Chain`): default the
+        lattice's m_eff, the paper's convention.
 
     Examples
     --------
-    >>> from ringchain.theory import fit_power_law
-    >>> K_c, K_b = series_stiffness_for_power_law(4.9e6, 1.11)
-    >>> K, n = fit_power_law(K_c, K_b)
-    >>> round(float(K) / 4.9e6, 9), round(float(n), 9)
-    (1.0, 1.11)
+    >>> chain = paper_chain("power-law")
+    >>> chain.n_rings, chain.n, round(chain.m / chain.m_gravity, 2)
+    (20, 1.11, 0.37)
     """
-    from ringchain.theory import DEFAULT_FORCE_WINDOW, fit_power_law
-    from scipy.optimize import brentq
-
-    K = float(v.positive("K", K, "N/m^n"))
-    n = float(v.in_range("n", n, 1.0, 1.5, closed_high=False))
-    F_min = DEFAULT_FORCE_WINDOW[0] if F_min is None else float(v.positive("F_min", F_min, "N"))
-    F_max = DEFAULT_FORCE_WINDOW[1] if F_max is None else float(v.positive("F_max", F_max, "N"))
-    if not F_max > F_min:
-        raise ValueError(f"the force window needs F_min < F_max, got [{F_min:g}, {F_max:g}] N")
-
-    def fitted(log_crossover):  # the fit with K_b = 1 N/m, K_c = F*^(-1/2)
-        return fit_power_law(np.exp(-0.5 * log_crossover), 1.0, F_min, F_max)
-
-    # F* from 1e-12 to 1e12 times the window's geometric mean: n from ~1 to ~1.5.
-    centre = 0.5 * (math.log(F_min) + math.log(F_max))
-    low, high = centre - 12 * math.log(10), centre + 12 * math.log(10)
-    if not float(fitted(low)[1]) < n < float(fitted(high)[1]):
-        raise ValueError(f"no Hertz contact in series with a linear spring fits n = {n:g} over "
-                         f"[{F_min:g}, {F_max:g}] N")  # fmt: skip
-    log_crossover = brentq(lambda x: float(fitted(x)[1]) - n, low, high, xtol=1e-13, rtol=1e-15)
-    K_unit = float(fitted(log_crossover)[0])
-    K_b = (K / K_unit) ** (1.0 / n)
-    K_c = math.sqrt(K_b**3 / math.exp(log_crossover))
-    return K_c, K_b
+    if aspect_ratio not in paper_data.TABLE_I:
+        raise ValueError(f"Table I has aspect ratios {sorted(paper_data.TABLE_I)}, got {aspect_ratio!r}")
+    v.choice("model", model, MODELS)
+    if stiffness is None:
+        stiffness = "table" if model == "power-law" else "theory"
+    v.choice("stiffness", stiffness, STIFFNESS_SOURCES)
+    K_mm, n, ratio = paper_data.TABLE_I[aspect_ratio]
+    ring = Ring.from_aspect_ratio(aspect_ratio, r=paper_data.TUBE_RADIUS)
+    if stiffness == "theory":
+        return Chain.from_ring(ring, n_rings, model, m_eff_ratio=ratio, striker_mass=striker_mass, **dashpots)
+    K_si = float(n_per_mm_to_si(K_mm, n))
+    if model == "power-law":
+        return Chain.from_ring(ring, n_rings, model, m_eff_ratio=ratio, K=K_si, n=n, striker_mass=striker_mass,
+                               **dashpots)  # fmt: skip
+    if "gamma" in dashpots:
+        raise ValueError("K, n and gamma belong to the power-law model; use gamma_c and gamma_b")
+    K_c, K_b = series_stiffness_for_power_law(K_si, n)
+    m0 = ring.mass
+    return Chain.dual_spring(n_rings, K_c, K_b, ratio * m0, ring.spacing, m_gravity=m0, striker_mass=striker_mass,
+                             **dashpots)  # fmt: skip
 
 
 def stiffness_note(model: str, stiffness: str, aspect_ratio: float = 9.0) -> str:
-    """Where the stiffness of :meth:`Chain.from_paper` ``(model, stiffness=...)`` comes from, in words."""
-    _choice("model", model, MODELS)
-    _choice("stiffness", stiffness, STIFFNESS_SOURCES)
+    """Where the stiffness of :func:`paper_chain` ``(model, stiffness=...)`` comes from, in words."""
+    v.choice("model", model, MODELS)
+    v.choice("stiffness", stiffness, STIFFNESS_SOURCES)
     K_mm, n, _ = paper_data.TABLE_I[aspect_ratio]
     if stiffness == "theory":
         if model == "power-law":
@@ -201,7 +198,7 @@ def paper_experiment(
 ) -> PaperExperiment:
     """Simulate the paper's drop experiment (Sec. III) and read its two sensors.
 
-    The chain is :meth:`Chain.from_paper` for R/r = 9 (Table I: m_eff/m0 = 0.37), 20
+    The chain is :func:`paper_chain` for R/r = 9 (Table I: m_eff/m0 = 0.37), 20
     rings hanging under gravity from a fixed support, sensors in rings 6 and 12.
 
     Parameters
@@ -219,7 +216,7 @@ def paper_experiment(
         Two rings, near then far from the impact.
     **options
         Passed to :func:`~ringchain.numerics.simulate` (e.g. ``method``, ``rtol``);
-        ``gamma``/``gamma_c``/``gamma_b`` are passed to :meth:`Chain.from_paper`.
+        ``gamma``/``gamma_c``/``gamma_b`` and ``striker_mass`` are passed to :func:`paper_chain`.
 
     Returns
     -------
@@ -239,18 +236,17 @@ def paper_experiment(
     h = v.positive("drop_height", drop_height, "m")
     if h.ndim:
         raise ValueError(f"drop_height must be one height (m), got an array of shape {h.shape}")
-    _choice("model", model, MODELS)
-    _choice("stiffness", stiffness, STIFFNESS_SOURCES)
-    near, far = _sensor_pair(sensors, paper_data.CHAIN_RINGS)
-    dashpots = {k: options.pop(k) for k in ("gamma", "gamma_c", "gamma_b") if k in options}
-    chain = Chain.from_paper(model, stiffness=stiffness, **dashpots)
-    sim = simulate(chain, t_end, drop_height=float(h), gravity=True, **options)
+    v.choice("model", model, MODELS)
+    v.choice("stiffness", stiffness, STIFFNESS_SOURCES)
+    dashpots = {k: options.pop(k) for k in ("gamma", "gamma_c", "gamma_b", "striker_mass") if k in options}
+    chain = paper_chain(model, stiffness=stiffness, **dashpots)
+    run = run_experiment(chain, drop_height=float(h), sensors=sensor_pair(sensors, paper_data.CHAIN_RINGS),
+                         t_end=t_end, rings=None, **options)  # fmt: skip
     return PaperExperiment(
         model=model, stiffness=stiffness, stiffness_note=stiffness_note(model, stiffness),
-        drop_height=float(h), impact_velocity=float(sim.impact_velocity), sensors=(near, far),
-        peak_forces=(sim.peak_force(near), sim.peak_force(far)),
-        arrival_times=(sim.arrival_time(near), sim.arrival_time(far)), time_of_flight=sim.time_of_flight(near, far),
-        wave_speed=sim.wave_speed(near, far), simulation=sim,
+        drop_height=float(h), impact_velocity=run.impact_velocity, sensors=run.sensors, peak_forces=run.peak_forces,
+        arrival_times=run.arrival_times, time_of_flight=run.time_of_flight, wave_speed=run.wave_speed,
+        simulation=run.simulation,
     )  # fmt: skip
 
 
@@ -432,19 +428,6 @@ def experiment_table(runs) -> Table:
 
 
 # -- figures ----------------------------------------------------------------------------------------------
-def new_figure(**kwargs):
-    """A matplotlib Figure drawn by the Agg canvas (no pyplot, no display needed).
-
-    Fixed margins rather than a layout engine: one draw per figure, which keeps
-    ``ringchain paper`` quick.
-    """
-    from matplotlib.figure import Figure
-
-    fig = Figure(layout=None, **kwargs)  # explicit: a user's rcParams may turn a layout engine on
-    fig.subplots_adjust(left=0.15, right=0.97, bottom=0.14, top=0.9, wspace=0.08)
-    return fig
-
-
 def write_figures(out, runs) -> list[Path]:
     """Write the paper's figures as PNG files into the folder ``out`` (created if needed); returns their paths.
 
@@ -565,7 +548,7 @@ def paper_job(drop_height=PAPER_DROP_HEIGHT, out=PAPER_FIGURES, stiffness="table
     figures : list of Path
     """
     h = v.positive("drop_height", drop_height, "m")
-    _choice("stiffness", stiffness, STIFFNESS_SOURCES)
+    v.choice("stiffness", stiffness, STIFFNESS_SOURCES)
     Path(out).mkdir(parents=True, exist_ok=True)  # a folder that cannot be made fails before the work
     tables = [static_table(), angle_table(), speed_table()]
     runs = experiment_runs(float(h), stiffness)

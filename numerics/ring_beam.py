@@ -44,25 +44,15 @@ from dataclasses import dataclass, field
 from typing import NamedTuple
 
 import numpy as np
-from ringchain.theory import Material, Ring, get_material
+from ringchain.theory import STANDARD_GRAVITY, Material, Ring, get_material
 from ringchain.theory import _validate as v
-from ringchain.theory.curved_beam import _plane as _kind
 from ringchain.theory.curved_beam import element_matrices, element_shape_functions
+from ringchain.theory.curved_beam import plane_kind as _kind
 from scipy.linalg import eigh
 
-from .chain import _count
-from .models import STANDARD_GRAVITY
-from .solve import (
-    DEFAULT_RTOL,
-    VERLET_STEPS_PER_PERIOD,
-    EnergyBudget,
-    IntegrationError,
-    Simulation,
-    _check_t_eval,
-    _impact_speeds,
-    _odeint,
-    _verlet,
-)
+from .chain import ring_index
+from .integrate import impact_speeds, simulate
+from .results import BatchSimulation, EnergyBudget, Simulation
 
 __all__ = [
     "RingModel",
@@ -85,7 +75,8 @@ DEFAULT_ELEMENTS = 64
 #: benchmarks/bench_ring_chain.py (sensor traces within a few per mille of the full model).
 DEFAULT_MODES = 12
 
-#: Integrators of :func:`simulate_rings`, the default first (see its notes).
+#: Integrators of :func:`simulate_rings`, the default first (see its notes; any method of
+#: :func:`~ringchain.numerics.simulate` runs, these two are the ones the tests compare).
 RING_METHODS = ("verlet", "odeint")
 DEFAULT_RING_METHOD = "verlet"
 
@@ -158,7 +149,7 @@ class RingModel:
         if not isinstance(material, Material):
             material = get_material(material)
         self.material = material
-        self.elements = _count("elements", elements, 4)
+        self.elements = v.count("elements", elements, 4)
         if self.elements % 4:
             raise ValueError(f"elements must be a multiple of 4 (nodes at the contacts and sides), got {elements}")
 
@@ -278,13 +269,13 @@ class RingModel:
         """
         kind = _kind(kind)
         if order is None:
-            count = _count("count", count, 1)
+            count = v.count("count", count, 1)
             modes = self._elastic_modes(kind)
             if count > len(modes):
                 raise ValueError(f"the model has {len(modes)} elastic modes of this kind, asked for {count}")
             return np.array([f for f, _, _ in modes[:count]])
         orders = np.atleast_1d(np.asarray(order))
-        branch = _count("branch", branch, 0)
+        branch = v.count("branch", branch, 0)
         if branch > 2:
             raise ValueError(f"branch must be 0, 1 or 2, got {branch}")
         spectrum = self._spectrum(kind)
@@ -295,14 +286,14 @@ class RingModel:
         return np.array(out).reshape(np.shape(order))
 
     def _order(self, k, minimum) -> int:
-        k = _count("order", k, minimum)
+        k = v.count("order", k, minimum)
         if k > self.elements // 2:
             raise ValueError(f"order {k} is above the {self.elements // 2} that {self.elements} elements resolve")
         return k
 
     def mode_orders(self, kind="in-plane", count=6) -> np.ndarray:
         """Circumferential orders k of the lowest ``count`` modes of :meth:`frequencies`."""
-        count = _count("count", count, 1)
+        count = v.count("count", count, 1)
         return np.array([k for _, k, _ in self._elastic_modes(_kind(kind))[:count]])
 
     def mode_shape(self, order, kind="in-plane", branch=0, points=8) -> ModeShape:
@@ -313,10 +304,10 @@ class RingModel:
         """
         kind = _kind(kind)
         k = self._order(order, 0)
-        branch = _count("branch", branch, 0)
+        branch = v.count("branch", branch, 0)
         if branch > 2:
             raise ValueError(f"branch must be 0, 1 or 2, got {branch}")
-        points = _count("points", points, 1)
+        points = v.count("points", points, 1)
         omega2, vectors = self._spectrum(kind)[k]
         vec = vectors[:, branch]
         # Phase: the first field (w or v) real and positive, so that it goes as cos k(theta - pi/2).
@@ -403,7 +394,7 @@ class RingModel:
             fixed = eigh(K[2:, 2:], M[2:, 2:], eigvals_only=True)
             return ReducedRing(mass=M, stiffness=K, sensor=sensor, rigid=rigid,
                                mode_frequencies=np.sqrt(fixed) / (2.0 * np.pi), description="full")  # fmt: skip
-        modes = _count("modes", modes, 0)
+        modes = v.count("modes", modes, 0)
         if modes > n_s - 2:
             raise ValueError(f"the ring has {n_s - 2} internal coordinates, asked for {modes} modes")
         K_ii, K_ib, M_ii = K[2:, 2:], K[2:, :2], M[2:, 2:]
@@ -526,7 +517,7 @@ class RingChain:
 
     def __post_init__(self):
         set_ = functools.partial(object.__setattr__, self)
-        set_("n_rings", _count("n_rings", self.n_rings, 2))
+        set_("n_rings", v.count("n_rings", self.n_rings, 2))
         if not isinstance(self.ring, ReducedRing):
             raise TypeError(f"ring must be a ReducedRing, got {type(self.ring).__name__}")
         set_("K_c", float(v.positive("K_c", self.K_c, "N/m^n")))
@@ -644,22 +635,60 @@ class RingChain:
     def initial_state(self, *, impact_velocity=None, drop_height=None, gravity=True, g=STANDARD_GRAVITY):
         """Coordinates and velocities at t = 0, shape (n_rings, n) each (see :func:`simulate_rings`)."""
         g = float(v.positive("g", g, "m/s^2"))
-        speeds, dropped = _impact_speeds(impact_velocity, drop_height, g)
+        speeds, dropped = impact_speeds(impact_velocity, drop_height, g)
         if speeds.size != 1:
             raise ValueError("simulate_rings takes one impact")
+        x, u = self.impact_state(speeds, dropped, v.flag("gravity", gravity), g)
+        return x.reshape(self.n_rings, -1), u.reshape(self.n_rings, -1)
+
+    def ring_index(self, ring) -> int:
+        """``ring`` as a ring index of this chain (ValueError naming it otherwise)."""
+        return ring_index(ring, self.n_rings)
+
+    # -- the model contract (ringchain.numerics.integrate) -------------------------------------------
+    def dynamics(self) -> RingChain:
+        """What the engine integrates: the chain itself (it implements the dynamics contract)."""
+        return self
+
+    def impact_state(self, speeds, dropped, gravity, g):
+        """Flat coordinates and velocities of the runs at t = 0, shape (B, n_dof); ``speeds`` in m/s."""
+        if gravity and self.support != "fixed":
+            raise ValueError("gravity needs the chain to hang from a fixed support (support='fixed')")
         if gravity:
             x = self.static_state(g, first_ring_hanging=not dropped)
         else:
             x = np.zeros((self.n_rings, self.ring.n_dof))
+        x = np.broadcast_to(x.ravel(), (speeds.size, self.n_dof)).copy()
         u = np.zeros_like(x)
-        u[0] = -float(speeds[0]) * self.ring.rigid
+        u[:, : self.ring.n_dof] = -speeds[:, None] * self.ring.rigid
         return x, u
+
+    def recorded(self, rings):
+        """Every ring is recorded (the ring-resolved chain is short)."""
+        if rings is not None:
+            raise ValueError("the ring-resolved chain records every ring (rings=None)")
+        return None, None
+
+    def result(self, **record) -> RingBatch:
+        return RingBatch(chain=self, network=None, **record)
+
+    # -- the dynamics contract (ringchain.numerics.network) -------------------------------------------
+    damped = False
+
+    @property
+    def n_coords(self) -> int:
+        return self.n_dof
+
+    @property
+    def bandwidth(self) -> tuple[int, int]:
+        """Bands of the Jacobian of :meth:`first_order_rhs` (state ring by ring: x, then u, of each ring)."""
+        n = self.ring.n_dof
+        return 4 * n - 2, n
 
     def stepper(self, batch_shape, g):
         """A function ``(x, u, out)`` writing the accelerations of flat coordinates x into ``out``.
 
-        The interface :func:`ringchain.numerics.solve` integrators call (``u`` is not read:
-        the chain is undamped).
+        ``u`` is not read: the chain is undamped.  One run at a time (``batch_shape`` () or (1,)).
         """
         if tuple(batch_shape) not in ((), (1,)):
             raise ValueError("the ring-resolved chain integrates one run at a time")
@@ -689,8 +718,10 @@ class RingChain:
 
         return accelerations_into
 
-    def first_order_rhs(self, g):
-        """f(t, y) for y = [x_0, u_0, x_1, u_1, ...] (ring by ring), and its Jacobian bandwidth."""
+    def first_order_rhs(self, n_runs, g):
+        """f(t, y) for y = [x_0, u_0, x_1, u_1, ...] (ring by ring) of one run."""
+        if n_runs != 1:
+            raise ValueError("the ring-resolved chain integrates one run at a time")
         N, n = self.n_rings, self.ring.n_dof
         accelerations_into = self.stepper((), g)
         x = np.empty(N * n)
@@ -705,13 +736,65 @@ class RingChain:
             dy[:, 1] = a.reshape(N, n)
             return dy.ravel()
 
-        return rhs, (4 * n - 2, n)
+        return rhs
+
+    def pack(self, x, u, dissipated=None) -> np.ndarray:
+        N, n = self.n_rings, self.ring.n_dof
+        return np.stack([x.reshape(-1, N, n), u.reshape(-1, N, n)], axis=2).ravel()
+
+    def unpack(self, y, n_runs):
+        N, n = self.n_rings, self.ring.n_dof
+        states = y.reshape(n_runs, N, 2, n, -1)
+        return states[:, :, 0].reshape(n_runs, N * n, -1), states[:, :, 1].reshape(n_runs, N * n, -1), None
+
+    def state_scales(self, X, V, E) -> np.ndarray:
+        N, n = self.n_rings, self.ring.n_dof
+        return np.broadcast_to(np.stack([X, V], axis=-1)[:, None, :, None], (X.size, N, 2, n)).ravel()
+
+    def energy(self, x, u, x_start, g, dissipated) -> EnergyBudget:
+        """Kinetic, contact, ring strain ("bending") and gravity energy, J, of states (..., n_dof)."""
+        ring = self.ring
+        X = x.reshape(*x.shape[:-1], self.n_rings, -1)
+        U = u.reshape(X.shape)
+        X0 = np.asarray(x_start).reshape(*np.shape(x_start)[:-1], self.n_rings, -1)
+        e = np.maximum(self.contact_extension(X), 0.0)
+        centre = (ring.mass @ ring.rigid) / ring.m
+        return EnergyBudget(
+            kinetic=0.5 * np.einsum("...ia,ab,...ib->...", U, ring.mass, U),
+            contact=self.K_c * np.sum(e ** (self.n + 1.0), axis=-1) / (self.n + 1.0),
+            bending=0.5 * np.einsum("...ia,ab,...ib->...", X, ring.stiffness, X),
+            gravity=g * ring.m * np.sum((X - X0) @ centre, axis=-1),
+            dissipated=dissipated,
+        )
+
+    def scales(self, x0, u0, g):
+        """Displacement (m), velocity (m/s) and energy (J) scales of each run (as a network's).
+
+        The velocity scale is the impact speed (floored at 1e-3 sqrt(g a)); the displacement
+        scale the extension at which the energy m V^2/4 of a two-ring collision is stored in a
+        contact and a ring body in series, or the largest static extension if larger.
+        """
+        speed = np.maximum(np.max(np.abs(u0), axis=-1), max(1e-3 * np.sqrt(g * self.a), 1e-9))
+        energy = 0.25 * self.m * speed**2
+        X = ((self.n + 1.0) * energy / self.K_c) ** (1.0 / (self.n + 1.0)) + np.sqrt(2.0 * energy / self.ring.K_b)
+        static = np.abs(self.contact_extension(x0.reshape(x0.shape[0], self.n_rings, -1))).max(axis=-1, initial=0.0)
+        return np.maximum(X, static), speed, energy
+
+    def max_frequency(self, X) -> float:
+        """The fastest mode of a ring held at both contacts by twice the contact stiffness at four
+        times the force of extension X (a bound for the chain), rad/s."""
+        force = 4.0 * self.K_c * X**self.n
+        k_contact = self.n * self.K_c ** (1.0 / self.n) * force ** ((self.n - 1.0) / self.n)
+        ring = self.ring
+        K = ring.stiffness.copy()
+        K[0, 0] += 2.0 * k_contact
+        K[1, 1] += 2.0 * k_contact
+        return float(np.sqrt(eigh(K, ring.mass, eigvals_only=True)[-1]))
 
 
 def simulate_rings(chain: RingChain, t_end, *, impact_velocity=None, drop_height=None, gravity=True, t_eval=None,
-                   n_samples=2001, method=DEFAULT_RING_METHOD, rtol=DEFAULT_RTOL, atol=None, dt=None,
-                   steps_per_period=VERLET_STEPS_PER_PERIOD, g=STANDARD_GRAVITY) -> RingSimulation:  # fmt: skip
-    """Integrate the ring-resolved chain after an impact on ring 0: the sibling of :func:`~ringchain.numerics.simulate`.
+                   method=DEFAULT_RING_METHOD, **options) -> RingSimulation:  # fmt: skip
+    """Integrate the ring-resolved chain after an impact on ring 0 (:func:`~ringchain.numerics.simulate`, Verlet).
 
     Parameters
     ----------
@@ -728,18 +811,19 @@ def simulate_rings(chain: RingChain, t_end, *, impact_velocity=None, drop_height
         Hang the chain under gravity (default), or start unstretched without gravity.
     t_eval : array_like, optional
         Sample times in [0, t_end], s; default ``n_samples`` evenly spaced.
-    n_samples : int, optional
     method : {"verlet", "odeint"}, optional
         Velocity Verlet with step ``dt`` (the default, :data:`DEFAULT_RING_METHOD`), or LSODA
         through :func:`scipy.integrate.odeint` (tolerances ``rtol``, and ``atol`` relative to
         the run's displacement and velocity scales).  The default step is 1/``steps_per_period``
         of the period of the fastest mode of a ring with both contacts stiffened to twice their
         stiffness at four times the estimated peak force, an upper bound on the chain's fastest
-        mode.  The chain is undamped and its rings' fast modes make LSODA turn stiff (ten times
-        slower with 8 or more modes); symplectic Verlet keeps the energy to ~1e-5 of the impact's
-        at the default step and is second order (tests/numerics/test_ring_beam.py).
-    rtol, atol, dt, steps_per_period, g
-        As in :func:`~ringchain.numerics.simulate`.
+        mode (:meth:`RingChain.max_frequency`).  The chain is undamped and its rings' fast modes
+        make LSODA turn stiff (ten times slower with 8 or more modes); symplectic Verlet keeps
+        the energy to ~1e-5 of the impact's at the default step and is second order
+        (tests/numerics/test_ring_beam.py).
+    **options
+        As in :func:`~ringchain.numerics.simulate` (``n_samples``, ``rtol``, ``atol``, ``dt``,
+        ``steps_per_period``, ``g``...).
 
     Returns
     -------
@@ -754,77 +838,10 @@ def simulate_rings(chain: RingChain, t_end, *, impact_velocity=None, drop_height
     """
     if not isinstance(chain, RingChain):
         raise TypeError(f"chain must be a RingChain, got {type(chain).__name__}")
-    if np.ndim(impact_velocity) or np.ndim(drop_height):
-        raise ValueError("simulate_rings takes one impact")
-    t_end = float(v.positive("t_end", t_end, "s"))
-    t_eval = _check_t_eval(t_eval, t_end, n_samples)
-    g = float(v.positive("g", g, "m/s^2"))
-    if gravity and chain.support != "fixed":
-        raise ValueError("gravity needs the chain to hang from a fixed support (support='fixed')")
-    x0, u0 = chain.initial_state(impact_velocity=impact_velocity, drop_height=drop_height, gravity=gravity, g=g)
-    speed = -float(u0[0, 0])
-    g_dyn = g if gravity else 0.0
-    X, V = _scales(chain, x0, speed, g)
-    N, n = x0.shape
-    if method == "verlet":
-        if dt is None:
-            dt = _verlet_step(chain, X, float(v.positive("steps_per_period", steps_per_period)))
-        dt = float(v.positive("dt", dt, "s"))
-        xs, us, stats = _verlet(chain, x0.reshape(1, -1), u0.reshape(1, -1), t_eval, t_end, dt, g_dyn, None,
-                                _finite_watch)  # fmt: skip
-        xs, us = xs[0], us[0]
-    elif method == "odeint":
-        rtol = float(v.positive("rtol", rtol))
-        atol_rel = rtol if atol is None else float(v.positive("atol", atol))
-        rhs, bandwidth = chain.first_order_rhs(g_dyn)
-        y0 = np.stack([x0, u0], axis=1).ravel()
-        atol = atol_rel * np.broadcast_to(np.array([X, V])[None, :, None], (N, 2, n)).ravel()
-        y, nfev = _odeint(rhs, y0, 0.0, t_eval, rtol, atol, bandwidth)
-        states = y.reshape(N, 2, n, -1)
-        xs = states[:, 0].transpose(2, 0, 1).reshape(-1, N * n)
-        us = states[:, 1].transpose(2, 0, 1).reshape(-1, N * n)
-        stats = {"method": method, "rtol": rtol, "nfev": nfev}
-    else:
+    if method not in RING_METHODS:
         raise ValueError(f"method must be one of {RING_METHODS}, got {method!r}")
-    return RingSimulation(
-        chain=chain, t=t_eval, x=np.ascontiguousarray(xs), u=np.ascontiguousarray(us),
-        dissipated=np.zeros(t_eval.size), g=g_dyn, impact_velocity=speed,
-        drop_height=None if drop_height is None else float(drop_height), stats=stats,
-    )  # fmt: skip
-
-
-def _finite_watch(t, x, u, dissipated=0.0):
-    """Stop a run whose state turns non-finite (the Verlet step above its stability limit)."""
-    if not (np.all(np.isfinite(x)) and np.all(np.isfinite(u))):
-        raise IntegrationError(f"the state became non-finite by t = {t:g} s: the integration is unstable; "
-                               "take a smaller dt or more steps_per_period")  # fmt: skip
-
-
-def _scales(chain: RingChain, x0, speed, g):
-    """Displacement (m) and velocity (m/s) scales of a run (as :func:`ringchain.numerics.solve._scales`).
-
-    The velocity scale is the impact speed (floored at 1e-3 sqrt(g a)); the displacement
-    scale the extension at which the energy m V^2/4 of a two-ring collision is stored in a
-    contact and a ring body in series, or the largest static extension if larger.
-    """
-    speed = max(speed, 1e-3 * np.sqrt(g * chain.a), 1e-9)
-    energy = 0.25 * chain.m * speed**2
-    X = ((chain.n + 1.0) * energy / chain.K_c) ** (1.0 / (chain.n + 1.0)) + np.sqrt(2.0 * energy / chain.ring.K_b)
-    static = np.abs(chain.contact_extension(x0)).max(initial=0.0)
-    return max(X, static), speed
-
-
-def _verlet_step(chain: RingChain, X, steps_per_period) -> float:
-    """A fraction 1/steps_per_period of the period of the fastest mode of a ring held at both contacts
-    by twice the contact stiffness at four times the estimated peak force (a bound for the chain)."""
-    force = 4.0 * chain.K_c * X**chain.n
-    k_contact = chain.n * chain.K_c ** (1.0 / chain.n) * force ** ((chain.n - 1.0) / chain.n)
-    ring = chain.ring
-    K = ring.stiffness.copy()
-    K[0, 0] += 2.0 * k_contact
-    K[1, 1] += 2.0 * k_contact
-    omega_max = np.sqrt(eigh(K, ring.mass, eigvals_only=True)[-1])
-    return 2.0 * np.pi / omega_max / steps_per_period
+    return simulate(chain, t_end, impact_velocity=impact_velocity, drop_height=drop_height, gravity=gravity,
+                    t_eval=t_eval, method=method, **options)  # fmt: skip
 
 
 @dataclass(frozen=True, eq=False)
@@ -842,6 +859,11 @@ class RingSimulation(Simulation):
     def coordinates(self) -> np.ndarray:
         """Coordinates per ring, m, shape (T, n_rings, n)."""
         return self.x.reshape(self.t.size, self.chain.n_rings, -1)
+
+    @functools.cached_property
+    def link_force(self) -> np.ndarray:
+        """Force of every contact, then of the support contact if fixed, N (the ring-resolved chain's links)."""
+        return self.bond_force
 
     @functools.cached_property
     def bond_force(self) -> np.ndarray:
@@ -883,14 +905,18 @@ class RingSimulation(Simulation):
 
     def energy(self) -> EnergyBudget:
         """Kinetic, contact, ring strain ("bending") and gravity energy, J; gravity from t = 0."""
-        ring, chain = self.chain.ring, self.chain
-        X = self.coordinates
-        U = self.u.reshape(X.shape)
-        e = np.maximum(chain.contact_extension(X), 0.0)
-        return EnergyBudget(
-            kinetic=0.5 * np.einsum("tia,ab,tib->t", U, ring.mass, U),
-            contact=chain.K_c * np.sum(e ** (chain.n + 1.0), axis=-1) / (chain.n + 1.0),
-            bending=0.5 * np.einsum("tia,ab,tib->t", X, ring.stiffness, X),
-            gravity=self.g * ring.m * np.sum(self.ring_displacement - self.ring_displacement[:1], axis=-1),
-            dissipated=self.dissipated,
-        )
+        return self.chain.energy(self.x, self.u, self.x[:1], self.g, self.dissipated)
+
+
+@dataclass(frozen=True, eq=False)
+class RingBatch(BatchSimulation):
+    """Runs of the ring-resolved chain; ``result[0]`` is a :class:`RingSimulation`."""
+
+    def __getitem__(self, i) -> RingSimulation:
+        i = range(len(self))[i]
+        return RingSimulation(
+            t=self.t, x=np.ascontiguousarray(self.x[i]), u=np.ascontiguousarray(self.u[i]),
+            dissipated=self.dissipated[i], g=self.g, stats=self.stats, chain=self.chain,
+            impact_velocity=float(self.impact_velocity[i]),
+            drop_height=None if self.drop_height is None else float(self.drop_height[i]),
+        )  # fmt: skip

@@ -40,23 +40,26 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, fields
 
 import numpy as np
-from ringchain.theory import PAPER_TUBE_RADIUS, Ring, paper_data
+from ringchain.theory import PAPER_TUBE_RADIUS, Ring, impact_speed, paper_data
 from ringchain.theory import _validate as v
 
 from . import signals
-from .chain import MODELS, Chain, _choice, _count, _flag
+from .chain import MODELS, Chain, sensor_pair
+from .chain_file import ChainFile, vary
 from .executors import InlineExecutor, default_executor
-from .models import STANDARD_GRAVITY
-from .solve import DEFAULT_MAX_SECONDS, RunTooLargeError, _duration, _sensor_pair, estimate_run, simulate_batch
+from .experiment import default_t_end
+from .integrate import DEFAULT_MAX_SECONDS, RunTooLargeError, estimate_run, format_duration, simulate_batch
 
 __all__ = [
     "Point",
+    "FilePoint",
+    "sweep_chain_file",
+    "DYNAMIC_COLUMNS",
     "AXES",
     "expand",
     "sweep",
     "run_points",
     "write_csv",
-    "default_t_end",
     "estimate_task",
     "InlineExecutor",
     "DEFAULT_BATCH_SIZE",
@@ -136,8 +139,8 @@ class Point:
         set_("r", float(v.positive("r", self.r, "m")))
         set_("angle", float(v.as_float("angle", self.angle)))
         set_("m_eff_ratio", float(v.in_range("m_eff_ratio", self.m_eff_ratio, 0.0, 1.0)))
-        set_("model", _choice("model", str(self.model), MODELS))
-        set_("n_rings", _count("n_rings", self.n_rings, 2))
+        set_("model", v.choice("model", str(self.model), MODELS))
+        set_("n_rings", v.count("n_rings", self.n_rings, 2))
         if self.drop_height is not None and self.impact_velocity is not None:
             raise ValueError("give a drop height or an impact velocity, not both")
         for name, unit in (("drop_height", "m"), ("impact_velocity", "m/s")):
@@ -146,11 +149,11 @@ class Point:
                 raise ValueError(f"{name.replace('_', ' ')} must be a number (in {unit}), got {value!r}")
             if value is not None:
                 set_(name, float(v.positive(name.replace("_", " "), value, unit)))
-        set_("sensors", _sensor_pair(self.sensors))
+        set_("sensors", sensor_pair(self.sensors))
         ring = self.ring  # validates R > 2 r, the angle and the material, with errors that say why
         if self.dynamic:
             ring.check_chain()
-            _sensor_pair(self.sensors, self.n_rings)
+            sensor_pair(self.sensors, self.n_rings)
 
     @property
     def ring(self) -> Ring:
@@ -170,7 +173,7 @@ class Point:
     def speed(self) -> float | None:
         """Impact speed of ring 0, m/s: sqrt(2 g h) for a drop."""
         if self.drop_height is not None:
-            return math.sqrt(2.0 * STANDARD_GRAVITY * self.drop_height)
+            return float(impact_speed(self.drop_height))
         return self.impact_velocity
 
     @property
@@ -178,6 +181,87 @@ class Point:
         """What the points integrated together share: all but the impact's size."""
         kind = "drop" if self.drop_height is not None else "velocity" if self.impact_velocity is not None else None
         return (*(getattr(self, f.name) for f in fields(self) if f.name not in _IMPACT), kind)
+
+    def columns(self) -> dict:
+        """The row's columns before the run: the point and the static theory of its contact (Eqs. 1-4)."""
+        ring = self.ring
+        K, n = ring.power_law()
+        return {
+            "R_over_r": self.R_over_r,
+            "R_m": ring.R,
+            "r_m": ring.r,
+            "angle_rad": self.angle,
+            "angle_deg": round(math.degrees(self.angle), 9),  # 60, not 59.99999999999999 (radians(60) rounds)
+            "material": ring.material.name,
+            "model": self.model,
+            "n_rings": self.n_rings,
+            "m_eff_ratio": self.m_eff_ratio,
+            "drop_height_m": self.drop_height,
+            "impact_velocity_m_s": self.speed,
+            "ring_mass_kg": ring.mass,
+            "spacing_m": ring.spacing,
+            "K_c_N_m1.5": ring.K_c,
+            "K_b_N_m": ring.K_b,
+            "crossover_force_N": ring.crossover_force,
+            "K_fit_N_mn": K,
+            "n_fit": n,
+        }
+
+
+@dataclass(frozen=True)
+class FilePoint:
+    """One point of a sweep of a chain file: the chain of a :class:`~ringchain.numerics.chain_file.ChainFile`
+    (one field varied, :func:`~ringchain.numerics.chain_file.vary`) and one impact.
+
+    Parameters
+    ----------
+    description : ChainFile
+    field : str or None
+        The varied field (``"2.R.last"``...), or None for the description as it is.
+    value : float or None
+        Its value (m, degrees or a ring count).
+    model : {"dual-spring", "power-law"}
+    m_eff_ratio : float
+    drop_height, impact_velocity : float, optional
+        The impact (m, or m/s).
+    sensors : (int, int)
+    """
+
+    description: ChainFile
+    field: str | None = None
+    value: float | None = None
+    model: str = "dual-spring"
+    m_eff_ratio: float = 1.0
+    drop_height: float | None = None
+    impact_velocity: float | None = None
+    sensors: tuple = paper_data.SENSOR_RINGS
+
+    dynamic = True
+
+    @functools.cached_property
+    def varied(self) -> ChainFile:
+        return self.description if self.field is None else vary(self.description, self.field, self.value)
+
+    def chain(self) -> Chain:
+        chain = self.varied.chain(self.model, self.m_eff_ratio)
+        sensor_pair(self.sensors, chain.n_rings)
+        return chain
+
+    @property
+    def speed(self) -> float:
+        return float(impact_speed(self.drop_height)) if self.drop_height is not None else self.impact_velocity
+
+    @property
+    def chain_key(self) -> tuple:
+        kind = "drop" if self.drop_height is not None else "velocity"
+        return (self.description, self.field, self.value, self.model, self.m_eff_ratio, self.sensors, kind)
+
+    def columns(self) -> dict:
+        row = {} if self.field is None else {self.field: self.value}
+        row |= {"n_rings": self.varied.n_rings, "model": self.model, "impact_velocity_m_s": self.speed}
+        if self.drop_height is not None:
+            row["drop_height_m"] = self.drop_height
+        return row
 
 
 _IMPACT = ("drop_height", "impact_velocity")
@@ -215,7 +299,7 @@ def expand(grid) -> list[Point]:
         raise TypeError(f"a grid is a mapping of axes or an iterable of points, got {grid!r}")
     points = []
     for item in grid:
-        if isinstance(item, Point):
+        if isinstance(item, Point | FilePoint):
             points.append(item)
         elif isinstance(item, Mapping):
             _check_axes(item)
@@ -243,108 +327,35 @@ def _values(name, value) -> list:
 
 
 # -- running -------------------------------------------------------------------------------------
-def default_t_end(chain: Chain, speeds, sensors) -> float:
-    """Duration that lets the leading pulse pass the far sensor, s.
-
-    The time the long-wave solitary wave of the chain's power law (Eq. (8)) needs to
-    carry its front 1.5 times the distance to ring ``sensors[1]`` plus half a wave width
-    (:func:`ringchain.theory.solitary_wave_width`), at a force estimate below the actual
-    peak (so the estimated speed is low and the duration long): a quarter of the peak
-    force of a two-ring collision at the smallest impact speed, and at least the weight
-    of one ring (the gravity prestress keeps weak waves fast).  For the dual-spring
-    chain the power law is the one fitted to its contact and bending springs in series
-    (Eq. 4).  :func:`run_points` doubles the duration if a pulse is still passing the far
-    sensor at the end.
-
-    The half width is capped at the chain's length: as n -> 1 the long-wave width grows
-    without bound (~ a/(n - 1)), but no pulse wider than the chain passes the sensor before
-    its reflection from the support comes back, and the capped duration stays finite
-    (without the cap, 79 s of simulated time at R/r = 100, 2.5e3 s at R/r = 200).
-    """
-    from ringchain.theory import fit_power_law, solitary_wave_speed, solitary_wave_width
-
-    if not isinstance(chain, Chain):
-        raise TypeError(f"chain must be a Chain, got {type(chain).__name__}")
-    speeds = np.atleast_1d(v.positive("speeds", speeds, "m/s"))
-    if speeds.size == 0:
-        raise ValueError("speeds must hold at least one impact speed (m/s)")
-    far = _sensor_pair(sensors, chain.n_rings)[1]
-    if not chain.uniform:
-        return _varying_t_end(chain, speeds, far)
-    if chain.model == "dual-spring":
-        K, n = (float(x) for x in fit_power_law(chain.K_c, chain.K_b))
-    else:
-        K, n = chain.K, chain.n
-    speed = float(np.min(speeds))
-    # Two rings of mass m colliding at relative speed v store m v^2/4 at the peak of K delta^n.
-    delta = ((n + 1.0) * 0.25 * chain.m * speed**2 / K) ** (1.0 / (n + 1.0))
-    force = max(0.25 * K * delta**n, chain.m_gravity * STANDARD_GRAVITY)
-    V = float(solitary_wave_speed(force, K, n, chain.a, chain.m))
-    width = min(float(solitary_wave_width(n, chain.a)), chain.n_rings * chain.a)
-    return (1.5 * far * chain.a + 0.5 * width) / V
+#: Columns a point with an impact adds to its row (:func:`run_points`), in order; units in the names.
+DYNAMIC_COLUMNS = (
+    "sensor_near", "sensor_far", "peak_force_near_N", "peak_force_far_N", "arrival_near_s", "arrival_far_s",
+    "time_of_flight_s", "wave_speed_m_s", "V_s_theory_m_s", "support_peak_N", "t_end_s",
+)  # fmt: skip
 
 
-def _varying_t_end(chain: Chain, speeds, far: int) -> float:
-    """:func:`default_t_end` of a chain that changes along its length: the same estimate contact by
-    contact (each contact's power law, the heaviest ring), the pulse's time summed over the
-    contacts up to the far sensor."""
-    from ringchain.theory import fit_power_law, solitary_wave_speed, solitary_wave_width
+def _dynamics(sensors, run) -> dict:
+    """The :data:`DYNAMIC_COLUMNS` of one run: the sensors read as the paper reads them (Sec. III.A), Eq. (8) at
+    the near sensor's peak force (a uniform chain: its power law, or for the dual-spring chain the one fitted to
+    its springs, Eq. 4), the largest force on the support."""
+    from ringchain.theory import fit_power_law, solitary_wave_speed
 
-    pairs = slice(0, chain.n_rings - 1)
-    if chain.model == "dual-spring":
-        K, n = fit_power_law(chain.profile("K")[pairs], chain.profile("K_b")[: chain.n_rings - 1])
-    else:
-        K, n = chain.profile("K")[pairs], chain.profile("n")[pairs]
-    m, a, speed = float(np.max(chain.m)), chain.profile("a"), float(np.min(speeds))
-    delta = ((n + 1.0) * 0.25 * m * speed**2 / K) ** (1.0 / (n + 1.0))
-    force = np.maximum(0.25 * K * delta**n, float(np.min(chain.m_gravity)) * STANDARD_GRAVITY)
-    V = solitary_wave_speed(force, K, n, a, m)
-    width = min(float(np.max(solitary_wave_width(n, a))), float(np.sum(a)))
-    return float(1.5 * np.sum(a[:far] / V[:far]) + 0.5 * width / np.min(V))
-
-
-def _statics(point: Point) -> dict:
-    ring = point.ring
-    K, n = ring.power_law()
-    return {
-        "R_over_r": point.R_over_r,
-        "R_m": ring.R,
-        "r_m": ring.r,
-        "angle_rad": point.angle,
-        "angle_deg": round(math.degrees(point.angle), 9),  # 60, not 59.99999999999999 (radians(60) rounds)
-        "material": ring.material.name,
-        "model": point.model,
-        "n_rings": point.n_rings,
-        "m_eff_ratio": point.m_eff_ratio,
-        "drop_height_m": point.drop_height,
-        "impact_velocity_m_s": point.speed,
-        "ring_mass_kg": ring.mass,
-        "spacing_m": ring.spacing,
-        "K_c_N_m1.5": ring.K_c,
-        "K_b_N_m": ring.K_b,
-        "crossover_force_N": ring.crossover_force,
-        "K_fit_N_mn": K,
-        "n_fit": n,
-    }
-
-
-def _dynamics(point: Point, run, K: float, n: float) -> dict:
-    from ringchain.theory import solitary_wave_speed
-
-    near, far = point.sensors
+    near, far = sensors
+    chain = run.chain
     F_near = run.peak_force(near)
-    return {
-        "sensor_near": near,
-        "sensor_far": far,
-        "peak_force_near_N": F_near,
-        "peak_force_far_N": run.peak_force(far),
-        "arrival_near_s": run.arrival_time(near),
-        "arrival_far_s": run.arrival_time(far),
-        "time_of_flight_s": run.time_of_flight(near, far),
-        "wave_speed_m_s": run.wave_speed(near, far),
-        "V_s_theory_m_s": float(solitary_wave_speed(F_near, K, n, run.chain.a, run.chain.m)),
-        "t_end_s": float(run.t[-1]),
-    }
+    V_s = None
+    if chain.uniform:
+        K, n = (
+            (chain.K, chain.n)
+            if chain.model == "power-law"
+            else (float(x) for x in fit_power_law(chain.K_c, chain.K_b))
+        )
+        V_s = float(solitary_wave_speed(F_near, K, n, chain.a, chain.m))
+    support = run.support_force
+    values = (near, far, F_near, run.peak_force(far), run.arrival_time(near), run.arrival_time(far),
+              run.time_of_flight(near, far), run.wave_speed(near, far), V_s,
+              None if support is None else float(np.max(support)), float(run.t[-1]))  # fmt: skip
+    return dict(zip(DYNAMIC_COLUMNS, values, strict=True))
 
 
 def _batch(points, t_end, n_samples, method, solver):
@@ -357,25 +368,26 @@ def _batch(points, t_end, n_samples, method, solver):
         impact = {"drop_heights": [p.drop_height for p in points]}
     else:
         impact = {"impact_velocities": [p.speed for p in points]}
-    return chain, t_end, dict(impact, n_samples=n_samples, method=method, rings=first.sensors, **solver)
+    rings = (*first.sensors, chain.n_rings - 1)  # the sensors and the top ring (the support's force)
+    return chain, t_end, dict(impact, n_samples=n_samples, method=method, rings=rings, **solver)
 
 
 def run_points(points, *, t_end=None, n_samples=DEFAULT_SAMPLES, method=SWEEP_METHOD, **solver):
     """Rows of points that share a chain (one task of :func:`sweep`): one batch, one row each.
 
-    Every point must have the same :attr:`Point.chain_key`.  ``t_end`` (s) defaults to
+    Every point (:class:`Point` or :class:`FilePoint`) must have the same ``chain_key``.  ``t_end`` (s) defaults to
     :func:`default_t_end` at the smallest impact of the points, doubled (up to
     four times) while a leading pulse has not passed the far sensor by the end; a
     ``t_end`` given that is too short raises
-    :class:`~ringchain.numerics.signals.TruncatedPulseError`.  Only the two sensor rings
-    are recorded.  ``n_samples``, ``method`` and ``solver`` (e.g. ``dt``, ``rtol``,
+    :class:`~ringchain.numerics.signals.TruncatedPulseError`.  Only what the two sensors and
+    the support need is recorded.  ``n_samples``, ``method`` and ``solver`` (e.g. ``dt``, ``rtol``,
     ``max_seconds``) go to :func:`~ringchain.numerics.simulate_batch`.
     """
     points = list(points)
     keys = {p.chain_key for p in points}
     if len(keys) != 1:
         raise ValueError("run_points takes points that share one chain")
-    rows = [_statics(p) for p in points]
+    rows = [p.columns() for p in points]
     first = points[0]
     if not first.dynamic:
         return rows
@@ -396,10 +408,8 @@ def run_points(points, *, t_end=None, n_samples=DEFAULT_SAMPLES, method=SWEEP_ME
                 ) from None
         retries -= 1
         t_end *= 2.0
-    # Eq. (8) with the chain's power law, or for the dual-spring chain the one fitted to its springs.
-    K, n = (chain.K, chain.n) if chain.model == "power-law" else (rows[0]["K_fit_N_mn"], rows[0]["n_fit"])
-    for row, point, run in zip(rows, points, batch, strict=True):
-        row.update(_dynamics(point, run, K, n))
+    for row, run in zip(rows, batch, strict=True):
+        row.update(_dynamics(first.sensors, run))
     return rows
 
 
@@ -435,7 +445,7 @@ def sweep(
     Parameters
     ----------
     grid : mapping or iterable
-        Axes and values, or points (see :func:`expand`).
+        Axes and values, or points (see :func:`expand`; :class:`FilePoint` s too).
     executor : concurrent.futures.Executor, optional
         Where the tasks run: any Executor, e.g. a Dask ``Client(...).get_executor()``.
         Default: a pool of local processes, shut down at the end.
@@ -478,10 +488,10 @@ def sweep(
     from tqdm import tqdm
 
     try:
-        batch_size = _count("batch_size", batch_size, 1)
+        batch_size = v.count("batch_size", batch_size, 1)
     except ValueError:
         raise ValueError(f"batch_size must be a positive integer, got {batch_size!r}") from None
-    progress = _flag("progress", progress)
+    progress = v.flag("progress", progress)
     if t_end is not None:
         t_end = float(v.positive("t_end", t_end, "s"))
     points = expand(grid)
@@ -531,10 +541,9 @@ def _check_work(tasks, options) -> None:
     if worst is not None and worst[1].seconds > limit:
         point, estimate = worst
         raise RunTooLargeError(
-            f"the sweep's largest task (R/r = {point.R_over_r:g}, {point.model}, {point.n_rings} rings) would take "
-            f"roughly {_duration(estimate.seconds)}: {estimate.describe()}; all {len(tasks)} tasks about "
-            f"{_duration(total)}; more than max_seconds = {limit:g} s. Give a shorter t_end or a larger dt, drop the "
-            "point, or raise max_seconds"
+            f"the sweep's largest task ({_described(point)}) would take roughly {format_duration(estimate.seconds)}: "
+            f"{estimate.describe()}; all {len(tasks)} tasks about {format_duration(total)}; more than max_seconds = "
+            f"{limit:g} s. Give a shorter t_end or a larger dt, drop the point, or raise max_seconds"
         )
 
 
@@ -578,3 +587,49 @@ def _cell(value) -> str:
     if isinstance(value, np.integer):
         return str(int(value))
     return str(value)
+
+
+def sweep_chain_file(description: ChainFile, field=None, values=(None,), *, model="dual-spring", m_eff_ratio=1.0,
+                     drop_heights=None, impact_velocities=None, sensors=paper_data.SENSOR_RINGS, executor=None,
+                     **options) -> list[dict]:  # fmt: skip
+    """One row per value of ``field`` (:func:`~ringchain.numerics.chain_file.vary`) and impact, through :func:`sweep`.
+
+    Parameters
+    ----------
+    description : ChainFile
+    field : str, optional
+        The varied field (``"2.R.last"``...); None runs ``description`` as it is.
+    values : sequence
+        Its values (m, degrees or ring counts).
+    model, m_eff_ratio
+        As in :meth:`~ringchain.numerics.chain_file.ChainFile.chain`.
+    drop_heights, impact_velocities : sequence of float
+        The impacts (m, or m/s), integrated together as one batch per chain.
+    sensors : (int, int)
+        Near and far sensor rings.
+    executor : concurrent.futures.Executor, optional
+        As in :func:`sweep` (default: local processes).
+    **options
+        Passed to :func:`sweep` (``t_end``, ``n_samples``, ``method``, ``max_workers``...).
+
+    Returns
+    -------
+    list of dict
+        Columns: the varied field's value, the chain's length and model, the impact, and the
+        :data:`DYNAMIC_COLUMNS` (Eq. (8) only for a chain that does not change along its length).
+    """
+    if (drop_heights is None) == (impact_velocities is None):
+        raise ValueError("give drop_heights or impact_velocities")
+    impacts = [{"drop_height": h} for h in drop_heights] if drop_heights is not None else [
+        {"impact_velocity": u} for u in impact_velocities]  # fmt: skip
+    points = [FilePoint(description, field, value, model, m_eff_ratio, sensors=tuple(sensors), **impact)
+              for value in values for impact in impacts]  # fmt: skip
+    return sweep(points, executor, **options)
+
+
+def _described(point) -> str:
+    """A point's chain in a few words, for a message."""
+    if isinstance(point, Point):
+        return f"R/r = {point.R_over_r:g}, {point.model}, {point.n_rings} rings"
+    field = "" if point.field is None else f", {point.field} = {point.value:g}"
+    return f"{point.description.source}{field}, {point.model}"

@@ -31,6 +31,7 @@ Linear waves and what the pulse carries (beyond the paper; modules :mod:`.linear
 - :func:`impedance`, :func:`junction_coefficients` -- a long wave meeting the junction of two chains:
   reflected and transmitted force from the two impedances;
 - :func:`solitary_wave_energy`, :func:`solitary_wave_momentum` -- invariants of the compact wave;
+- :func:`impact_speed` -- sqrt(2 g h), the speed of a dropped ring when its slack is taken up;
 - :func:`impact_amplitude` -- the peak force launched by a striker at speed v0 (F_m ~ v0^(2n/(n+1))).
 
 Rings that bend (beyond the paper; module :mod:`.curved_beam`):
@@ -56,9 +57,11 @@ from .contact import (
 from .curved_beam import inextensional_frequency, ring_frequencies
 from .geometry import MIN_CHAIN_ASPECT_RATIO, PAPER_TUBE_RADIUS, Ring
 from .linear import (
+    STANDARD_GRAVITY,
     BandEdges,
     band_edges,
     dispersion,
+    impact_speed,
     impedance,
     junction_coefficients,
     linear_travel_time,
@@ -77,6 +80,7 @@ from .series import (
     n_per_mm_to_si,
     series_displacement,
     series_extension,
+    series_stiffness_for_power_law,
     si_to_n_per_mm,
 )
 from .solitary import (
@@ -127,6 +131,9 @@ __all__ = [
     "linear_travel_time",
     "impedance",
     "junction_coefficients",
+    "impact_speed",
+    "STANDARD_GRAVITY",
+    "series_stiffness_for_power_law",
     "solitary_wave_energy",
     "solitary_wave_momentum",
     "impact_amplitude",

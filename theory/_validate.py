@@ -9,6 +9,9 @@ matters (``2.9999999999999996``, never a rounded ``3``).
 
 from __future__ import annotations
 
+import math
+import numbers
+
 import numpy as np
 
 __all__ = [
@@ -18,6 +21,10 @@ __all__ = [
     "nonnegative",
     "in_range",
     "boolean",
+    "flag",
+    "integer",
+    "count",
+    "choice",
     "broadcast_shape",
     "finite_result",
     "show",
@@ -91,6 +98,37 @@ def boolean(name: str, value) -> bool:
     if isinstance(value, (bool, np.bool_)):
         return bool(value)
     raise TypeError(f"{name} must be True or False, got {value!r}")
+
+
+def flag(name: str, value) -> bool:
+    """``value`` as a bool: True or False only (a string such as "no" is refused, not read as true); ValueError."""
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    raise ValueError(f"{name} must be True or False, got {value!r}")
+
+
+def integer(name: str, value) -> int:
+    """``value`` as an int: a whole number (2 or 2.0), not a bool, a string or 2.7 (ValueError naming it)."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        raise ValueError(f"{name} must be an integer, got {value!r}")
+    if not math.isfinite(value) or int(value) != value:
+        raise ValueError(f"{name} must be an integer, got {value!r}")
+    return int(value)
+
+
+def count(name: str, value, minimum: int) -> int:
+    """An integer of at least ``minimum`` (ValueError naming it)."""
+    value = integer(name, value)
+    if value < minimum:
+        raise ValueError(f"{name} must be at least {minimum}, got {value}")
+    return value
+
+
+def choice(name: str, value, options):
+    """``value`` if it is one of ``options`` (ValueError listing them)."""
+    if not isinstance(value, str | int | float) or value not in options:
+        raise ValueError(f"{name} must be one of {tuple(options)}, got {value!r}")
+    return value
 
 
 def broadcast_shape(**arrays) -> tuple:

@@ -72,6 +72,7 @@ __all__ = [
     "element_shape_functions",
     "ring_frequencies",
     "inextensional_frequency",
+    "plane_kind",
 ]
 
 #: The two decoupled families of motion of a plane ring.
@@ -82,7 +83,8 @@ PLANES = ("in-plane", "out-of-plane")
 _GAUSS_POINTS = 16
 
 
-def _plane(kind: str) -> str:
+def plane_kind(kind: str) -> str:
+    """``kind`` if it is one of :data:`PLANES` (ValueError listing them)."""
     if kind not in PLANES:
         raise ValueError(f"kind must be one of {PLANES}, got {kind!r}")
     return kind
@@ -151,7 +153,7 @@ def generalised_strains(kind="in-plane"):
     tangent = sp.Matrix([0, 1, 0])
     Gamma = _frame_derivative(d) - phi.cross(tangent)
     K = _frame_derivative(phi)
-    if _plane(kind) == "in-plane":
+    if plane_kind(kind) == "in-plane":
         return sp.Matrix([Gamma[1], Gamma[0], K[2]])
     return sp.Matrix([K[0], K[1], Gamma[2]])
 
@@ -240,7 +242,7 @@ def section_stiffness(kind="in-plane", thick=True):
     polar = section_integral(s["y"] ** 2 + s["z"] ** 2, thick=False)  # J of a solid circle
     gamma, (_, kappa_t, gamma_z) = s["strains"]["in-plane"][1], s["strains"]["out-of-plane"]
     energy = normal_energy + G * area / F * (gamma**2 + gamma_z**2) / 2 + G * polar * kappa_t**2 / 2
-    names = s["strains"][_plane(kind)]
+    names = s["strains"][plane_kind(kind)]
     return sp.simplify(sp.hessian(energy, names))
 
 
@@ -252,7 +254,7 @@ def section_inertia(kind="in-plane", thick=True):
     :func:`fibre_displacement` weighted by the fibre length (1 + y/R) (``thick=False``: weight 1).
     """
     s = symbols()
-    fields = field_functions()[_plane(kind)]
+    fields = field_functions()[plane_kind(kind)]
     rates = sp.symbols("q_1:4", real=True)
     fibre = fibre_displacement()
     others = [f for plane in PLANES for f in field_functions()[plane] if f not in fields]
@@ -270,7 +272,7 @@ def energy_densities(kind="in-plane", D=None, m=None):
     the kinetic density is written with the fields standing for their rates.
     """
     s = symbols()
-    D = s["D"][_plane(kind)] if D is None else D
+    D = s["D"][plane_kind(kind)] if D is None else D
     m = s["m"][kind] if m is None else m
     strains = generalised_strains(kind)
     q = sp.Matrix(field_functions()[kind])
@@ -297,7 +299,7 @@ def homogeneous_solutions(kind="in-plane"):
     theta = s["theta"]
     from sympy.calculus.euler import euler_equations
 
-    fields = field_functions()[_plane(kind)]
+    fields = field_functions()[plane_kind(kind)]
     energy, _ = energy_densities(kind)
     equations = euler_equations(energy, list(fields), theta)
     trial = _trial_functions()
@@ -412,7 +414,7 @@ def _ring_and_material(R, r, E, nu):
 def _element_inputs(R, r, E, nu, angle, kind):
     R, r, E, nu = (float(x) for x in _ring_and_material(R, r, E, nu))
     beta = float(v.in_range("angle", angle, 0.0, np.pi / 2))
-    return R, r, E, nu, beta, _plane(kind)
+    return R, r, E, nu, beta, plane_kind(kind)
 
 
 def _unit_element(r_over_R, nu, beta, kind):
@@ -545,7 +547,7 @@ def mode_matrices(kind="in-plane"):
     det(K - omega^2 M) = 0.
     """
     s = symbols()
-    kind = _plane(kind)
+    kind = plane_kind(kind)
     theta = s["theta"]
     amplitudes, fields = _fourier_ansatz(kind)
     U, T = energy_densities(kind)
@@ -592,7 +594,7 @@ def inextensional_frequency_expression(kind="in-plane"):
     Returns omega (rad/s) in terms of k, R, r, E, nu, rho.
     """
     s = symbols()
-    kind = _plane(kind)
+    kind = plane_kind(kind)
     K, M, C = mode_matrices(kind)
     D_thin = section_stiffness(kind, thick=False)
     m_thin = section_inertia(kind, thick=False)
@@ -663,7 +665,7 @@ def inextensional_frequency(R, r, E, nu, rho, k, kind="in-plane"):
     53.38
     """
     R, r, E, nu, rho, k = _ring_inputs(R, r, E, nu, rho, k)
-    func = _inextensional_in_plane if _plane(kind) == "in-plane" else _inextensional_out_of_plane
+    func = _inextensional_in_plane if plane_kind(kind) == "in-plane" else _inextensional_out_of_plane
     return func(k, R, r, E, nu, rho) / (2.0 * np.pi)
 
 
@@ -699,7 +701,7 @@ def ring_frequencies(R, r, E, nu, rho, k, kind="in-plane", *, extension=True, sh
     from scipy.linalg import eigh, null_space
 
     R, r, E, nu, rho, k = (float(x) for x in _ring_inputs(R, r, E, nu, rho, k))
-    kind = _plane(kind)
+    kind = plane_kind(kind)
     section = _sections(R, r, E, nu, thick=thick)
     D, m = section["D"][kind], section["m"][kind]
     s = symbols()

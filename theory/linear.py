@@ -103,6 +103,8 @@ __all__ = [
     "junction_symbolic",
     "impedance",
     "junction_coefficients",
+    "free_fall_symbolic",
+    "impact_speed",
 ]
 
 #: The two lattice models of paper Sec. III.B, by the names :mod:`ringchain.numerics` uses.
@@ -629,3 +631,57 @@ def linear_travel_time(ring_from, ring_to, *, model, K, n, m, a, K_b=None, m_gra
     if np.any(speed == 0):
         raise ValueError("the sound speed vanishes at an unloaded contact (F0 = 0 with n > 1): no linear travel time")
     return v.finite_result(time, "the travel time", _CHAIN)
+
+
+# --- the drop: free fall to the impact -------------------------------------------------------------------
+
+
+def free_fall_symbolic():
+    """Impact speed v of a ring released from rest that falls freely through the height h.
+
+    Energy conservation, m g h = m v^2/2, solved for v > 0: the ring's mass drops out (any
+    ring, lumped or resolved, falls as a rigid body while its contacts are slack).
+    """
+    m, g, h, v0 = sp.symbols("m g h v", positive=True)
+    (speed,) = sp.solve(sp.Eq(m * g * h, m * v0**2 / 2), v0)
+    return speed
+
+
+@derived
+def _impact_speed():
+    g, h = sp.symbols("g h", positive=True)
+    return (h, g), free_fall_symbolic()
+
+
+def impact_speed(drop_height, g=STANDARD_GRAVITY):
+    """Speed of a ring dropped from ``drop_height`` when its slack is taken up, m/s: sqrt(2 g h).
+
+    Parameters
+    ----------
+    drop_height : array_like
+        Free-fall height, m, >= 0 (from release to the instant the contact with the ring
+        above is taut again; see :class:`ringchain.numerics.Chain`).
+    g : float, optional
+        Acceleration of gravity, m/s^2, > 0; default :data:`STANDARD_GRAVITY`.
+
+    Returns
+    -------
+    ndarray
+        m/s (:func:`free_fall_symbolic`).
+
+    Notes
+    -----
+    The one place where a drop height becomes an impact speed (the lattice, the command
+    line and the book call it).  Beyond the paper, which gives no heights.
+
+    Examples
+    --------
+    >>> round(float(impact_speed(0.05)), 6)  # the book's 5 cm drop
+    0.990285
+    """
+    h = v.nonnegative("drop_height", drop_height, "m")
+    g = v.positive("g", g, "m/s^2")
+    v.broadcast_shape(drop_height=h, g=g)
+    with np.errstate(all="ignore"):  # overflow is reported below, by value
+        speed = np.asarray(_impact_speed(h, g), dtype=float)
+    return v.finite_result(speed, "the impact speed", "drop height and gravity")

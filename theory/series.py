@@ -16,6 +16,7 @@ ln delta over a force window (:func:`fit_power_law`).
 from __future__ import annotations
 
 import functools
+import math
 
 import numpy as np
 
@@ -42,6 +43,7 @@ __all__ = [
     "fit_power_law",
     "n_per_mm_to_si",
     "si_to_n_per_mm",
+    "series_stiffness_for_power_law",
     "DEFAULT_FORCE_WINDOW",
 ]
 
@@ -327,6 +329,72 @@ def fit_power_law(K_c, K_b, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DEFAULT_FORCE_W
     K, n = _log_least_squares(log_F, log_delta, weights)
     reason = "stiffnesses and force window (a window narrower than rounding has no slope)"
     return v.finite_result(K, "the fitted K", reason), v.finite_result(n, "the fitted n", reason)
+
+
+def series_stiffness_for_power_law(K, n, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DEFAULT_FORCE_WINDOW[1]):
+    """Contact and bending stiffness whose series law reduces to the power law K delta^n (Eqs. 3-4).
+
+    The series law delta(F) = (F/K_c)^(2/3) + F/K_b (Eq. 3) can be written
+    (F/K_b) (1 + (F*/F)^(1/3)) with the crossover force F* = K_b^3/K_c^2, so the exponent of
+    its least-squares power law over a force window (Eq. 4, :func:`fit_power_law`) depends on
+    F* alone, rising from 1 (F* -> 0, bending only) to 3/2 (F* -> infinity, Hertz only), and
+    K_b then scales K as K_b^n.  One root finding gives F*, a power gives K_b: the fit of the
+    result is (K, n) to the root finder's tolerance.
+
+    Parameters
+    ----------
+    K : float
+        Power-law stiffness, N/m^n (e.g. Table I's, through :func:`n_per_mm_to_si`).
+    n : float
+        Exponent, strictly between 1 and 3/2.
+    F_min, F_max : float, optional
+        Force window, N; default :data:`DEFAULT_FORCE_WINDOW`.
+
+    Returns
+    -------
+    K_c : float
+        Contact stiffness, N/m^1.5.
+    K_b : float
+        Bending stiffness, N/m.
+
+    Notes
+    -----
+    The inverse of :func:`fit_power_law`: two springs for two measured numbers.  Beyond the
+    paper, which runs its dual-spring chain on the theory's springs (Sec. III.B); the package
+    uses it to give that chain the stiffness of Table I.
+
+    Examples
+    --------
+    >>> K_c, K_b = series_stiffness_for_power_law(4.9e6, 1.11)
+    >>> K, n = fit_power_law(K_c, K_b)
+    >>> round(float(K) / 4.9e6, 9), round(float(n), 9)
+    (1.0, 1.11)
+    """
+    from scipy.optimize import brentq
+
+    K = float(v.positive("K", K, "N/m^n"))
+    n = float(v.in_range("n", n, 1.0, 1.5, closed_high=False))
+    F_min = float(v.positive("F_min", F_min, "N"))
+    F_max = float(v.positive("F_max", F_max, "N"))
+    if not F_max > F_min:
+        raise ValueError(f"the force window needs F_min < F_max, got [{F_min:g}, {F_max:g}] N")
+
+    def fitted(log_crossover):  # the fit with K_b = 1 N/m, K_c = F*^(-1/2)
+        return fit_power_law(np.exp(-0.5 * log_crossover), 1.0, F_min, F_max)
+
+    # F* from 1e-12 to 1e12 times the window's geometric mean: n from ~1 to ~1.5.
+    centre = 0.5 * (math.log(F_min) + math.log(F_max))
+    low, high = centre - 12 * math.log(10), centre + 12 * math.log(10)
+    if not float(fitted(low)[1]) < n < float(fitted(high)[1]):
+        raise ValueError(f"no Hertz contact in series with a linear spring fits n = {n:g} over "
+                         f"[{F_min:g}, {F_max:g}] N")  # fmt: skip
+    log_crossover = brentq(lambda x: float(fitted(x)[1]) - n, low, high, xtol=1e-13, rtol=1e-15)
+    K_unit = float(fitted(log_crossover)[0])
+    K_b = (K / K_unit) ** (1.0 / n)
+    K_c = math.sqrt(K_b**3 / math.exp(log_crossover))
+    if not (math.isfinite(K_c) and math.isfinite(K_b)):
+        raise ValueError(f"the springs of K = {K:g} N/m^n, n = {n:g} are not representable in double precision")
+    return K_c, K_b
 
 
 def _log_least_squares(log_F, log_delta, weights, n=None):

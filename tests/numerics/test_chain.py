@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from ringchain.numerics import Chain, initial_state
+from ringchain.numerics import Chain, initial_state, paper_chain
 from ringchain.theory import Ring, fit_power_law, paper_data
 
 G = 9.81
@@ -13,18 +13,18 @@ G = 9.81
 def test_power_law_parameters_and_layout():
     chain = Chain.power_law(5, K=2e6, n=1.2, m=0.01, a=0.04)
     assert chain.m_gravity == chain.m  # default: gravity acts on the inertial mass
-    assert chain.n_sites == 5 and chain.lattice.n_bonds == 5  # 4 contacts + the support
-    assert chain.contact_bonds.tolist() == [0, 1, 2, 3] and chain.support_bond == 4
-    assert Chain.power_law(5, K=2e6, n=1.2, m=0.01, a=0.04, support="free").lattice.n_bonds == 4
+    assert chain.n_sites == 5 and chain.network().n_links == 5  # 4 contacts + the support
+    assert chain.contact_links.tolist() == [0, 1, 2, 3] and chain.support_link == 4
+    assert Chain.power_law(5, K=2e6, n=1.2, m=0.01, a=0.04, support="free").network().n_links == 4
 
 
 def test_dual_spring_layout_pairs_contact_and_bending_as_the_paper():
     chain = Chain.dual_spring(4, K_c=7.5e9, K_b=3.3e6, m=0.008, a=0.04)
-    lat = chain.lattice
+    lat = chain.network()
     # Bond 2j is ring j's body (bending), bond 2j+1 the contact of rings j and j+1, the last
     # one the support; each half ring weighs m/2.
-    assert np.array_equal(lat.K_spring > 0, [True, False] * 4)
-    assert np.array_equal(lat.K_contact > 0, [False, True] * 4)
+    kinds = {type(law).__name__: index.tolist() for law, index in lat.groups}
+    assert kinds == {"LinearSpring": [0, 2, 4, 6], "PowerLaw": [1, 3, 5, 7]}
     assert np.all(lat.mass == 0.004)
     assert chain.ring_sites(2).tolist() == [4, 5]
 
@@ -100,17 +100,17 @@ def test_from_ring_checks_its_options():
 
 
 def test_from_paper_is_table_i():
-    chain = Chain.from_paper("power-law")
+    chain = paper_chain("power-law")
     K_mm, n, ratio = paper_data.TABLE_I[9.0]
     assert chain.n_rings == 20 and chain.n == n
     assert chain.K == pytest.approx(K_mm * 1000.0**n, rel=1e-14)  # N/mm^n -> N/m^n by hand
     ring = Ring.from_aspect_ratio(9.0, r=2.5e-3)
     assert chain.m == pytest.approx(ratio * ring.mass, rel=1e-15)
-    assert Chain.from_paper("dual-spring").K_b == ring.K_b  # the paper's own choice (Sec. III.B): theory
+    assert paper_chain("dual-spring").K_b == ring.K_b  # the paper's own choice (Sec. III.B): theory
     with pytest.raises(ValueError, match="Table I has aspect ratios"):
-        Chain.from_paper("power-law", aspect_ratio=7.0)
+        paper_chain("power-law", aspect_ratio=7.0)
     with pytest.raises(ValueError, match="stiffness must be one of"):
-        Chain.from_paper("power-law", stiffness="measured")
+        paper_chain("power-law", stiffness="measured")
 
 
 @pytest.mark.parametrize("aspect_ratio", sorted(paper_data.TABLE_I))
@@ -118,48 +118,48 @@ def test_from_paper_stiffness_sources(aspect_ratio):
     K_mm, n, _ = paper_data.TABLE_I[aspect_ratio]
     ring = Ring.from_aspect_ratio(aspect_ratio, r=2.5e-3)
     # "theory": the ring's springs (Eqs. 1-2) and the power law fitted to them (Eq. 4).
-    dual = Chain.from_paper("dual-spring", aspect_ratio, stiffness="theory")
+    dual = paper_chain("dual-spring", aspect_ratio, stiffness="theory")
     assert (dual.K_c, dual.K_b) == (ring.K_c, ring.K_b)
-    power = Chain.from_paper("power-law", aspect_ratio, stiffness="theory")
+    power = paper_chain("power-law", aspect_ratio, stiffness="theory")
     assert (power.K, power.n) == ring.power_law()
     # "table": the dual-spring springs reduce to Table I's power law over 1-100 N (Eq. 4, fitted
     # by the theory's own fit_power_law): K by hand from N/mm^n, n as printed.
-    dual = Chain.from_paper("dual-spring", aspect_ratio, stiffness="table")
+    dual = paper_chain("dual-spring", aspect_ratio, stiffness="table")
     K, n_fit = fit_power_law(dual.K_c, dual.K_b)
     assert float(K) == pytest.approx(K_mm * 1000.0**n, rel=1e-9)  # root finding to 1e-13 in ln F*
     assert float(n_fit) == pytest.approx(n, rel=1e-9)
-    assert dual.n == 1.5 and dual.m == Chain.from_paper("power-law", aspect_ratio).m
+    assert dual.n == 1.5 and dual.m == paper_chain("power-law", aspect_ratio).m
 
 
 @pytest.mark.parametrize("model", ["power-law", "dual-spring"])
 def test_hanging_chain_is_in_static_equilibrium(model):
-    chain = Chain.from_paper(model)
+    chain = paper_chain(model)
     x, u = initial_state(chain, gravity=True, g=G)
-    lat = chain.lattice
-    forces = lat.bond_forces(lat.extension(x[0]))
+    lat = chain.network()
+    forces = lat.forces(lat.extension(x[0]))
     # Contact i carries the weight of rings 0..i: (i + 1) m0 g; the support all 20 rings.
-    contact = forces[chain.contact_bonds]
+    contact = forces[chain.contact_links]
     np.testing.assert_allclose(contact, (np.arange(19) + 1) * chain.m_gravity * G, rtol=1e-12)
-    assert forces[chain.support_bond] == pytest.approx(20 * chain.m_gravity * G, rel=1e-12)
+    assert forces[chain.support_link] == pytest.approx(20 * chain.m_gravity * G, rel=1e-12)
     # ... so nothing accelerates: residual relative to g, rounding of x ~ 1e-16 relative.
     assert np.abs(lat.accelerations(x[0], u[0], g=G)).max() < 1e-6 * G
     assert np.all(u == 0.0)
 
 
 def test_dual_spring_ring_body_carries_half_its_own_weight_more():
-    chain = Chain.from_paper("dual-spring")
+    chain = paper_chain("dual-spring")
     x, _ = initial_state(chain, gravity=True, g=G)
-    bending = chain.lattice.bond_forces(chain.lattice.extension(x[0]))[chain.bending_bonds]
+    bending = chain.network().forces(chain.network().extension(x[0]))[chain.bending_links]
     # The body of ring j carries the rings below and its own lower half: (j + 1/2) m0 g.
     np.testing.assert_allclose(bending, (np.arange(20) + 0.5) * chain.m_gravity * G, rtol=1e-12)
 
 
 @pytest.mark.parametrize("model", ["power-law", "dual-spring"])
 def test_drop_starts_with_the_slack_just_taken_up(model):
-    chain = Chain.from_paper(model)
+    chain = paper_chain(model)
     h = 0.05
     x, u = initial_state(chain, drop_height=h, g=G)
-    lat = chain.lattice
+    lat = chain.network()
     e = lat.extension(x[0])
     k = chain.sites_per_ring
     # Ring 0 falls freely: unloaded (its bonds at zero extension), moving at sqrt(2 g h) away from the chain.
@@ -167,7 +167,7 @@ def test_drop_starts_with_the_slack_just_taken_up(model):
     np.testing.assert_allclose(u[0, :k], -np.sqrt(2 * G * h), rtol=1e-15)
     assert np.all(u[0, k:] == 0.0)
     # The rest hangs without ring 0's weight: contact i (i >= 1) carries i rings.
-    contact = lat.bond_forces(e)[chain.contact_bonds]
+    contact = lat.forces(e)[chain.contact_links]
     np.testing.assert_allclose(contact[1:], np.arange(1, 19) * chain.m_gravity * G, rtol=1e-12)
 
 

@@ -132,7 +132,6 @@ def test_sweep_varies_a_grading_parameter(capsys, tmp_path):
         (["sweep", "--chain", "{good}", "--vary", "4.R", "0.01", "--drop-height", "0.05", "--sensors", "2", "7"],
          "there is no segment 4"),
         (["sweep", "--vary", "2.R", "0.01", "--drop-height", "0.05"], "argument --vary: varies a field of a chain"),
-        (["sweep", "--chain", "{good}", "--drop-height", "0.05", "--workers", "2"], "argument --workers: a sweep of a"),
         (["sweep", "--chain", "{good}", "--sensors", "2", "7"], "needs impacts: give --drop-height"),
     ],
 )  # fmt: skip

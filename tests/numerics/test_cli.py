@@ -105,12 +105,12 @@ def test_simulate_writes_the_sensor_traces_and_a_plot(capsys, tmp_path):
     assert code == 0 and err == ""
     with open(out_csv) as handle:
         table = list(csv.reader(handle))
-    assert table[0] == ["t_s", "sensor_ring2_N", "sensor_ring5_N"]
+    assert table[0] == ["t_s", "sensor_ring2_N", "sensor_ring5_N", "support_N"]
     data = np.array(table[1:], dtype=float)
     # The same run through the library: the CSV holds its traces (written with 17 digits: exact).
     chain = Chain.from_ring(Ring(22.5e-3, 2.5e-3), 8, "power-law")
     sim = simulate(chain, 1e-3, drop_height=0.05, n_samples=501)
-    np.testing.assert_array_equal(data, np.column_stack([sim.t, sim.sensor(2), sim.sensor(5)]))
+    np.testing.assert_array_equal(data, np.column_stack([sim.t, sim.sensor(2), sim.sensor(5), sim.support_force]))
     assert number_after("ring 5: peak", out) == pytest.approx(sim.peak_force(5), rel=5e-4)  # 4 figures
     assert out_png.read_bytes()[:8] == PNG_MAGIC
 
@@ -265,14 +265,14 @@ def no_work(monkeypatch):
     """Replace the solver and the sweep, so that a test sees whether the command started its work."""
     import importlib
 
-    from ringchain.numerics import solve
+    from ringchain.numerics import experiment
 
     sweep_module = importlib.import_module("ringchain.numerics.sweep")
 
     def work(*args, **kwargs):
         raise WorkStarted
 
-    monkeypatch.setattr(solve, "simulate", work)
+    monkeypatch.setattr(experiment, "run_experiment", work)
     monkeypatch.setattr(sweep_module, "sweep", work)
 
 
@@ -608,11 +608,11 @@ def test_paper_refuses_a_drop_beyond_contact_mechanics_before_any_work(capsys, t
 
 
 def test_running_out_of_memory_is_one_line(capsys, monkeypatch, tmp_path):
-    from ringchain.numerics import solve
+    from ringchain.numerics import experiment
 
     def exhausted(*args, **kwargs):
         raise MemoryError
 
-    monkeypatch.setattr(solve, "simulate", exhausted)
+    monkeypatch.setattr(experiment, "run_experiment", exhausted)
     code, out, err = run(capsys, *SIMULATE, "--out", str(tmp_path / "run.csv"))
     assert_one_line_error(code, out, err, "ringchain simulate: error: out of memory; use fewer --rings, --samples")

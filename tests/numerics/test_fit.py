@@ -15,23 +15,23 @@ import sys
 import numpy as np
 import pytest
 from ringchain.numerics import (
-    Chain,
     DataError,
     FitError,
     fit_speed_amplitude,
     fit_static,
     fit_traces,
+    paper_chain,
     read_speed_amplitude,
     read_static,
     read_traces,
     simulate,
 )
-from ringchain.numerics.fit import FIT_RTOL, _simulate_parameter_sets
+from ringchain.numerics.fit_dynamic import FIT_RTOL, simulate_parameter_sets
 from ringchain.theory import Ring, series_displacement, solitary_wave_speed
 
 #: The paper's chain (Table I, R/r = 9) with a contact dashpot of about 3 % of critical damping
 #: (sqrt(m k) ~ 100 N s/m on the tangent stiffness at 30 N): enough to show in the traces.
-TRUTH = dataclasses.replace(Chain.from_paper("power-law"), gamma=3.0)
+TRUTH = dataclasses.replace(paper_chain("power-law"), gamma=3.0)
 
 
 def measured(chain, h, t, t0, *, noise, offsets, seed, rings=(6, 12)):
@@ -277,9 +277,9 @@ def test_forward_model_batched_agrees_with_one_run_at_a_time():
     speeds = np.array([[0.6, 1.0], [0.6, 1.0], [0.62, 1.0]])
     t = np.linspace(0.0, 1.4e-3, 700)
     rings = [(6, 12), (3,)]
-    batched = _simulate_parameter_sets(chains, speeds, [True, False], t, rings)
-    single = _simulate_parameter_sets(chains, speeds, [True, False], t, rings, batched=False)
-    converged = _simulate_parameter_sets(chains, speeds, [True, False], t, rings, batched=False, rtol=1e-11)
+    batched = simulate_parameter_sets(chains, speeds, [True, False], t, rings)
+    single = simulate_parameter_sets(chains, speeds, [True, False], t, rings, batched=False)
+    converged = simulate_parameter_sets(chains, speeds, [True, False], t, rings, batched=False, rtol=1e-11)
     for b, s, c in zip(batched, single, converged, strict=True):
         peak = np.abs(c).max()
         # At FIT_RTOL = 1e-8 both are within ~2e-7 of the peak of the converged forces (measured);
@@ -374,10 +374,10 @@ def test_trace_fit_that_does_not_converge_says_so():
 def test_trace_fit_reports_a_misfit_far_above_the_noise():
     # A dual-spring chain's trailing oscillations, fitted with the power-law chain: converges, but
     # says that the residual is far above the noise of the traces.
-    truth = Chain.from_paper("dual-spring")
+    truth = paper_chain("dual-spring")
     t = np.linspace(0.0, 1.4e-3, 700)
     traces = measured(truth, 0.02, t, 0.0, noise=0.002, offsets=(0.0, 0.0), seed=4)
-    fit = fit_traces(t, traces, Chain.from_paper("power-law"), drop_height=0.02, free=("m", "t0"))
+    fit = fit_traces(t, traces, paper_chain("power-law"), drop_height=0.02, free=("m", "t0"))
     assert any("times the noise of the traces" in note for note in fit.notes)
     assert "note: the residual" in fit.report()
 
@@ -414,7 +414,7 @@ def test_trace_fit_rejects_bad_input(kwargs, message):
     with pytest.raises(ValueError, match=message):
         fit_traces(arguments.pop("t"), arguments.pop("traces"), TRUTH, **arguments)
     with pytest.raises(ValueError, match="only"):
-        fit_traces(T, PULSE, Chain.from_paper("dual-spring"), drop_height=0.02, free=("n",))
+        fit_traces(T, PULSE, paper_chain("dual-spring"), drop_height=0.02, free=("n",))
 
 
 def test_import_does_not_import_lmfit():

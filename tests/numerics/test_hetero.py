@@ -2,10 +2,9 @@
 
 import numpy as np
 import pytest
-from ringchain.numerics import Chain, Lattice, initial_state, simulate, simulate_batch
+from ringchain.numerics import STANDARD_GRAVITY as G
+from ringchain.numerics import Chain, Network, Simulation, initial_state, laws, simulate, simulate_batch
 from ringchain.numerics.junction import junction_pulse
-from ringchain.numerics.models import STANDARD_GRAVITY as G
-from ringchain.numerics.solve import Simulation, _adaptive, _scales
 from ringchain.theory import Ring, fit_power_law, hertz_stiffness_pair
 
 RNG_SEED = 13
@@ -60,25 +59,33 @@ def test_per_contact_and_per_ring_arrays_are_validated(kwargs, message):
 
 def test_a_free_chain_has_one_contact_less():
     chain = _power_law(support="free")
-    assert chain.n_contacts == 7 and chain.lattice.n_bonds == 7
-    np.testing.assert_array_equal(chain.lattice.K_contact, chain.K)
-    np.testing.assert_array_equal(chain.lattice.n, chain.n)
+    net = chain.network()
+    assert chain.n_contacts == 7 and net.n_links == 7
+    ((law, index),) = net.groups
+    np.testing.assert_array_equal(index, np.arange(7))
+    np.testing.assert_array_equal(law.K, chain.K)
+    np.testing.assert_array_equal(law.n, chain.n)
 
 
-def test_the_lattice_places_each_parameter_on_its_bond_and_site():
+def test_the_network_places_each_parameter_on_its_link_and_site():
     chain = _dual_spring(4)
-    lat = chain.lattice
-    np.testing.assert_array_equal(lat.K_contact[1::2], chain.K)
-    np.testing.assert_array_equal(lat.K_spring[0::2], chain.K_b)
-    np.testing.assert_array_equal(lat.mass, np.repeat(chain.m / 2, 2))
-    np.testing.assert_array_equal(lat.weight_mass, np.repeat(chain.m_gravity / 2, 2))
+    net = chain.network()
+    laws_by_class = {type(law): (law, index) for law, index in net.groups}
+    contact, contacts = laws_by_class[laws.PowerLaw]
+    spring, springs = laws_by_class[laws.LinearSpring]
+    np.testing.assert_array_equal(contacts, [*chain.contact_links.tolist(), chain.support_link])
+    np.testing.assert_array_equal(contact.K, chain.K)
+    np.testing.assert_array_equal(springs, chain.bending_links)
+    np.testing.assert_array_equal(spring.K, chain.K_b)
+    np.testing.assert_array_equal(net.mass, np.repeat(chain.m / 2, 2))
+    np.testing.assert_array_equal(net.weight_mass, np.repeat(chain.m_gravity / 2, 2))
 
 
 @pytest.mark.parametrize("build", [_power_law, _dual_spring])
 def test_hanging_equilibrium_of_a_varying_chain_is_at_rest(build):
     chain = build()
     x, _ = initial_state(chain)
-    a = chain.lattice.accelerations(x[0], np.zeros(chain.n_sites), G)
+    a = chain.network().accelerations(x[0], np.zeros(chain.n_sites), G)
     # Static extensions invert each bond's own law exactly; the residual accelerations are
     # rounding of forces ~ total weight (~1 N) over masses of grams: 1e-13 relative of g.
     assert np.abs(a).max() < 1e-9 * G
@@ -88,9 +95,9 @@ def test_hanging_equilibrium_of_a_varying_chain_is_at_rest(build):
 def test_fast_path_of_a_varying_chain_is_newtons_law(build):
     """The undamped stepper (per-bond coefficients, per-site masses) against the plain sum of bond forces."""
     chain = build()
-    lat = chain.lattice
+    lat = chain.network()
     x = np.random.default_rng(RNG_SEED).normal(scale=1e-6, size=(3, chain.n_sites))
-    f = lat.bond_forces(lat.extension(x))
+    f = lat.forces(lat.extension(x))
     below = np.pad(f, ((0, 0), (1, 0)))[:, : lat.n_sites]
     expected = (f[:, : lat.n_sites] - below - lat.weight_mass * G) / lat.mass
     # Same operations in another order: rounding, relative 1e-15 of the largest acceleration.
@@ -116,7 +123,7 @@ def test_energy_is_conserved_without_dashpots_on_every_kind_of_varying_chain(cas
     energy = sim.energy()
     assert np.all(energy.dissipated == 0.0)
     drift = np.abs(energy.total - energy.total[0]).max() / energy.kinetic[0]
-    # As for the uniform chain (tests/numerics/test_solve.py): LSODA at rtol 1e-9 over a short run
+    # As for the uniform chain (tests/numerics/test_integrate.py): LSODA at rtol 1e-9 over a short run
     # (measured 2e-9 to 5e-8); Verlet's shadow energy at 60 steps per period, O((omega dt)^2) ~ 1e-3
     # (measured 1.5e-5 to 3.6e-4).
     assert drift < (1e-3 if method == "verlet" else 1e-6)
@@ -246,7 +253,7 @@ def test_small_pulse_at_a_junction_against_the_impedance_theory(model, stiffness
     assert T == pytest.approx(T_theory, abs=0.01)
 
 
-# -- several chains of one layout as one lattice (Lattice.stack) --------------------------------------
+# -- several chains of one layout as one network (Network.stack) --------------------------------------
 
 STACKS = {  # three chains of one layout each: varying, uniform, varying otherwise
     "dual-spring, undamped (fast path)": lambda: [
@@ -258,18 +265,13 @@ STACKS = {  # three chains of one layout each: varying, uniform, varying otherwi
 
 
 def _stacked_drops(chains, heights, t, rtol):
-    """Sensor forces of one drop per chain, the chains' lattices stacked and integrated as one batch."""
-    x0, u0, scales = [], [], []
-    for chain, h in zip(chains, heights, strict=True):
-        x, u = initial_state(chain, drop_height=h)
-        x0.append(x[0])
-        u0.append(u[0])
-        scales.append(np.concatenate(_scales(chain, x, -u[:, 0], G)))
-    lattice = Lattice.stack([chain.lattice for chain in chains])
-    xs, us, dissipated, _ = _adaptive("odeint", lattice, np.array(x0), np.array(u0), np.array(scales).T, t, rtol,
-                                      rtol, G, None, lambda *state: None)  # fmt: skip
+    """Sensor forces of one drop per chain, the chains' networks stacked and integrated as one batch."""
+    states = [initial_state(chain, drop_height=h) for chain, h in zip(chains, heights, strict=True)]
+    x0, u0 = np.concatenate([x for x, _ in states]), np.concatenate([u for _, u in states])
+    stack = Network.stack([chain.network() for chain in chains])
+    batch = simulate_batch(stack, t[-1], initial=(x0, u0), t_eval=t, rtol=rtol, max_energy_drift=None)
     return [
-        Simulation(chain=chain, t=t, x=xs[b], u=us[b], dissipated=dissipated[b], g=G,
+        Simulation(chain=chain, t=t, x=batch.x[b], u=batch.u[b], dissipated=batch.dissipated[b], g=G,
                    impact_velocity=float(-u0[b][0]), drop_height=h).sensor_force
         for b, (chain, h) in enumerate(zip(chains, heights, strict=True))
     ]  # fmt: skip
@@ -278,12 +280,12 @@ def _stacked_drops(chains, heights, t, rtol):
 @pytest.mark.parametrize("case", list(STACKS))
 def test_a_stack_of_lattices_moves_each_chain_by_its_own_law(case):
     chains = STACKS[case]()
-    stack = Lattice.stack([chain.lattice for chain in chains])
+    stack = Network.stack([chain.network() for chain in chains])
     assert stack.batch_shape == (3,) and stack.n_sites == chains[0].n_sites and stack.damped == ("general path" in case)
     rng = np.random.default_rng(RNG_SEED)
     x = rng.normal(0.0, 1e-6, (3, stack.n_sites))
     u = rng.normal(0.0, 0.1, x.shape)
-    each = np.array([chain.lattice.accelerations(x[b], u[b]) for b, chain in enumerate(chains)])
+    each = np.array([chain.network().accelerations(x[b], u[b]) for b, chain in enumerate(chains)])
     # Rounding only: where a row differs from the others the stack multiplies K delta^n by 1/m,
     # a uniform chain alone by K/m (measured 2.4e-16 of the largest acceleration).
     np.testing.assert_allclose(stack.accelerations(x, u), each, rtol=0, atol=1e-14 * np.abs(each).max())
@@ -313,14 +315,14 @@ def test_a_stack_of_one_uniform_chain_is_that_chains_batch_to_the_last_bit():
 
 def test_stacking_names_what_does_not_fit():
     five, six = (Chain.power_law(k, K=4.9e6, n=1.11, m=8.2e-3, a=0.04) for k in (5, 6))
-    with pytest.raises(ValueError, match=r"lattices\[1\] has 5 sites and 5 bonds, lattices\[0\] 6 and 6"):
-        Lattice.stack([six.lattice, five.lattice])
-    with pytest.raises(TypeError, match=r"lattices\[0\] must be a Lattice, got Chain"):
-        Lattice.stack([six])
-    with pytest.raises(ValueError, match="at least one lattice"):
-        Lattice.stack([])
-    stack = Lattice.stack([six.lattice, six.lattice])
-    with pytest.raises(ValueError, match=r"lattices\[0\] is already a stack of 2"):
-        Lattice.stack([stack])
-    with pytest.raises(ValueError, match="a stack of 2 lattices integrates one run each, got n_runs = 3"):
+    with pytest.raises(ValueError, match=r"networks\[1\] has 5 sites and 5 links, networks\[0\] 6 and 6"):
+        Network.stack([six.network(), five.network()])
+    with pytest.raises(TypeError, match=r"networks\[0\] must be a Network, got Chain"):
+        Network.stack([six])
+    with pytest.raises(ValueError, match="at least one network"):
+        Network.stack([])
+    stack = Network.stack([six.network(), six.network()])
+    with pytest.raises(ValueError, match=r"networks\[0\] is already a stack of 2"):
+        Network.stack([stack])
+    with pytest.raises(ValueError, match="a stack of 2 networks integrates one run each, got n_runs = 3"):
         stack.first_order_rhs(3, G)

@@ -2,9 +2,9 @@
 
 import numpy as np
 import pytest
-from ringchain.numerics import Chain, initial_state, simulate, simulate_batch
+from ringchain.numerics import Chain, initial_state, paper_chain, simulate, simulate_batch
 
-PAPER = Chain.from_paper("dual-spring")
+PAPER = paper_chain("dual-spring")
 
 
 def test_the_impact_state_given_as_initial_reproduces_the_impact_run():
@@ -19,7 +19,7 @@ def test_the_impact_state_given_as_initial_reproduces_the_impact_run():
 
 @pytest.mark.parametrize("method", ["odeint", "verlet"])
 def test_the_hanging_equilibrium_stays_at_rest(method):
-    chain = Chain.from_paper("power-law")
+    chain = paper_chain("power-law")
     x0 = chain.displacement_from_extension(chain.static_extension())
     sim = simulate(chain, 1e-3, initial=(x0, np.zeros(chain.n_sites)), n_samples=11, method=method)
     # The equilibrium is solved to rounding; the motion from the residual force stays at that level.
@@ -32,7 +32,7 @@ def test_a_pre_stretched_free_chain_without_gravity_unloads_from_its_free_end():
     """Uniform tension, fixed top, free bottom, no gravity: the bottom ring is pulled up, the middle waits."""
     chain = Chain.power_law(60, K=1e9, n=1.5, m=0.01, a=0.04)
     F0 = 2.0
-    x0 = chain.displacement_from_extension(np.full(chain.lattice.n_bonds, (F0 / chain.K) ** (1 / chain.n)))
+    x0 = chain.displacement_from_extension(np.full(chain.network().n_links, (F0 / chain.K) ** (1 / chain.n)))
     u0 = np.zeros(chain.n_sites)
     speed = 0.04 * np.sqrt(1.5 * chain.K ** (1 / 1.5) * F0 ** (1 / 3) / chain.m)  # linear sound speed at F0
     t_end = 15 * chain.a / speed  # the unloading reaches about ring 15

@@ -47,7 +47,7 @@ r"""The lattice against the linear theory and the pulse invariants (:mod:`ringch
 
 import numpy as np
 import pytest
-from ringchain.numerics import STANDARD_GRAVITY, Chain, signals, simulate, simulate_batch
+from ringchain.numerics import STANDARD_GRAVITY, Chain, paper_chain, signals, simulate, simulate_batch
 from ringchain.theory import (
     band_edges,
     dispersion,
@@ -65,7 +65,7 @@ F0 = 2.0  # N: the static force of the dispersion test, about that of contact 8 
 
 
 def paper_parameters(model):
-    chain = Chain.from_paper(model)
+    chain = paper_chain(model)
     return dict(model=model, K=chain.K, n=chain.n, m=chain.m, a=chain.a, K_b=chain.K_b)
 
 
@@ -74,11 +74,7 @@ def paper_parameters(model):
 
 def uniform_state(chain, force):
     """Site displacements with every bond carrying ``force`` (fixed top support)."""
-    lat = chain.lattice
-    e = np.where(lat.K_contact > 0, (force / chain.K) ** (1 / chain.n), 0.0)
-    if chain.K_b is not None:
-        e = np.where(lat.K_spring > 0, force / chain.K_b, e)
-    return chain.displacement_from_extension(e)
+    return chain.displacement_from_extension(chain.network().extension_at(force))
 
 
 def bloch_amplitude(chain, params, qa, sigma=10.0, periods=4.0):
@@ -124,7 +120,7 @@ def spectral_peaks(t, y, count, pad=16):
 @pytest.mark.parametrize("qa", [0.5, 1.5, 2.5])
 def test_small_packet_follows_the_dispersion_relation(model, qa):
     params = paper_parameters(model)
-    chain = Chain.from_paper(model)
+    chain = paper_chain(model)
     t, z = bloch_amplitude(chain, params, qa)
     y = z.real
     # Z stays real: no travelling component, and nothing else enters the window (measured |imag| < 3e-7).
@@ -160,7 +156,7 @@ def trailing_tail(sim, ring):
 
 @pytest.mark.parametrize(("drop_height", "bound"), [(0.05, 0.06), (0.2, 0.02)])
 def test_trailing_oscillation_sits_at_the_ring_bending_edge(drop_height, bound):
-    chain = Chain.from_paper("dual-spring")
+    chain = paper_chain("dual-spring")
     sim = simulate(chain, 2.5e-3, drop_height=drop_height, n_samples=25001)
     frequency, residual, slack = trailing_tail(sim, 6)
     assert residual == 0.0 and slack > 0.5  # behind the pulse the contacts are slack
@@ -197,7 +193,7 @@ def formed_wave(n):
         k = int(np.argmin(np.abs(np.argmax(run.contact_force, axis=1) - MID)))  # the peak at contact MID
         peak = int(np.argmax(run.contact_force[k]))
         window = slice(peak - int(2 * support), peak + int(2 * support) + 1)
-        e = chain.lattice.extension(run.x[k])
+        e = chain.network().extension(run.x[k])
         kinetic = 0.5 * run.u[k, window] ** 2
         contact = np.maximum(e[window], 0.0) ** (n + 1) / (n + 1)
         rows.append(dict(F_near=F_near, F_far=F_far, F_m=0.5 * (F_near + F_far),
@@ -248,14 +244,13 @@ def test_impact_law_over_three_decades(struck):
 
 def upgoing_pulse(chain, centre, sigma, relative=1e-3):
     """(x0, u0): the hanging equilibrium plus a small force pulse travelling up (WKB-matched velocity)."""
-    lat = chain.lattice
+    lat = chain.network()
     e_static = chain.static_extension()
-    tension = lat.bond_forces(e_static)
+    tension = lat.forces(e_static)
     k = chain.sites_per_ring
-    bond_position = (np.arange(lat.n_bonds) + 1) / k - 0.5  # in rings: contact j-(j+1) at j + 1/2
+    bond_position = (np.arange(lat.n_links) + 1) / k - 0.5  # in rings: contact j-(j+1) at j + 1/2
     pulse = relative * tension * np.exp(-((bond_position - centre) ** 2) / (2 * sigma**2))
-    n = lat.n
-    stiffness = np.where(lat.K_contact > 0, n * lat.K_contact ** (1 / n) * tension ** ((n - 1) / n), lat.K_spring)
+    stiffness = lat.stiffness(e_static)
     x0 = chain.displacement_from_extension(e_static + pulse / stiffness)
     site_position = (np.arange(chain.n_sites) + 0.5) / k - 0.5
     force = np.interp(site_position, bond_position, tension)
@@ -268,8 +263,8 @@ def upgoing_pulse(chain, centre, sigma, relative=1e-3):
 @pytest.mark.parametrize(
     "chain",
     [
-        Chain.from_paper("power-law", n_rings=140),
-        Chain.from_paper("dual-spring", n_rings=140),
+        paper_chain("power-law", n_rings=140),
+        paper_chain("dual-spring", n_rings=140),
         Chain.power_law(140, 1e9, 1.5, 0.01, 0.04, m_gravity=0.02),  # Hertz-like: a steeper grading
     ],
     ids=["power-law", "dual-spring", "power-law-n1.5"],

@@ -9,7 +9,7 @@ both models one source of stiffness.
 
 import numpy as np
 import pytest
-from ringchain.numerics import Chain, paper_experiment, simulate_batch
+from ringchain.numerics import paper_chain, paper_experiment, simulate_batch
 from ringchain.theory import paper_data
 from scipy.signal import find_peaks
 
@@ -22,7 +22,7 @@ T_END = 2e-3  # s
 
 @pytest.fixture(scope="module", params=["power-law", "dual-spring"])
 def runs(request):
-    return simulate_batch(Chain.from_paper(request.param), T_END, drop_heights=HEIGHTS)
+    return simulate_batch(paper_chain(request.param), T_END, drop_heights=HEIGHTS)
 
 
 def test_a_leading_pulse_reaches_both_sensors(runs):
@@ -114,7 +114,7 @@ def test_both_models_take_one_source_of_stiffness(stiffness, height):
 def test_the_papers_own_mix_of_stiffness_is_a_quarter_apart():
     # The paper's choice (Chain.from_paper's default): dual-spring on the theory, power law on
     # Table I, whose fitted K is 0.55 times the theory's at R/r = 9: V ~ K^(1/2n), a quarter faster.
-    batch = {model: simulate_batch(Chain.from_paper(model), T_END, drop_heights=[0.05]) for model in
+    batch = {model: simulate_batch(paper_chain(model), T_END, drop_heights=[0.05]) for model in
              ("power-law", "dual-spring")}  # fmt: skip
     ratio = batch["dual-spring"][0].time_of_flight(NEAR, FAR) / batch["power-law"][0].time_of_flight(NEAR, FAR)
     assert 0.7 < ratio < 0.8  # measured 0.744 (0.337 against 0.453 ms)

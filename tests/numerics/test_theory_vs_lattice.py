@@ -23,7 +23,7 @@ with margins of 13-30%: |V/V_s - 1| < 0.4 (a/L)^2 and |FWHM/FWHM_theory - 1| < 0
 """
 
 import pytest
-from ringchain.numerics import Chain, signals, simulate
+from ringchain.numerics import Chain, paper_chain, signals, simulate
 from ringchain.theory import (
     n_per_mm_to_si,
     paper_data,
@@ -116,7 +116,7 @@ def test_long_wave_error_shrinks_as_n_tends_to_one(errors_by_exponent):
 @pytest.mark.parametrize("aspect_ratio", sorted(paper_data.TABLE_I))
 def test_paper_chains_in_si_units(aspect_ratio):
     """Table I chains (SI units, m_eff, a = 2(R - r)), free and without gravity, struck at 1 m/s."""
-    chain = Chain.from_paper("power-law", aspect_ratio=aspect_ratio)
+    chain = paper_chain("power-law", aspect_ratio=aspect_ratio)
     K_mm, n, _ = paper_data.TABLE_I[aspect_ratio]
     assert chain.K == float(n_per_mm_to_si(K_mm, n))
     check(chain.K, chain.n, chain.m, chain.a, 1.0)

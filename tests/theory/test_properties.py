@@ -93,15 +93,46 @@ def test_every_public_function_is_covered():
         "solitary_wave_energy", "solitary_wave_momentum", "impact_amplitude", "contact_modulus",
         "torus_gap", "contact_patches", "smallest_patch_angle", "series_extension",
         "fit_power_law_to_curve", "ring_frequencies", "inextensional_frequency",
+        # issue 19: one drop helper; the series law's inverse moved here from numerics
+        "impact_speed", "series_stiffness_for_power_law",
     }  # fmt: skip
     data = {"paper_data", "DEFAULT_FORCE_WINDOW", "MIN_CHAIN_ASPECT_RATIO", "PAPER_TUBE_RADIUS", "MATERIALS"}
     data |= {"curved_beam"}  # a module: its public functions are ring_frequencies and inextensional_frequency
-    data |= {"STAINLESS_STEEL_304"}
+    data |= {"STAINLESS_STEEL_304", "STANDARD_GRAVITY"}
     covered |= HETERO_COVERED  # issue 13: the block at the end of this file
     covered |= YIELD_COVERED  # issue 22: contacts that yield (its block below)
     covered |= SHEET_COVERED  # issue 21: sheets of interlinked rings (its block below)
     covered |= DISORDER_COVERED  # issue 23: disorder (its block below)
     assert set(theory.__all__) == covered | data
+
+
+# --- the drop and the series law's inverse (issue 19) ---------------------------------------------------
+
+
+@SETTINGS
+@given(ANY, ANY)
+def test_impact_speed_any_input(h, g):
+    finite_or_refused(lambda: theory.impact_speed(h, g))
+
+
+@SETTINGS
+@given(log_uniform(1e-300, 1e300), log_uniform(1e-300, 1e300))
+def test_impact_speed_admissible(h, g):
+    speed = finite_or_refused(lambda: theory.impact_speed(h, g))
+    assert speed is None or speed >= 0.0
+
+
+@SETTINGS
+@given(ANY, ANY, ANY, ANY)
+def test_series_stiffness_for_power_law_any_input(K, n, F_min, F_max):
+    finite_or_refused(lambda: theory.series_stiffness_for_power_law(K, n, F_min, F_max))
+
+
+@settings(max_examples=25, deadline=None, derandomize=True)  # a root finding per example
+@given(log_uniform(1e-3, 1e15), st.floats(1.01, 1.45), log_uniform(1e-6, 1e3))
+def test_series_stiffness_for_power_law_admissible(K, n, F_min):
+    springs = finite_or_refused(lambda: theory.series_stiffness_for_power_law(K, n, F_min, 100.0 * F_min))
+    assert springs is None or min(springs) > 0.0
 
 
 # --- the contact ------------------------------------------------------------------------------

@@ -16,6 +16,7 @@ from ringchain.theory import (
     paper_data,
     series,
     series_displacement,
+    series_stiffness_for_power_law,
     si_to_n_per_mm,
 )
 
@@ -160,3 +161,45 @@ def test_fitted_exponent_in_range(aspect, lo, decades):
     ring = Ring.from_aspect_ratio(aspect)
     K, n = ring.power_law(10.0**lo, 10.0 ** (lo + decades))
     assert 1.0 < n < 1.5 and K > 0
+
+
+# -- the inverse: the springs of a measured power law (moved here from numerics/paper.py) --------------
+
+
+@pytest.mark.parametrize(
+    "row", [*(("Table I", k, v) for k, v in paper_data.TABLE_I.items()),
+            *(("Table II", k, v) for k, v in paper_data.TABLE_II.items())],
+)  # fmt: skip
+def test_series_stiffness_reduces_to_the_measured_power_law(row):
+    """The springs found for each measured (K, n) of Tables I and II, fitted again by the theory's
+    own least squares (Eq. 4, theory.fit_power_law), give that K and n back."""
+    _, _, (K_mm, n, _) = row
+    K = float(n_per_mm_to_si(K_mm, n))
+    K_c, K_b = series_stiffness_for_power_law(K, n)
+    K_fit, n_fit = fit_power_law(K_c, K_b)
+    # The root finder stops at 1e-13 in ln F*; n depends smoothly on it.
+    assert float(n_fit) == pytest.approx(n, rel=1e-9)
+    assert float(K_fit) == pytest.approx(K, rel=1e-9)
+    # Springs of a steel ring of this size: K_b of 1e6-1e8 N/m (Eq. 2 gives 3.3e6 at R/r = 9),
+    # K_c of 1e9-1e10 N/m^1.5 (Eq. 1 gives 7.5e9).
+    assert 1e6 < K_b < 1e8 and 1e9 < K_c < 1e11
+
+
+@settings(max_examples=40, deadline=None)
+@given(K=st.floats(1e4, 1e10), n=st.floats(1.02, 1.48), window=st.sampled_from([(1.0, 100.0), (0.1, 10.0)]))
+def test_series_stiffness_round_trips_over_the_admissible_range(K, n, window):
+    K_c, K_b = series_stiffness_for_power_law(K, n, *window)
+    assert np.isfinite(K_c) and np.isfinite(K_b)
+    K_fit, n_fit = fit_power_law(K_c, K_b, *window)
+    assert float(n_fit) == pytest.approx(n, rel=1e-8)  # root finding to 1e-13 in ln F*
+    assert float(K_fit) == pytest.approx(K, rel=1e-7)  # K ~ K_b^n: the error in n times ln(delta)
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [((4.9e6, 1.5), r"n must lie in \(1, 1.5\)"), ((4.9e6, 1.0), r"n must lie in \(1, 1.5\)"),
+     ((-1.0, 1.2), "K must be positive"), ((4.9e6, 1.2, 10.0, 1.0), "F_min < F_max")],
+)  # fmt: skip
+def test_series_stiffness_refuses_what_no_series_law_gives(args, message):
+    with pytest.raises(ValueError, match=message):
+        series_stiffness_for_power_law(*args)

@@ -14,12 +14,13 @@ from ringchain.numerics import (
     NoPulseError,
     RunTooLargeError,
     estimate_run,
+    paper_chain,
     simulate,
     simulate_batch,
 )
-from ringchain.numerics.solve import ENERGY_DRIFT_LIMIT, TOLERANCE_RANGE
+from ringchain.numerics.integrate import ENERGY_DRIFT_LIMIT, TOLERANCE_RANGE
 
-PAPER = Chain.from_paper("dual-spring")
+PAPER = paper_chain("dual-spring")
 DROP = 0.05  # m: a 1 m/s impact, peak forces ~ 80 N
 SENSORS = [6, 12]
 
@@ -90,7 +91,7 @@ def test_sample_times_need_not_start_at_zero(reference):
 
 
 def test_dashpots_only_remove_energy():
-    chain = Chain.from_paper("dual-spring", gamma_c=2.0, gamma_b=5.0)
+    chain = paper_chain("dual-spring", gamma_c=2.0, gamma_b=5.0)
     sim = simulate(chain, 2e-3, drop_height=DROP)
     energy = sim.energy()
     impact = energy.kinetic[0]
@@ -111,9 +112,9 @@ def test_recorded_forces_of_a_damped_run_obey_newtons_law(model, dashpots):
     of the net force on each site equals the change of its momentum."""
     from scipy.integrate import cumulative_trapezoid
 
-    chain = Chain.from_paper(model, **dashpots)
+    chain = paper_chain(model, **dashpots)
     sim = simulate(chain, 1e-3, drop_height=DROP, n_samples=4001, rtol=1e-11)
-    lat = chain.lattice
+    lat = chain.network()
     f = sim.bond_force
     below = np.pad(f, ((0, 0), (1, 0)))[:, : lat.n_sites]  # bond k-1 pulls site k down (none below site 0)
     above = f[:, : lat.n_sites]  # bond k pulls it up (the last one: the support)
@@ -124,7 +125,7 @@ def test_recorded_forces_of_a_damped_run_obey_newtons_law(model, dashpots):
     # A dashpot read with the wrong sign is off by 2.5-6%.
     assert np.abs(impulse - momentum).max() < 1e-3 * np.abs(lat.mass * sim.u).max()
     # The sensors read the same bonds: the ring's bending bond, or the mean of the two contacts.
-    expected = f[:, chain.bending_bonds] if model == "dual-spring" else 0.5 * (below + above)
+    expected = f[:, chain.bending_links] if model == "dual-spring" else 0.5 * (below + above)
     np.testing.assert_array_equal(sim.sensor_force, expected)
 
 
@@ -217,7 +218,7 @@ def test_simulate_validates(kwargs, error, message):
 
 def test_verlet_refuses_dashpots():
     with pytest.raises(ValueError, match="undamped"):
-        simulate(Chain.from_paper("power-law", gamma=1.0), 1e-3, drop_height=0.01, method="verlet")
+        simulate(paper_chain("power-law", gamma=1.0), 1e-3, drop_height=0.01, method="verlet")
 
 
 @pytest.mark.parametrize(
@@ -247,7 +248,7 @@ def test_sensor_readings_need_rings_in_order_and_a_pulse(reference):
 @pytest.mark.parametrize("model", ["power-law", "dual-spring"])
 @pytest.mark.parametrize("method", ["odeint", "verlet"])
 def test_recording_the_sensor_rings_only_keeps_their_readings(model, method):
-    chain = Chain.from_paper(model)
+    chain = paper_chain(model)
     full = simulate(chain, 1.5e-3, drop_height=DROP, method=method, n_samples=1501)
     kept = simulate(chain, 1.5e-3, drop_height=DROP, method=method, n_samples=1501, rings=SENSORS)
     assert kept.x.shape == (1501, {"power-law": 6, "dual-spring": 4}[model])  # rings 5-7, 11-13 or their halves
@@ -302,7 +303,7 @@ def test_a_run_of_hours_is_refused_before_it_starts():
 )
 def test_integrator_settings_are_validated(options, message):
     with pytest.raises(ValueError, match=message):
-        simulate(Chain.from_paper("power-law"), 2e-3, drop_height=DROP, **options)
+        simulate(paper_chain("power-law"), 2e-3, drop_height=DROP, **options)
 
 
 def test_the_stability_limit_is_that_of_verlet_on_a_linear_chain():
@@ -327,7 +328,7 @@ def test_the_stability_limit_is_that_of_verlet_on_a_linear_chain():
 )
 def test_energy_drift_stops_an_inaccurate_run(options, drift):
     with pytest.raises(IntegrationError, match=f"total energy drifted by {drift}"):
-        simulate(Chain.from_paper("power-law"), 2e-3, drop_height=DROP, **options)
+        simulate(paper_chain("power-law"), 2e-3, drop_height=DROP, **options)
 
 
 def test_tolerances_at_the_edge_of_the_range(reference):
@@ -346,9 +347,9 @@ def test_an_integrator_failure_is_a_value_error_with_its_reason(monkeypatch):
     # atol 1e-30 of the scales asks LSODA for more steps than it may take: this was a
     # RuntimeError "odeint failed" (and an ODEintWarning).  The budget is cut from 1e6 to 1e4
     # steps per sample so that the failure comes in a fraction of a second, not 20 s.
-    from ringchain.numerics import solve
+    from ringchain.numerics import integrate
 
-    monkeypatch.setattr(solve, "_MAX_STEPS_PER_SAMPLE", 10_000)
+    monkeypatch.setattr(integrate, "_MAX_STEPS_PER_SAMPLE", 10_000)
     chain = Chain.power_law(5, K=1e6, n=1.5, m=0.01, a=0.04)
     with pytest.raises(IntegrationError, match=r"Excess work done .* try method='verlet'"):
         simulate(chain, 1e-3, impact_velocity=1.0, atol=1e-30)
@@ -356,7 +357,7 @@ def test_an_integrator_failure_is_a_value_error_with_its_reason(monkeypatch):
 
 def test_default_runs_stay_far_below_the_drift_bound():
     for method in ("odeint", "verlet"):
-        sim = simulate(Chain.from_paper("dual-spring"), 2e-3, drop_height=DROP, method=method)
+        sim = simulate(paper_chain("dual-spring"), 2e-3, drop_height=DROP, method=method)
         energy = sim.energy()
         # Verlet's shadow energy at 60 steps per period: 1e-4 (test above); LSODA 1e-8.
         assert np.abs(energy.total - energy.total[0]).max() / energy.kinetic[0] < ENERGY_DRIFT_LIMIT / 10

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from ringchain.numerics import Chain, Lattice, linear_spring_force, power_law_force
+from ringchain.numerics import ANCHOR, Chain, Network, laws, linear_spring_force, power_law_force
 
 G = 9.81
 
@@ -115,7 +115,7 @@ def test_power_law_lattice_is_the_papers_equation(support, gamma):
     u = rng.normal(0, 0.5, 7)
     expected = paper_power_law(x, u, 2e6, 1.2, gamma, 0.01, 0.03, support == "fixed")
     # Same arithmetic in a different order: rounding only.
-    np.testing.assert_allclose(chain.lattice.accelerations(x, u, g=G), expected, rtol=1e-11, atol=1e-9)
+    np.testing.assert_allclose(chain.network().accelerations(x, u, g=G), expected, rtol=1e-11, atol=1e-9)
 
 
 @pytest.mark.parametrize("support", ["fixed", "free"])
@@ -127,7 +127,7 @@ def test_dual_spring_lattice_is_the_papers_equation(support, gammas):
     x = rng.normal(0, 1e-6, 2 * N)
     u = rng.normal(0, 0.5, 2 * N)
     expected = paper_dual_spring(x, u, K_c, K_b, *gammas, m, m_g, support == "fixed")
-    np.testing.assert_allclose(chain.lattice.accelerations(x, u, g=G), expected, rtol=1e-11, atol=1e-6)
+    np.testing.assert_allclose(chain.network().accelerations(x, u, g=G), expected, rtol=1e-11, atol=1e-6)
 
 
 @pytest.mark.parametrize(
@@ -144,7 +144,7 @@ def test_dual_spring_lattice_is_the_papers_equation(support, gammas):
 )
 def test_batched_accelerations_equal_one_by_one(chain):
     rng = np.random.default_rng(3)
-    lat = chain.lattice
+    lat = chain.network()
     x = rng.normal(0, 1e-6, (4, lat.n_sites))
     u = rng.normal(0, 0.3, (4, lat.n_sites))
     batch = lat.accelerations(x, u)
@@ -155,7 +155,7 @@ def test_batched_accelerations_equal_one_by_one(chain):
 def test_internal_forces_cancel_in_a_free_chain():
     # Newton's third law: without gravity and support, sum of m a vanishes.
     rng = np.random.default_rng(4)
-    lat = Chain.dual_spring(8, 7.5e9, 3.3e6, 0.008, 0.04, 0.3, 0.9, support="free").lattice
+    lat = Chain.dual_spring(8, 7.5e9, 3.3e6, 0.008, 0.04, 0.3, 0.9, support="free").network()
     x, u = rng.normal(0, 1e-6, 16), rng.normal(0, 0.3, 16)
     ma = lat.mass * lat.accelerations(x, u, g=0.0)
     assert abs(ma.sum()) <= 1e-12 * np.abs(ma).max()  # cancellation to rounding
@@ -165,12 +165,40 @@ def test_internal_forces_cancel_in_a_free_chain():
 @given(seed=st.integers(0, 2**32 - 1))
 def test_dashpots_only_take_energy_out(seed):
     rng = np.random.default_rng(seed)
-    lat = Chain.dual_spring(6, 7.5e9, 3.3e6, 0.008, 0.04, gamma_c=rng.uniform(0, 5), gamma_b=rng.uniform(0, 5)).lattice
-    e = rng.normal(0, 1e-6, (10, lat.n_bonds))
-    e_rate = rng.normal(0, 1.0, (10, lat.n_bonds))
+    lat = Chain.dual_spring(
+        6, 7.5e9, 3.3e6, 0.008, 0.04, gamma_c=rng.uniform(0, 5), gamma_b=rng.uniform(0, 5)
+    ).network()
+    e = rng.normal(0, 1e-6, (10, lat.n_links))
+    e_rate = rng.normal(0, 1.0, (10, lat.n_links))
     assert np.all(lat.dissipation_rate(e, e_rate) >= 0.0)
 
 
-def test_lattice_validates_bond_count():
-    with pytest.raises(ValueError, match="need 2 or 3 bonds"):
-        Lattice(np.ones(3), np.ones(3), np.ones(5), 1.5, np.zeros(5), np.zeros(5), np.zeros(5))
+@pytest.mark.parametrize(
+    ("links", "message"),
+    [
+        ([(0, 3, laws.Hertz(1.0))], "link site j out of range: sites are 0..2"),
+        ([(1, 1, laws.Hertz(1.0))], "a link joins two different sites"),
+        ([(0, 1, "hertz")], "law must be a ringchain.numerics.laws.Law, got str"),
+        ([], "a network needs at least one link"),
+    ],
+)
+def test_network_validates_its_links(links, message):
+    with pytest.raises((ValueError, TypeError), match=message):
+        Network(np.ones(3), links)
+
+
+def test_a_network_built_link_by_link_is_the_chains():
+    # Three rings of the dual-spring chain hanging from the support: site by site, link by link.
+    m, m_g, K_c, K_b = 0.008, 0.022, 7.5e9, 3.3e6
+    hertz, spring = laws.Hertz(K_c), laws.LinearSpring(K_b)
+    by_hand = Network(
+        [m / 2] * 6,
+        [(0, 1, spring), (1, 2, hertz), (2, 3, spring), (3, 4, hertz), (4, 5, spring), (5, ANCHOR, hertz)],
+        weight_mass=[m_g / 2] * 6,
+    )
+    chain = Chain.dual_spring(3, K_c, K_b, m, 0.04, m_gravity=m_g).network()
+    rng = np.random.default_rng(5)
+    x, u = rng.normal(0, 1e-6, 6), rng.normal(0, 0.3, 6)
+    # The same laws on the same links: the same forces, whatever the grouping (exact).
+    np.testing.assert_array_equal(by_hand.forces(by_hand.extension(x)), chain.forces(chain.extension(x)))
+    np.testing.assert_allclose(by_hand.accelerations(x, u, G), chain.accelerations(x, u, G), rtol=1e-14)

@@ -1,0 +1,241 @@
+r"""The paper's measurement on any chain: a drop or an impact on ring 0, read by two embedded sensors.
+
+:func:`run_experiment` runs what the paper's experiment does (Sec. III.A) on a
+:class:`~ringchain.numerics.Chain`: ring 0 struck (dropped from a height, or hit at a speed),
+the sensor forces of two rings recorded, and the leading pulse read at each -- peak force,
+arrival time, the time of flight between them and the wave speed -- beside the compact
+wave's speed of Eq. (8) at the near sensor's peak force.  ``ringchain simulate`` is this job
+(it writes the traces with :func:`~ringchain.numerics.write_traces`);
+:func:`~ringchain.numerics.paper_experiment` is it on the paper's own chain.
+
+:func:`default_t_end` gives the duration that lets the pulse pass the far sensor.
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass, field
+
+import numpy as np
+from ringchain.theory import STANDARD_GRAVITY, paper_data
+from ringchain.theory import _validate as v
+
+from .chain import Chain, sensor_pair
+from .integrate import simulate
+from .plots import plot_sensor_traces
+from .results import Simulation
+from .traces import write_traces
+
+__all__ = ["Experiment", "run_experiment", "default_t_end"]
+
+
+def default_t_end(chain: Chain, speeds, sensors) -> float:
+    """Duration that lets the leading pulse pass the far sensor, s.
+
+    The time the long-wave solitary wave of the chain's power law (Eq. (8)) needs to
+    carry its front 1.5 times the distance to ring ``sensors[1]`` plus half a wave width
+    (:func:`ringchain.theory.solitary_wave_width`), at a force estimate below the actual
+    peak (so the estimated speed is low and the duration long): a quarter of the peak
+    force of a two-ring collision at the smallest impact speed, and at least the weight
+    of one ring (the gravity prestress keeps weak waves fast).  For the dual-spring
+    chain the power law is the one fitted to its contact and bending springs in series
+    (Eq. 4).  :func:`run_points` doubles the duration if a pulse is still passing the far
+    sensor at the end.
+
+    The half width is capped at the chain's length: as n -> 1 the long-wave width grows
+    without bound (~ a/(n - 1)), but no pulse wider than the chain passes the sensor before
+    its reflection from the support comes back, and the capped duration stays finite
+    (without the cap, 79 s of simulated time at R/r = 100, 2.5e3 s at R/r = 200).
+    """
+    from ringchain.theory import fit_power_law, solitary_wave_speed, solitary_wave_width
+
+    if not isinstance(chain, Chain):
+        raise TypeError(f"chain must be a Chain, got {type(chain).__name__}")
+    speeds = np.atleast_1d(v.positive("speeds", speeds, "m/s"))
+    if speeds.size == 0:
+        raise ValueError("speeds must hold at least one impact speed (m/s)")
+    far = sensor_pair(sensors, chain.n_rings)[1]
+    if not chain.uniform:
+        return _varying_t_end(chain, speeds, far)
+    if chain.model == "dual-spring":
+        K, n = (float(x) for x in fit_power_law(chain.K_c, chain.K_b))
+    else:
+        K, n = chain.K, chain.n
+    speed = float(np.min(speeds))
+    # Two rings of mass m colliding at relative speed v store m v^2/4 at the peak of K delta^n.
+    delta = ((n + 1.0) * 0.25 * chain.m * speed**2 / K) ** (1.0 / (n + 1.0))
+    force = max(0.25 * K * delta**n, chain.m_gravity * STANDARD_GRAVITY)
+    V = float(solitary_wave_speed(force, K, n, chain.a, chain.m))
+    width = min(float(solitary_wave_width(n, chain.a)), chain.n_rings * chain.a)
+    return (1.5 * far * chain.a + 0.5 * width) / V
+
+
+def _varying_t_end(chain: Chain, speeds, far: int) -> float:
+    """:func:`default_t_end` of a chain that changes along its length: the same estimate contact by
+    contact (each contact's power law, the heaviest ring), the pulse's time summed over the
+    contacts up to the far sensor."""
+    from ringchain.theory import fit_power_law, solitary_wave_speed, solitary_wave_width
+
+    pairs = slice(0, chain.n_rings - 1)
+    if chain.model == "dual-spring":
+        K, n = fit_power_law(chain.profile("K")[pairs], chain.profile("K_b")[: chain.n_rings - 1])
+    else:
+        K, n = chain.profile("K")[pairs], chain.profile("n")[pairs]
+    m, a, speed = float(np.max(chain.m)), chain.profile("a"), float(np.min(speeds))
+    delta = ((n + 1.0) * 0.25 * m * speed**2 / K) ** (1.0 / (n + 1.0))
+    force = np.maximum(0.25 * K * delta**n, float(np.min(chain.m_gravity)) * STANDARD_GRAVITY)
+    V = solitary_wave_speed(force, K, n, a, m)
+    width = min(float(np.max(solitary_wave_width(n, a))), float(np.sum(a)))
+    return float(1.5 * np.sum(a[:far] / V[:far]) + 0.5 * width / np.min(V))
+
+
+@dataclass(frozen=True, eq=False)
+class Experiment:
+    """A drop or an impact on a chain, read at two sensors (:func:`run_experiment`).
+
+    Attributes
+    ----------
+    chain : Chain
+    sensors : (int, int)
+        Near and far sensor rings, counted from the impact.
+    impact_velocity : float
+        m/s.
+    drop_height : float or None
+        m.
+    t_end : float
+        Duration, s.
+    simulation : Simulation
+        The run (the sensors' rings and the support recorded).
+
+    The readings are computed when asked for and raise a
+    :class:`~ringchain.numerics.signals.PulseError` when a sensor reads no complete pulse:
+    ``peak_forces`` (N, static tension included), ``arrival_times`` (s), ``time_of_flight``
+    (s), ``wave_speed`` (m/s), ``theory_speed`` (Eq. (8) at the near peak, m/s; None for a
+    chain that changes along its length), ``support_peak`` (N; None for a free end).
+    """
+
+    chain: Chain
+    sensors: tuple
+    impact_velocity: float
+    drop_height: float | None
+    t_end: float
+    simulation: Simulation = field(repr=False)
+
+    @functools.cached_property
+    def peak_forces(self) -> tuple:
+        return tuple(self.simulation.peak_force(k) for k in self.sensors)
+
+    @functools.cached_property
+    def arrival_times(self) -> tuple:
+        return tuple(self.simulation.arrival_time(k) for k in self.sensors)
+
+    @property
+    def time_of_flight(self) -> float:
+        return self.simulation.time_of_flight(*self.sensors)
+
+    @property
+    def wave_speed(self) -> float:
+        return self.simulation.wave_speed(*self.sensors)
+
+    @property
+    def theory_speed(self) -> float | None:
+        """V_s of Eq. (8) at the near sensor's peak force, with the chain's power law (or, for the dual-spring
+        chain, the one fitted to its springs, Eq. 4), m/s; None if the chain changes along its length."""
+        from ringchain.theory import fit_power_law, solitary_wave_speed
+
+        chain = self.chain
+        if not chain.uniform:
+            return None
+        K, n = (
+            (chain.K, chain.n)
+            if chain.model == "power-law"
+            else (float(x) for x in fit_power_law(chain.K_c, chain.K_b))
+        )
+        return float(solitary_wave_speed(self.peak_forces[0], K, n, chain.a, chain.m))
+
+    @property
+    def support_peak(self) -> float | None:
+        support = self.simulation.support_force
+        return None if support is None else float(np.max(support))
+
+    def summary(self, described: str) -> list[str]:
+        """What ``ringchain simulate`` prints: the chain (``described``), the impact, each sensor's peak and
+        arrival, the time of flight and speed beside Eq. (8), the support's largest force."""
+        chain = self.chain
+        near = self.sensors[0]
+        lines = [f"{chain.n_rings} rings{described}, {chain.model} model, impact at {self.impact_velocity:.4g} m/s, "
+                 f"{self.t_end * 1e3:.4g} ms"]  # fmt: skip
+        for k, force, time in zip(self.sensors, self.peak_forces, self.arrival_times, strict=True):
+            lines.append(f"  ring {k}: peak {force:.4g} N at {time * 1e3:.4g} ms")
+        theory = self.theory_speed
+        eq8 = "" if theory is None else f" (Eq. (8) at ring {near}'s peak: {theory:.4g} m/s)"
+        lines.append(f"  time of flight {self.time_of_flight * 1e3:.4g} ms, speed {self.wave_speed:.4g} m/s{eq8}")
+        if self.support_peak is not None:
+            lines.append(f"  support: largest force {self.support_peak:.4g} N")
+        return lines
+
+
+def run_experiment(chain: Chain, *, drop_height=None, impact_velocity=None, sensors=paper_data.SENSOR_RINGS,
+                   t_end=None, out=None, plot=None, **options) -> Experiment:  # fmt: skip
+    """Strike ring 0 of ``chain`` and read two sensors, as the paper's experiment does (Sec. III.A).
+
+    Parameters
+    ----------
+    chain : Chain
+        Hanging from a fixed support (gravity acts), or free (then ``gravity=False``).
+    drop_height : float, optional
+        Free-fall height of ring 0, m (the chain's drop protocol).
+    impact_velocity : float, optional
+        Speed of ring 0, m/s, instead of a drop.
+    sensors : (int, int), optional
+        Near and far sensor rings (default the paper's 6 and 12).
+    t_end : float, optional
+        Duration, s; default :func:`default_t_end`.
+    out : str or path, optional
+        Write the sensor traces there (:func:`~ringchain.numerics.write_traces`), before any reading.
+    plot : str or path, optional
+        Plot them there (the extension sets the format).
+    **options
+        Passed to :func:`~ringchain.numerics.simulate` (``method``, ``n_samples``, ``rtol``,
+        ``gravity``...).  Only the sensors' rings and the top ring (the support's force) are
+        recorded unless ``rings`` says otherwise (None: every ring).
+
+    Returns
+    -------
+    Experiment
+
+    Examples
+    --------
+    >>> from ringchain.theory import Ring
+    >>> chain = Chain.from_ring(Ring.from_aspect_ratio(9.0), 8, "power-law")
+    >>> run = run_experiment(chain, drop_height=0.05, sensors=(2, 5))
+    >>> 0.0 < run.time_of_flight < 1e-3, run.support_peak > run.peak_forces[1] > 0.0  # s, N
+    (True, True)
+    """
+    if not isinstance(chain, Chain):
+        raise TypeError(f"chain must be a Chain, got {type(chain).__name__}")
+    sensors = sensor_pair(sensors, chain.n_rings)
+    if (drop_height is None) == (impact_velocity is None):
+        raise ValueError("give a drop height or an impact velocity, one of the two")
+    value, unit = (drop_height, "m") if drop_height is not None else (impact_velocity, "m/s")
+    value = float(v.positive("drop_height" if drop_height is not None else "impact_velocity", value, unit))
+    impact = {"drop_height": value} if drop_height is not None else {"impact_velocity": value}
+    g = options.get("g", STANDARD_GRAVITY)
+    speed = float(impact_speed_of(impact, g))
+    if t_end is None:
+        t_end = default_t_end(chain, [speed], sensors)
+    rings = options.pop("rings", [*sensors, chain.n_rings - 1])
+    sim = simulate(chain, t_end, rings=rings, **impact, **options)
+    if out is not None:
+        write_traces(out, sim, sensors)
+    if plot is not None:
+        plot_sensor_traces(plot, sim, sensors, f"{chain.model}, {chain.n_rings} rings, impact {speed:.3g} m/s")
+    return Experiment(chain=chain, sensors=sensors, impact_velocity=speed, drop_height=impact.get("drop_height"),
+                      t_end=float(t_end), simulation=sim)  # fmt: skip
+
+
+def impact_speed_of(impact: dict, g: float) -> float:
+    """The speed of ring 0 for ``{"drop_height": h}`` (sqrt(2 g h)) or ``{"impact_velocity": v}``, m/s."""
+    from ringchain.theory import impact_speed
+
+    return float(impact_speed(impact["drop_height"], g)) if "drop_height" in impact else impact["impact_velocity"]
