@@ -40,6 +40,13 @@ Rings that bend (beyond the paper; module :mod:`.curved_beam`):
   a thick curved beam, and the classical thin-ring ones (Hoppe in plane, Michell out of plane);
   the exact curved elements of :class:`ringchain.numerics.RingModel` come from the same module.
 
+Sheets of interlinked rings (beyond the paper, its Sec. V outlook; module :mod:`.sheet`):
+
+- :func:`sheet_dispersion` -- the in-plane branches of a pretensioned square (4-in-1) or triangular
+  (6-in-1) sheet, from the network's energy to second order (axial stiffness k, geometric stiffness T/a);
+- :func:`sheet_sound_speeds`, :class:`SheetSpeeds` -- its long-wave longitudinal and transverse speeds
+  against the direction (anisotropic for the square sheet, isotropic for the triangular one).
+
 The paper's reported numbers (Tables I-II, FE exponents) are data in :mod:`.paper_data`.
 """
 
@@ -83,6 +90,7 @@ from .series import (
     series_stiffness_for_power_law,
     si_to_n_per_mm,
 )
+from .sheet import SheetSpeeds, sheet_dispersion, sheet_sound_speeds
 from .solitary import (
     solitary_wave_profile,
     solitary_wave_speed,
@@ -140,4 +148,7 @@ __all__ = [
     "curved_beam",
     "ring_frequencies",
     "inextensional_frequency",
+    "sheet_dispersion",
+    "sheet_sound_speeds",
+    "SheetSpeeds",
 ]

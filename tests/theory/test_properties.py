@@ -583,7 +583,51 @@ YIELD_COVERED: set = set()
 # --- issue 21: sheets of interlinked rings ----------------------------------------------------------------
 # Kept in one block so that it merges beside the other additions to this file.
 
-SHEET_COVERED: set = set()
+SHEET_COVERED = {"sheet_dispersion", "sheet_sound_speeds", "SheetSpeeds"}
+
+SHEET_PATTERNS = st.sampled_from(["square", "triangular"])
+
+
+def _sheet_per_family(pattern, values, per_family):
+    """One value for every family, or a tuple of one per family (2 for the square sheet, 3 for the triangular)."""
+    return tuple(values[: 2 if pattern == "square" else 3]) if per_family else values[0]
+
+
+@SETTINGS
+@given(
+    SHEET_PATTERNS,
+    st.booleans(),
+    ANY,
+    ANY,
+    st.lists(ANY, min_size=3, max_size=3),
+    st.lists(ANY, min_size=3, max_size=3),
+)
+def test_sheet_any_input(pattern, per_family, q, m, ks, Ts):
+    k, T = _sheet_per_family(pattern, ks, per_family), _sheet_per_family(pattern, Ts, per_family)
+    a = _sheet_per_family("square", [m, q], per_family) if pattern == "square" else m
+    finite_or_refused(lambda: theory.sheet_dispersion(q, m, pattern=pattern, k=k, T=T, m=m, a=a))
+    finite_or_refused(lambda: theory.sheet_sound_speeds(q, pattern=pattern, k=k, T=T, m=m, a=a))
+
+
+@SETTINGS
+@given(
+    pattern=SHEET_PATTERNS,
+    per_family=st.booleans(),
+    fractions=st.tuples(st.floats(-1.0, 1.0), st.floats(-1.0, 1.0)),
+    angle=st.floats(-10.0, 10.0),
+    ks=st.lists(st.one_of(st.just(0.0), log_uniform(1e-6, 1e12)), min_size=3, max_size=3),
+    Ts=st.lists(st.one_of(st.just(0.0), log_uniform(1e-9, 1e6)), min_size=3, max_size=3),
+    m=log_uniform(1e-9, 1e3),
+    lengths=st.lists(log_uniform(1e-6, 1e2), min_size=2, max_size=2),
+)
+def test_sheet_admissible_range(pattern, per_family, fractions, angle, ks, Ts, m, lengths):
+    k, T = _sheet_per_family(pattern, ks, per_family), _sheet_per_family(pattern, Ts, per_family)
+    a = _sheet_per_family("square", lengths, per_family) if pattern == "square" else lengths[0]
+    qx, qy = (4 * np.pi * f / length for f, length in zip(fractions, lengths, strict=True))  # over two zones
+    omega = finite_or_refused(lambda: theory.sheet_dispersion(qx, qy, pattern=pattern, k=k, T=T, m=m, a=a))
+    assert omega is not None and omega.shape == (2,) and 0 <= omega[0] <= omega[1]
+    speeds = finite_or_refused(lambda: theory.sheet_sound_speeds(angle, pattern=pattern, k=k, T=T, m=m, a=a))
+    assert speeds is not None and speeds.longitudinal >= 0 and speeds.transverse >= 0
 
 
 # --- end of the issue 21 block ----------------------------------------------------------------------------
