@@ -34,6 +34,18 @@ Linear waves and what the pulse carries (beyond the paper; modules :mod:`.linear
 - :func:`impact_speed` -- sqrt(2 g h), the speed of a dropped ring when its slack is taken up;
 - :func:`impact_amplitude` -- the peak force launched by a striker at speed v0 (F_m ~ v0^(2n/(n+1))).
 
+Disorder: rings that differ from one another (beyond the paper; module :mod:`.disorder`):
+
+- :func:`effective_medium_speed`, :func:`harmonic_mean_speed` -- long linear waves: the homogenised
+  speed <a>/sqrt(<m><1/k>) and the harmonic mean of the local speeds, from per-ring arrays;
+- :func:`disordered_solitary_wave_speed`, :func:`disorder_speed_shift` -- the compact wave's mean speed
+  over a disordered chain, and both speeds' shift to second order in the spreads;
+- :func:`impedance_spread`, :func:`chain_impedance_spread` -- the spread of ln sqrt(m k) that scatters;
+- :func:`localization_length`, :func:`disorder_pulse_spread` -- linear waves: energy decay of a harmonic
+  wave, Gaussian spreading of a long pulse (O'Doherty-Anstey);
+- :func:`disorder_attenuation_length`, :func:`attenuated_travel_time` -- the compact wave's loss of
+  peak force, and the slowing that comes with it.
+
 Rings that bend (beyond the paper; module :mod:`.curved_beam`):
 
 - :func:`ring_frequencies`, :func:`inextensional_frequency` -- natural frequencies of a free ring as
@@ -62,6 +74,18 @@ from .contact import (
     torus_gap,
 )
 from .curved_beam import inextensional_frequency, ring_frequencies
+from .disorder import (  # issue 23: disorder
+    attenuated_travel_time,
+    chain_impedance_spread,
+    disorder_attenuation_length,
+    disorder_pulse_spread,
+    disorder_speed_shift,
+    disordered_solitary_wave_speed,
+    effective_medium_speed,
+    harmonic_mean_speed,
+    impedance_spread,
+    localization_length,
+)
 from .geometry import MIN_CHAIN_ASPECT_RATIO, PAPER_TUBE_RADIUS, Ring
 from .linear import (
     STANDARD_GRAVITY,
@@ -145,6 +169,17 @@ __all__ = [
     "solitary_wave_energy",
     "solitary_wave_momentum",
     "impact_amplitude",
+    # issue 23: disorder
+    "effective_medium_speed",
+    "harmonic_mean_speed",
+    "disordered_solitary_wave_speed",
+    "disorder_speed_shift",
+    "impedance_spread",
+    "chain_impedance_spread",
+    "localization_length",
+    "disorder_pulse_spread",
+    "disorder_attenuation_length",
+    "attenuated_travel_time",
     "curved_beam",
     "ring_frequencies",
     "inextensional_frequency",

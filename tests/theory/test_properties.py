@@ -636,7 +636,117 @@ def test_sheet_admissible_range(pattern, per_family, fractions, angle, ks, Ts, m
 # --- issue 23: disorder -----------------------------------------------------------------------------------
 # Kept in one block so that it merges beside the other additions to this file.
 
-DISORDER_COVERED: set = set()
+DISORDER_COVERED = {
+    "effective_medium_speed",
+    "harmonic_mean_speed",
+    "disordered_solitary_wave_speed",
+    "disorder_speed_shift",
+    "impedance_spread",
+    "chain_impedance_spread",
+    "localization_length",
+    "disorder_pulse_spread",
+    "disorder_attenuation_length",
+    "attenuated_travel_time",
+}
+
+
+def finite_infinite_or_refused(call):
+    """As finite_or_refused, but +inf is an answer too (a length without disorder is infinite)."""
+    try:
+        result = call()
+    except ValueError as error:
+        assert str(error)
+        return None
+    values = np.asarray(result, dtype=float)
+    assert not np.any(np.isnan(values)) and not np.any(values == -np.inf), result
+    return result
+
+
+CHAIN = st.lists(ANY, min_size=1, max_size=4)
+SPREAD = st.one_of(st.just(0.0), log_uniform(1e-6, 10.0))
+
+
+@SETTINGS
+@given(CHAIN, CHAIN, CHAIN, ANY, ANY, ANY)
+def test_disorder_speeds_any_input(a, m, k, F, n, correlation):
+    for estimate in ("effective-medium", "harmonic-mean"):
+        finite_or_refused(lambda e=estimate: theory.disordered_solitary_wave_speed(F, k, n, a, m, estimate=e))
+        finite_or_refused(lambda e=estimate: theory.disorder_speed_shift(n, F, correlation, correlation, estimate=e))
+    finite_or_refused(lambda: theory.effective_medium_speed(a, m, k))
+    finite_or_refused(lambda: theory.harmonic_mean_speed(a, m, k))
+    finite_or_refused(lambda: theory.impedance_spread(n, F, correlation, correlation))
+    finite_or_refused(lambda: theory.chain_impedance_spread(m, k, n, lags=0))
+
+
+@SETTINGS
+@given(ANY, ANY, ANY, ANY, ANY, ANY, ANY)
+def test_disorder_lengths_any_input(omega, m, k, a, s1, s2, correlation):
+    finite_infinite_or_refused(lambda: theory.localization_length(omega, m, k, a, s1, s2, correlation))
+    finite_or_refused(lambda: theory.disorder_pulse_spread(omega, a, s1))
+    finite_infinite_or_refused(lambda: theory.disorder_attenuation_length(m, a, s1))
+    finite_or_refused(lambda: theory.attenuated_travel_time(omega, k, m, s2))
+
+
+@SETTINGS
+@given(
+    a=st.lists(log_uniform(1e-30, 1e30), min_size=1, max_size=5),
+    m=st.lists(log_uniform(1e-30, 1e30), min_size=5, max_size=5),
+    k=st.lists(log_uniform(1e-30, 1e30), min_size=5, max_size=5),
+    F=log_uniform(1e-20, 1e20),
+    n=st.floats(1.0, 3.0, exclude_min=True),
+)
+def test_disorder_speeds_admissible_range(a, m, k, F, n):
+    medium = finite_or_refused(lambda: theory.effective_medium_speed(a, m, k))
+    harmonic = finite_or_refused(lambda: theory.harmonic_mean_speed(a, m, k))
+    assert medium is not None and harmonic is not None
+    assert 0 < medium <= harmonic * (1 + 1e-12)  # Cauchy-Schwarz, up to rounding
+    speeds = [
+        finite_or_refused(lambda e=e: theory.disordered_solitary_wave_speed(F, k, n, a, m, estimate=e))
+        for e in ("effective-medium", "harmonic-mean")
+    ]
+    assert speeds[0] is not None and speeds[1] is not None
+    assert 0 < speeds[0] <= speeds[1] * (1 + 1e-12)
+    spread = finite_or_refused(lambda: theory.chain_impedance_spread(m, k, n, lags=1))
+    assert spread is not None and spread >= 0
+
+
+@SETTINGS
+@given(n=log_uniform(1e-3, 1e3), sigma_K=SPREAD, sigma_m=SPREAD, correlation=st.floats(-1.0, 1.0))
+def test_disorder_shifts_admissible_range(n, sigma_K, sigma_m, correlation):
+    medium = theory.disorder_speed_shift(n, sigma_K, sigma_m, correlation, estimate="effective-medium")
+    harmonic = theory.disorder_speed_shift(n, sigma_K, sigma_m, correlation, estimate="harmonic-mean")
+    spread = theory.impedance_spread(n, sigma_K, sigma_m, correlation)
+    assert np.isfinite(medium) and medium <= 0 and np.isfinite(harmonic) and spread >= 0
+    # The two estimates differ by sigma_Z^2/2 (a sum of non-negative terms: rounding relative to the largest).
+    scale = sigma_m**2 + (sigma_K / n) ** 2
+    assert harmonic - medium == pytest.approx(spread**2 / 2, abs=1e-12 * scale + 1e-300)
+
+
+@SETTINGS
+@given(
+    fraction=st.floats(1e-6, 1.0, exclude_max=True),
+    m=log_uniform(1e-20, 1e20),
+    k=log_uniform(1e-20, 1e20),
+    a=log_uniform(1e-20, 1e20),
+    s1=SPREAD,
+    s2=SPREAD,
+    correlation=st.floats(-1.0, 1.0),
+    n=st.floats(1.0, 5.0, exclude_min=True, exclude_max=True),
+    distance=st.one_of(st.just(0.0), log_uniform(1e-20, 1e20)),
+    over=st.floats(0.0, 100.0),
+)
+def test_disorder_lengths_admissible_range(fraction, m, k, a, s1, s2, correlation, n, distance, over):
+    omega = fraction * 2 * np.sqrt(k / m)
+    ell = finite_infinite_or_refused(lambda: theory.localization_length(omega, m, k, a, s1, s2, correlation))
+    assert ell is not None and ell > 0
+    spread = finite_or_refused(lambda: theory.disorder_pulse_spread(distance, a, s1))
+    assert spread is not None and spread >= 0
+    length = finite_infinite_or_refused(lambda: theory.disorder_attenuation_length(n, a, s1))
+    assert length is not None and length > 0
+    # Up to 100 decay lengths: exp(100 (n-1)/(2n)) stays far inside double precision.
+    decay = distance / over if over > 0 and distance > 0 else np.inf
+    time = finite_or_refused(lambda: theory.attenuated_travel_time(distance, 1.0, n, decay))
+    assert time is not None and time >= distance * (1 - 1e-12)  # the wave slows: never faster than V0
 
 
 # --- end of the issue 23 block ----------------------------------------------------------------------------
