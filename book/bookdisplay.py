@@ -7,17 +7,32 @@ They only format what the package returns. The pages type their equations for th
 lines. A table is Markdown built from numbers the page computed.
 
 The book's conventions live here too, defined once: the colour of each quantity in every figure
-(:data:`COLOURS`) and the drop heights of the experiment (:data:`DROP_HEIGHTS`).
+(:data:`COLOURS`), the drop heights of the experiment (:data:`DROP_HEIGHTS`), and how a caption names the chain
+it shows, its stiffness source and its striker (:func:`chain_note`, :data:`STRIKER`).
 """
 
 from __future__ import annotations
 
 import random
+import re
 
 import sympy as sp
 from IPython.display import Markdown, Math, display
 
-__all__ = ["COLOURS", "DROP_HEIGHTS", "HIGH_DROP", "LOW_DROP", "compact", "grouped", "show", "table", "textbook"]
+__all__ = [
+    "COLOURS",
+    "DROP_HEIGHTS",
+    "HIGH_DROP",
+    "LOW_DROP",
+    "STRIKER",
+    "chain_note",
+    "compact",
+    "grouped",
+    "show",
+    "stiffness_words",
+    "table",
+    "textbook",
+]
 
 #: One colour per quantity across the book (Matplotlib colours).  Sensors and models keep theirs in every
 #: chapter; the paper's own numbers are always black markers.
@@ -49,6 +64,35 @@ COLOURS = {
 #: stand for the low- and high-amplitude experiments of the paper's Fig. 1 d and e.
 DROP_HEIGHTS = (2e-3, 10e-3, 50e-3, 0.2, 0.5)
 LOW_DROP, HIGH_DROP = 2e-3, 50e-3
+
+#: How every lattice of the book is struck, in the words of its captions: the dropped ring is ring 0 of the
+#: chain, with the inertial mass m_eff of every lattice ring (the paper's convention, Sec. III.B).
+# striker_mass (issue 25, item 1): once the chain constructors take ``striker_mass``, describe each chain's
+# striker from that field here, so that every caption built with chain_note() follows it.
+STRIKER = (
+    "striker: the dropped ring, of inertial mass $m_{\\mathrm{eff}}$ like every lattice ring (the paper's convention)"
+)
+
+
+def stiffness_words(model: str, stiffness: str, aspect_ratio: float = 9.0) -> str:
+    """Where ``Chain.from_paper(model, stiffness=...)`` takes its stiffness from, as Markdown for a caption.
+
+    The words are the package's (:func:`ringchain.numerics.paper.stiffness_note`), with the symbols set as math.
+    """
+    from ringchain.numerics.paper import stiffness_note
+
+    note = stiffness_note(model, stiffness, aspect_ratio).replace("N/mm^n", "N/mm@UNITS@")
+    note = re.sub(r"\b(K_c|K_b|K|n)\b", r"$\1$", note)
+    return note.replace("@UNITS@", "$^n$")
+
+
+def chain_note(model: str, stiffness: str, aspect_ratio: float = 9.0, *, striker: bool = True) -> str:
+    """The chain of ``Chain.from_paper(model, stiffness=...)`` in words: model, stiffness source and striker.
+
+    ``striker=False`` leaves the striker out (a caption naming several chains adds :data:`STRIKER` once).
+    """
+    words = f"{model} chain, stiffness: {stiffness_words(model, stiffness, aspect_ratio)}"
+    return f"{words}; {STRIKER}" if striker else words
 
 
 def textbook(label: str, typed, derived, *, samples: int = 6) -> None:
