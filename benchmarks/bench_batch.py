@@ -1,6 +1,6 @@
 """256 drop heights integrated as one batch against 256 separate runs.
 
-The paper's 20-ring chain (:meth:`Chain.from_paper`, R/r = 9, hanging under gravity)
+The paper's 20-ring chain (:func:`~ringchain.numerics.paper_chain`, R/r = 9, hanging under gravity)
 is dropped from 256 heights between 5 mm and 0.5 m, for each lattice model:
 
 - "batch": one :func:`~ringchain.numerics.simulate_batch` call, the 256 runs stacked
@@ -30,7 +30,7 @@ import os
 import time
 
 import numpy as np
-from ringchain.numerics import Chain, simulate, simulate_batch
+from ringchain.numerics import paper_chain, simulate, simulate_batch
 
 HEIGHTS = np.linspace(5e-3, 0.5, 256)  # m
 T_END = 2e-3  # s: the leading pulse passes ring 12 within about 1.2 ms
@@ -63,7 +63,7 @@ def main():
           f"best of {args.repeat}; load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")  # fmt: skip
     print(f"{'model':>12} {'batch (s)':>10} {'separate (s)':>13} {'ratio':>7} {'max rel. diff of peaks':>23}")
     for model in args.models:
-        chain = Chain.from_paper(model)
+        chain = paper_chain(model)
         options = {"n_samples": args.samples, "method": args.method}
         if args.method == "verlet":
             # One step for both sides (by default each call picks its own from its fastest impact).

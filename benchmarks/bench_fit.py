@@ -1,6 +1,6 @@
 """Trace fits: the time of a fit, its forward runs, and the batched Jacobian against one run at a time.
 
-The measurement is synthetic: the paper's 20-ring chain (:meth:`Chain.from_paper`, R/r = 9,
+The measurement is synthetic: the paper's 20-ring chain (:func:`~ringchain.numerics.paper_chain`, R/r = 9,
 Table I) with a contact dashpot gamma = 3 N s/m, dropped from 20 mm, read by the sensors in
 rings 6 and 12 (1500 samples over 1.5 ms, 1 % noise, a trigger offset and DC offsets).
 
@@ -23,8 +23,8 @@ import os
 
 import numpy as np
 from bench_batch import best_of  # this folder is on sys.path when a script runs from it
-from ringchain.numerics import Chain, fit_traces, simulate
-from ringchain.numerics.fit import _records, _TraceProblem
+from ringchain.numerics import fit_traces, paper_chain, simulate
+from ringchain.numerics.fit_dynamic import _records, _TraceProblem
 
 DROP = 0.02  # m
 T0 = 4e-5  # s: the impact 40 us after the trigger
@@ -68,7 +68,7 @@ def main():
     parser.add_argument("--repeat", type=int, default=3, help="best of this many timings (default 3)")
     args = parser.parse_args()
 
-    truth = dataclasses.replace(Chain.from_paper(args.model), **GAMMA[args.model])
+    truth = dataclasses.replace(paper_chain(args.model), **GAMMA[args.model])
     traces = measurement(truth)
     start = dataclasses.replace(truth, m=1.3 * truth.m, gamma=0.6 * truth.gamma)
     free = ("m", "gamma", "t0")

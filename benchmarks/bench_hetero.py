@@ -2,7 +2,7 @@
 
 Three parts, each printing its numbers:
 
-1. ``stepper`` -- the inner loop of both integrators (``Lattice.stepper``: the accelerations of every
+1. ``stepper`` -- the inner loop of both integrators (``Network.stepper``: the accelerations of every
    site) on a uniform chain, on the same chain with parameters that vary along it (per-contact K
    and n, per-ring m, m_gravity and K_b), and on a uniform chain given as arrays that differ in the
    last bit (the array path with uniform numbers): microseconds per call and nanoseconds per
@@ -59,7 +59,7 @@ def varying_chain(model, n_rings, spread=0.5):
 
 def stepper_time(chain, batch, repeat):
     """Best wall time of one stepper call, s."""
-    lat = chain.lattice
+    lat = chain.network()
     shape = () if batch == 1 else (batch,)
     step = lat.stepper(shape, G)
     rng = np.random.default_rng(1)

@@ -26,8 +26,7 @@ import os
 import time
 
 import numpy as np
-from ringchain.numerics import Chain, initial_state, simulate
-from ringchain.numerics.models import STANDARD_GRAVITY
+from ringchain.numerics import STANDARD_GRAVITY, Chain, initial_state, paper_chain, simulate
 from scipy.integrate import odeint
 
 DROP = 0.05  # m
@@ -70,7 +69,7 @@ def paper_rhs(chain: Chain, g: float):
 def vectorised_rhs(chain: Chain, g: float):
     """ringchain's vectorised right-hand side on the recipe's state layout."""
     S = chain.n_sites
-    rhs = chain.lattice.first_order_rhs(1, g)  # state interleaved per site: x0, u0, x1, u1, ...
+    rhs = chain.network().first_order_rhs(1, g)  # state interleaved per site: x0, u0, x1, u1, ...
     interleave = np.arange(2 * S).reshape(2, S).T.ravel()  # positions in [x, u] of [x0, u0, x1, ...]
     blocks = np.argsort(interleave)
     return lambda y, t: rhs(t, y[interleave])[blocks]
@@ -84,7 +83,7 @@ def run_recipe(chain, rhs, y0, t):
 
 def sensor_forces(chain, x, u):
     """Sensor forces of rings 6 and 12 from site states, through ringchain's Simulation."""
-    from ringchain.numerics.solve import Simulation
+    from ringchain.numerics import Simulation
 
     sim = Simulation(chain=chain, t=np.arange(len(x)), x=x, u=u, dissipated=np.zeros(len(x)), g=0.0,
                      impact_velocity=0.0, drop_height=None)  # fmt: skip
@@ -115,7 +114,7 @@ def main(argv=None):
     parser.add_argument("--rings", type=int, default=20, help="chain length (the paper's: 20)")
     args = parser.parse_args(argv)
 
-    chain = Chain.from_paper("dual-spring", n_rings=args.rings)
+    chain = paper_chain("dual-spring", n_rings=args.rings)
     g = STANDARD_GRAVITY
     x0, u0 = initial_state(chain, drop_height=DROP)
     y0 = np.concatenate([x0[0], u0[0]])

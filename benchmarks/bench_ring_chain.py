@@ -37,7 +37,8 @@ from ringchain.numerics.effective_mass import (
     spectral_peaks,
     trailing_spectrum,
 )
-from ringchain.numerics.ring_beam import DEFAULT_MODES, RingChain, RingModel, simulate_rings
+from ringchain.numerics.ring_beam import DEFAULT_MODES, RingModel
+from ringchain.numerics.ring_chain import RingChain, simulate_rings
 from ringchain.theory import Ring, n_per_mm_to_si, paper_data
 
 T_END = 3e-3  # s

@@ -17,14 +17,14 @@ import argparse
 
 import numpy as np
 from bench_paper_recipe import best_time  # this folder is on sys.path when a script runs from it
-from ringchain.numerics import Chain, simulate
+from ringchain.numerics import Chain, paper_chain, simulate
 
 RINGS = (20, 100, 1000, 10_000)
 T_END = 2e-3  # s
 
 
 def chain(model: str, n_rings: int) -> Chain:
-    paper = Chain.from_paper(model)
+    paper = paper_chain(model)
     params = dict(n_rings=n_rings, m=paper.m, a=paper.a, m_gravity=paper.m_gravity)
     if model == "power-law":
         return Chain.power_law(K=paper.K, n=paper.n, **params)

@@ -75,7 +75,7 @@ STRIKER = (
 
 
 def stiffness_words(model: str, stiffness: str, aspect_ratio: float = 9.0) -> str:
-    """Where ``Chain.from_paper(model, stiffness=...)`` takes its stiffness from, as Markdown for a caption.
+    """Where ``paper_chain(model, stiffness=...)`` takes its stiffness from, as Markdown for a caption.
 
     The words are the package's (:func:`ringchain.numerics.paper.stiffness_note`), with the symbols set as math.
     """
@@ -87,7 +87,7 @@ def stiffness_words(model: str, stiffness: str, aspect_ratio: float = 9.0) -> st
 
 
 def chain_note(model: str, stiffness: str, aspect_ratio: float = 9.0, *, striker: bool = True) -> str:
-    """The chain of ``Chain.from_paper(model, stiffness=...)`` in words: model, stiffness source and striker.
+    """The chain of ``paper_chain(model, stiffness=...)`` in words: model, stiffness source and striker.
 
     ``striker=False`` leaves the striker out (a caption naming several chains adds :data:`STRIKER` once).
     """

@@ -1,33 +1,51 @@
-"""Lattice models of chains of interlocked rings, checked against :mod:`ringchain.theory`.
+"""Lattices of interlocked rings on one engine, checked against :mod:`ringchain.theory`.
 
-The numerical half of the paper (Sec. III.B): the chain integrated ring by ring.
+The numerical half of the paper (Sec. III.B) and what goes beyond it.  Every lattice is a
+:class:`Network` of sites and links, each link with a contact law (:mod:`.laws`), integrated by
+one engine (:mod:`.integrate`): a new capability is a new law or a new way to lay out sites.
 
-- :class:`Chain` -- the power-law chain (Eq. (7)) or the dual-spring chain
-  (Eqs. (5)-(6)), built from K, n, m, a or from a :class:`~ringchain.theory.Ring`,
-  hanging from a fixed support under gravity or free; beyond the paper, a chain that changes
-  along its length (per-ring and per-contact arrays; :meth:`Chain.from_rings`, :meth:`Chain.graded`,
-  :meth:`Chain.alternating`, :meth:`Chain.joined`; TOML descriptions in :mod:`.chain_file`);
-- :func:`simulate`, :func:`simulate_batch` -- an impact or a drop on ring 0, integrated
-  with :func:`scipy.integrate.solve_ivp` or fixed-step velocity Verlet; a batch of runs
-  is one vectorised array problem; ``initial=(x0, u0)`` starts from any other state;
-- :class:`Simulation` -- contact, sensor and support forces, energy budget, CSV;
-  :func:`estimate_run` -- memory and work of a run before it starts;
-- :mod:`~ringchain.numerics.signals` -- peak arrival, time of flight, wave speed, width,
-  the tail after the pulse and its spectrum;
-- :func:`contact_curve` -- numerical contact of two tori at any angle, one patch or two
-  (boundary elements on the exact gap, :mod:`~ringchain.numerics.contact_bem`);
-- :func:`paper_experiment` -- the paper's 20-ring drop experiment read at rings 6 and 12
-  (:mod:`~ringchain.numerics.paper`, with the paper's tables and figures);
-- :class:`RingModel`, :class:`RingChain`, :func:`simulate_rings` -- beyond the paper: each ring an
-  elastic curved beam (its modes, its diametral stiffness, a Craig-Bampton reduction) and the chain
-  of such rings joined by Hertz contacts; :func:`predict_effective_mass` fits the power-law lattice's
-  m_eff/m0 to it (modules :mod:`.ring_beam`, :mod:`.effective_mass`);
-- :func:`sweep` -- a parameter grid through any :class:`concurrent.futures.Executor`
-  (local processes, or a Dask cluster's ``client.get_executor()``), one row per point;
-  the module itself is ``importlib.import_module("ringchain.numerics.sweep")``;
-- :mod:`~ringchain.numerics.fit` -- from measurements to parameters: :func:`read_traces`,
-  :func:`read_static`, :func:`fit_static` (K and n, Eqs. 3-4), :func:`fit_speed_amplitude`
-  (m_eff/m0 through Eq. (8)), :func:`fit_traces` (m, dashpots, K, n from sensor traces).
+The floors, top to bottom (each module imports only the floors below it; no cycle, no
+underscore name reached across modules):
+
+1. the command line: ``cli``, ``fit_cli``, ``_cli_options`` -- parse, call one public function, print;
+2. jobs: ``paper``, ``experiment``, ``sweep``, ``fit``, ``fit_dynamic``, ``junction``,
+   ``effective_mass``, ``contact_bem`` -- the paper's tables and figures, a drop read at two
+   sensors, grids, inverse problems, the impedance experiment, the effective mass, the
+   numerical contact at any angle;
+3. layouts: ``chain``, ``chain_file``, ``ring_chain``, ``ring_beam`` -- a Chain builds a Network;
+   chain files; the ring-resolved chain (its own dynamics) and the ring as a curved beam;
+4. the engine: ``integrate``, ``results``, ``traces``, ``plots``, ``executors``, ``signals`` --
+   the integrator layer, result records, measurement files, figures, where sweeps run,
+   reading pulses;
+5. ``network``, ``laws`` -- sites and links; contact laws with one contract.
+
+What each module owns:
+
+- :mod:`.laws` -- :class:`~.laws.PowerLaw` (Eq. (4), the paper's gamma inside its bracket, Eq. (7)),
+  :func:`~.laws.Hertz` (Eq. (1)), :class:`~.laws.LinearSpring` (Eq. (2)), :class:`~.laws.Dashpot`: force,
+  stored energy, tangent stiffness, dissipated power from the extension and its rate;
+- :mod:`.network` -- :class:`Network`, :class:`Links`: sites (mass, weight, 1-3 components) and
+  links; the dynamics contract every integrator calls (stepper, first-order right-hand side and its
+  bandwidth, energies, tolerance scales, fastest frequency), with a fast path for chains;
+  :meth:`Network.stack` puts several networks of one layout into one batch;
+- :mod:`.integrate` -- :func:`simulate`, :func:`simulate_batch`, :func:`estimate_run`: the model
+  contract (``dynamics()``, ``impact_state``, ``recorded``, ``result``), the methods (odeint,
+  solve_ivp, Verlet), chunking, the energy watch, run estimates;
+- :mod:`.results` -- :class:`NetworkSimulation` (``link_force``), :class:`Simulation` (a chain's run:
+  ``contact_force``, ``sensor_force``, the sensor helpers), :class:`EnergyBudget`;
+- :mod:`.traces` -- :func:`write_traces` beside :func:`read_traces`, and the other measurement files;
+- :mod:`.chain` -- :class:`Chain`: the power-law (Eq. (7)) and dual-spring (Eqs. (5)-(6)) chains,
+  uniform or changing along their length, hanging or free; their drop protocol and striker;
+  ``Chain.network()``; :mod:`.chain_file` reads chains in TOML;
+- :mod:`.ring_beam`, :mod:`.ring_chain` -- :class:`RingModel`, :class:`ReducedRing` (a ring as an
+  elastic curved beam) and :class:`RingChain` (a chain of them), :func:`simulate_rings`;
+- :mod:`.experiment` -- :func:`~.experiment.run_experiment`: a drop read at two sensors (``ringchain
+  simulate``); :mod:`.paper` -- :func:`paper_chain`, :func:`paper_experiment`, the paper's tables
+  and figures (``ringchain paper``); :mod:`.sweep` -- :func:`sweep` over grids and chain files through
+  any executor; :mod:`.fit`, :mod:`.fit_dynamic` -- :func:`fit_static`, :func:`fit_speed_amplitude`,
+  :func:`fit_traces`; :mod:`.contact_bem` -- :func:`contact_curve`, :func:`angle_power_law`;
+  :mod:`.effective_mass` -- :func:`predict_effective_mass`; :mod:`.junction` -- the small pulse at a
+  junction; :mod:`.signals` -- peaks, arrivals, time of flight, widths, spectra.
 """
 
 from ringchain.theory import STANDARD_GRAVITY
@@ -55,7 +73,8 @@ from .laws import linear_spring_force, power_law_force
 from .network import ANCHOR, Links, Network
 from .paper import STIFFNESS_SOURCES, PaperExperiment, paper_chain, paper_experiment
 from .results import BatchSimulation, EnergyBudget, NetworkBatch, NetworkSimulation, Simulation
-from .ring_beam import ReducedRing, RingChain, RingModel, RingSimulation, simulate_rings
+from .ring_beam import ReducedRing, RingModel
+from .ring_chain import RingChain, RingSimulation, simulate_rings
 from .signals import NoPulseError, PulseError, TruncatedPulseError, UnresolvedPulseError
 from .sweep import Point, sweep, write_csv
 from .traces import DataError, read_speed_amplitude, read_static, read_traces, write_traces

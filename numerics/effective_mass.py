@@ -35,7 +35,8 @@ from . import signals
 from .chain import Chain
 from .integrate import simulate_batch
 from .results import Simulation
-from .ring_beam import DEFAULT_ELEMENTS, DEFAULT_MODES, RingChain, RingSimulation, simulate_rings
+from .ring_beam import DEFAULT_ELEMENTS, DEFAULT_MODES
+from .ring_chain import RingChain, RingSimulation, simulate_rings
 
 __all__ = [
     "DEFAULT_CUTOFF",
@@ -107,7 +108,7 @@ def arrival_times(sim: Simulation, sensors=paper_data.SENSOR_RINGS, cutoff=DEFAU
     """Arrival times (s) of the leading pulse at the ``sensors``: the peaks of the low-passed sensor traces.
 
     ``cutoff=None`` reads the raw traces.  Works on a lattice :class:`~ringchain.numerics.Simulation`
-    and on a :class:`~ringchain.numerics.ring_beam.RingSimulation` alike.
+    and on a :class:`~ringchain.numerics.RingSimulation` alike.
     """
     traces = np.array([sim.sensor(i) for i in sensors])
     if cutoff is not None:
@@ -351,7 +352,7 @@ def predict_effective_mass(
     per_height : bool, optional
         Also fit each height alone (shows whether m_eff depends on the amplitude).
     **options
-        Passed to :func:`~ringchain.numerics.ring_beam.simulate_rings`.
+        Passed to :func:`~ringchain.numerics.simulate_rings`.
 
     Returns
     -------

@@ -467,6 +467,14 @@ class Network:
             out[..., index] = law.force(e[..., index], None if rate is None else np.asarray(rate)[..., index])
         return out
 
+    def link_energy(self, e) -> np.ndarray:
+        """Energy stored in every link at extensions ``e``, J, shape (..., n_links)."""
+        e = np.asarray(e, dtype=float)
+        out = np.empty_like(e)
+        for law, index in self.groups:
+            out[..., index] = law.energy(e[..., index])
+        return out
+
     def stiffness(self, e) -> np.ndarray:
         """Tangent stiffness dF/d(delta) of every link at extensions ``e``, N/m, shape (..., n_links)."""
         e = np.asarray(e, dtype=float)
@@ -526,7 +534,7 @@ class Network:
     def stepper(self, batch_shape, g):
         """A function ``(x, u, out)`` writing the accelerations (m/s^2) of displacements ``x`` into ``out``.
 
-        ``x``, ``u``, ``out`` have shape (*batch_shape, n_coords); ``u`` is read only if the
+        ``x``, ``u``, ``out`` have shape ``(*batch_shape, n_coords)``; ``u`` is read only if the
         network is damped, and the function then returns the power each run's dashpots take
         out (W, shape batch_shape), else None.  Work arrays are made once: a call is a few
         NumPy operations on whole arrays (module notes).  One stepper must not be called from
@@ -717,7 +725,7 @@ class Network:
         if mass.ndim > 1:  # a stack: (B, n) against states (B, T, n)
             mass = mass[:, None, :]
         e, _, _ = self.geometry(x)
-        stored = {"contact": 0.0, "bending": 0.0}
+        stored = {"contact": np.zeros(e.shape[:-1]), "bending": np.zeros(e.shape[:-1])}
         for law, index in self.groups:
             part = law
             if len(law._shape()) > 1:

@@ -4,7 +4,8 @@ import numpy as np
 import pytest
 from ringchain.numerics import Chain, Simulation, simulate
 from ringchain.numerics.effective_mass import arrival_times
-from ringchain.numerics.ring_beam import ReducedRing, RingChain, RingModel, RingSimulation, simulate_rings
+from ringchain.numerics.ring_beam import ReducedRing, RingModel
+from ringchain.numerics.ring_chain import RingChain, RingSimulation, simulate_rings
 from ringchain.theory import Ring, bending_stiffness, ring_frequencies
 
 E, NU, RHO = 193e9, 0.29, 8000.0  # the package's stainless steel
