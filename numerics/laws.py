@@ -37,6 +37,8 @@ contact and bending springs.
 
 from __future__ import annotations
 
+import functools
+
 import numpy as np
 from ringchain.theory import _validate as v
 
@@ -185,7 +187,7 @@ class Law:
             setattr(law, name, one_or_all(value))
         return law
 
-    @property
+    @functools.cached_property
     def damped(self) -> bool:
         """Whether the law has a dashpot (its force depends on the rate of extension)."""
         return bool(np.any(np.asarray(getattr(self, "gamma", 0.0)) > 0))

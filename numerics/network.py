@@ -670,29 +670,33 @@ class Network:
         shape = () if n_runs == 1 and not self.batch_shape else (n_runs,)  # one run: plain 1-d views
         accelerations_into = self.stepper(shape, g)
         damped = self.damped
-        if d == 1:
+        if d == 1:  # the chains: x and u interleaved, strided views (the fast path of the old lattice, unchanged)
             x_part, u_part = slice(0, n_xu, 2), slice(1, n_xu, 2)
 
-            def split(y, dy):
-                x, u, a = y[x_part], y[u_part], dy[u_part]
+            def rhs(t, y):
+                dy = np.empty_like(y)
+                u = y[u_part]
                 dy[x_part] = u
-                return x, u, a
-        else:
-            S = self.n_sites
+                x, a = y[x_part], dy[u_part]
+                if shape:
+                    x, u, a = x.reshape(n_runs, N), u.reshape(n_runs, N), a.reshape(n_runs, N)
+                power = accelerations_into(x, u, a)
+                if damped:
+                    dy[n_xu:] = power
+                return dy
 
-            def split(y, dy):
-                Y, dY = y[:n_xu].reshape(n_runs, S, 2, d), dy[:n_xu].reshape(n_runs, S, 2, d)
-                dY[:, :, 0] = Y[:, :, 1]
-                return Y[:, :, 0].reshape(n_runs * N), Y[:, :, 1].reshape(n_runs * N), np.empty(n_runs * N)
+            return rhs
+
+        S = self.n_sites
 
         def rhs(t, y):
             dy = np.empty_like(y)
-            x, u, a = split(y, dy)
-            if shape:
-                x, u, a = x.reshape(n_runs, N), u.reshape(n_runs, N), a.reshape(n_runs, N)
-            power = accelerations_into(x, u, a)
-            if d > 1:
-                dy[:n_xu].reshape(n_runs, self.n_sites, 2, d)[:, :, 1] = a.reshape(n_runs, self.n_sites, d)
+            Y, dY = y[:n_xu].reshape(n_runs, S, 2, d), dy[:n_xu].reshape(n_runs, S, 2, d)
+            dY[:, :, 0] = Y[:, :, 1]
+            x, u = Y[:, :, 0].reshape(n_runs, N), Y[:, :, 1].reshape(n_runs, N)
+            a = np.empty((n_runs, N))
+            power = accelerations_into(x if shape else x[0], u if shape else u[0], a if shape else a[0])
+            dY[:, :, 1] = a.reshape(n_runs, S, d)
             if damped:
                 dy[n_xu:] = power
             return dy
