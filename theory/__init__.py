@@ -59,6 +59,17 @@ Sheets of interlinked rings (beyond the paper, its Sec. V outlook; module :mod:`
 - :func:`sheet_sound_speeds`, :class:`SheetSpeeds` -- its long-wave longitudinal and transverse speeds
   against the direction (anisotropic for the square sheet, isotropic for the triangular one).
 
+Contacts that yield (beyond the paper; modules :mod:`.subsurface` and :mod:`.plastic`):
+
+- :func:`subsurface_stress`, :func:`first_yield`, :func:`yield_force` -- the stresses below the Hertz
+  contact of two tori and the force at which it first yields (von Mises, p0 = 1.60 Y at nu = 0.29);
+- :func:`thornton_loading_force`, :func:`thornton_unloading_force`, :func:`thornton_residual_indentation`,
+  :func:`thornton_energy`, :func:`plastic_stiffness`, :func:`equivalent_radius` -- Thornton's
+  elastic-perfectly plastic contact law with memory of the largest approach;
+- :func:`yield_velocity`, :func:`restitution_coefficient` -- two colliding rings: the speed at which the
+  contact yields, and the coefficient of restitution beyond it;
+- :data:`STAINLESS_STEEL_304_ANNEALED`, :data:`STAINLESS_STEEL_304_COLD_WORKED` -- materials with a yield strength.
+
 The paper's reported numbers (Tables I-II, FE exponents) are data in :mod:`.paper_data`.
 """
 
@@ -99,7 +110,24 @@ from .linear import (
     sound_speed,
 )
 from .longwave import linear_sound_speed
-from .materials import MATERIALS, STAINLESS_STEEL_304, Material, get_material
+from .materials import (
+    MATERIALS,
+    STAINLESS_STEEL_304,
+    STAINLESS_STEEL_304_ANNEALED,
+    STAINLESS_STEEL_304_COLD_WORKED,
+    Material,
+    get_material,
+)
+from .plastic import (
+    equivalent_radius,
+    plastic_stiffness,
+    restitution_coefficient,
+    thornton_energy,
+    thornton_loading_force,
+    thornton_residual_indentation,
+    thornton_unloading_force,
+    yield_velocity,
+)
 from .pulse import impact_amplitude, solitary_wave_energy, solitary_wave_momentum
 from .ring import bending_stiffness
 from .series import (
@@ -122,6 +150,7 @@ from .solitary import (
     solitary_wave_speed_prestressed,
     solitary_wave_width,
 )
+from .subsurface import FirstYield, first_yield, subsurface_stress, yield_force
 
 __all__ = [
     "paper_data",
@@ -186,4 +215,19 @@ __all__ = [
     "sheet_dispersion",
     "sheet_sound_speeds",
     "SheetSpeeds",
+    # issue 22: contacts that yield
+    "subsurface_stress",
+    "first_yield",
+    "FirstYield",
+    "yield_force",
+    "thornton_loading_force",
+    "thornton_unloading_force",
+    "thornton_residual_indentation",
+    "thornton_energy",
+    "plastic_stiffness",
+    "equivalent_radius",
+    "yield_velocity",
+    "restitution_coefficient",
+    "STAINLESS_STEEL_304_ANNEALED",
+    "STAINLESS_STEEL_304_COLD_WORKED",
 ]
