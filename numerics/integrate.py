@@ -71,6 +71,7 @@ __all__ = [
     "RunTooLargeError",
     "ADAPTIVE_METHODS",
     "METHODS",
+    "COMPILED_METHODS",
     "DEFAULT_METHOD",
     "DEFAULT_RTOL",
     "VERLET_STEPS_PER_PERIOD",
@@ -99,11 +100,15 @@ DEFAULT_RTOL = 1e-9
 #: estimated peak force; chosen by the convergence test in tests/numerics/test_integrate.py.
 VERLET_STEPS_PER_PERIOD = 60
 
-#: The adaptive methods: "odeint" (LSODA stepped in Fortran, the default) and the
-#: :func:`scipy.integrate.solve_ivp` methods.  LSODA (Adams, switching to BDF with a banded
-#: Jacobian if the chain turns stiff) suits the chain; the explicit Runge-Kutta methods
-#: lose their order at the kink of the contact law at delta = 0.
-ADAPTIVE_METHODS = ("odeint", "LSODA", "DOP853", "RK45", "RK23")
+#: The adaptive methods: "dopri5" (Dormand-Prince 5(4), compiled, max-norm error control, each run of a
+#: batch with its own steps: :mod:`ringchain.numerics.kernels`), "odeint" (LSODA stepped in Fortran) and
+#: the :func:`scipy.integrate.solve_ivp` methods, the independent reference.  LSODA (Adams, switching to BDF
+#: with a banded Jacobian if the chain turns stiff) suits the chain; the explicit Runge-Kutta methods lose
+#: their order at the kink of the contact law at delta = 0, which costs the higher orders most.
+ADAPTIVE_METHODS = ("dopri5", "odeint", "LSODA", "DOP853", "RK45", "RK23")
+
+#: The compiled methods (:mod:`ringchain.numerics.kernels`): their whole time loop runs in Numba.
+COMPILED_METHODS = ("dopri5", "verlet")
 
 #: Every method :func:`simulate` takes.
 METHODS = (*ADAPTIVE_METHODS, "verlet")
@@ -141,10 +146,6 @@ _SECONDS_PER_SITE_STEP = 2e-8
 
 # Most LSODA steps between two samples (odeint's mxstep); a run that needs more fails.
 _MAX_STEPS_PER_SAMPLE = 1_000_000
-
-#: Energy checks per Verlet run (each costs about one step).
-_WATCHES = 16
-
 
 class IntegrationError(ValueError):
     """The integrator failed, or its result is unstable (non-finite, or the energy drifted)."""
@@ -230,53 +231,47 @@ def _adaptive(method, dyn, x0, u0, scales, t_eval, rtol, atol, g, keep, watch):
     return xs, us, dissipated, {"method": method, "rtol": rtol, "nfev": nfev}
 
 
-def _verlet(dyn, x0, u0, t_eval, t_end, dt, g, keep, watch):
-    """Velocity Verlet (leapfrog form), sampled at ``t_eval`` by cubic Hermite interpolation.
+def _compiled(method, dyn, x0, u0, scales, t_eval, t_end, rtol, atol, dt, g, keep, watch):
+    """A compiled method (:mod:`ringchain.numerics.kernels`): x and u of ``keep`` (B, T, K), W (B, T) and stats.
 
-    Returns x and u of the coordinates ``keep`` (all if None), shape (B, len(t_eval), K), and stats.
+    The kernels check that the state stays finite; the energy watch reads the final state.
     """
-    n_steps = max(1, math.ceil(t_end / dt))
-    dt = t_end / n_steps
-    accelerations_into = dyn.stepper(x0.shape[:-1], g)
-    x, u = x0.copy(), u0.copy()
-    a = np.empty_like(x)
-    accelerations_into(x, None, a)
-    sel = slice(None) if keep is None else keep
-    T = t_eval.size
-    xs = np.empty((x.shape[0], T, x[:, sel].shape[-1]))
-    us = np.empty_like(xs)
-    # Sample j lies in step k(j): t_k < t_j <= t_{k+1} (t_j = 0 is step "-1": the start).
-    step_of = np.ceil(t_eval / dt - 1e-9).astype(int) - 1
-    theta = t_eval / dt - step_of
-    j = 0
-    while j < T and step_of[j] < 0:
-        xs[:, j], us[:, j] = x[:, sel], u[:, sel]
-        j += 1
-    half = 0.5 * dt
-    u_half = u + half * a  # u at t + dt/2
-    kick = np.empty_like(x)
-    check_every = max(1, n_steps // _WATCHES)
-    for k in range(n_steps):
-        sampling = j < T and step_of[j] == k
-        if sampling:
-            x_prev, u_prev = x[:, sel].copy(), u_half[:, sel] - half * a[:, sel]
-        np.multiply(u_half, dt, out=kick)
-        x += kick
-        accelerations_into(x, None, a)
-        if sampling:
-            x_now, u_now = x[:, sel], u_half[:, sel] + half * a[:, sel]
-            while j < T and step_of[j] == k:
-                s = theta[j]
-                h00, h10, h01, h11 = 2 * s**3 - 3 * s**2 + 1, s**3 - 2 * s**2 + s, -2 * s**3 + 3 * s**2, s**3 - s**2
-                d00, d10, d01, d11 = 6 * s**2 - 6 * s, 3 * s**2 - 4 * s + 1, -6 * s**2 + 6 * s, 3 * s**2 - 2 * s
-                xs[:, j] = h00 * x_prev + h10 * dt * u_prev + h01 * x_now + h11 * dt * u_now
-                us[:, j] = (d00 * x_prev + d01 * x_now) / dt + d10 * u_prev + d11 * u_now
-                j += 1
-        if (k + 1) % check_every == 0 or k == n_steps - 1:
-            watch((k + 1) * dt, x, u_half + half * a)
-        np.multiply(a, dt, out=kick)
-        u_half += kick
-    return xs, us, {"method": "verlet", "dt": dt, "nfev": n_steps + 1}
+    from . import kernels
+
+    packed = kernels.pack(dyn)
+    B, N = x0.shape
+    keep = np.arange(N) if keep is None else keep
+    if method == "verlet":
+        xs, us, x_end, u_end, status, dt, steps = kernels.verlet(packed, x0, u0, t_eval, t_end, dt, keep, g)
+        _check_status(method, status, t_end)
+        watch(t_end, x_end, u_end)
+        return xs, us, np.zeros((B, t_eval.size)), {"method": method, "dt": dt, "nfev": steps + 1}
+    X, V, E = scales
+    columns = [np.repeat(X[:, None], N, axis=1), np.repeat(V[:, None], N, axis=1)]
+    state = [x0, u0]
+    if dyn.damped:
+        columns.append(E[:, None])
+        state.append(np.zeros((B, 1)))
+    xs, us, w, final, status, counts = kernels.dopri5(packed, np.hstack(state), t_eval, rtol,
+                                                      atol * np.hstack(columns), keep, g)  # fmt: skip
+    _check_status(method, status, t_end, rtol)
+    watch(t_end, final[:, :N], final[:, N : 2 * N], final[:, 2 * N] if dyn.damped else 0.0)
+    return xs, us, w, {"method": method, "rtol": rtol, "nfev": int(counts[:, 0].sum()),
+                       "steps": counts[:, 1].tolist(), "rejected": counts[:, 2].tolist()}  # fmt: skip
+
+
+def _check_status(method, status, t_end, rtol=None):
+    """Raise IntegrationError with the kernel's reason if a run did not finish."""
+    from .kernels import STATUS
+
+    failed = np.flatnonzero(status)
+    if failed.size:
+        b = int(failed[0])
+        tolerances = "" if rtol is None else f" (rtol = {rtol:g})"
+        advice = ("take a smaller dt or more steps_per_period" if method == "verlet" else
+                  "try a larger rtol or atol, or method='odeint'")  # fmt: skip
+        raise IntegrationError(f"{method} stopped before t = {t_end:g} s in run {b}: {STATUS[int(status[b])]}"
+                               f"{tolerances}; {advice}")  # fmt: skip
 
 
 def verlet_step(dyn, X, steps_per_period) -> float:
@@ -664,16 +659,15 @@ max_energy_drift
         max_energy_drift = float(v.positive("max_energy_drift", max_energy_drift))
     dyn = run["dynamics"]
     x0, u0, t_eval = run["x0"], run["u0"], run["t_eval"]
-    B = x0.shape[0]
     E = run["scales"][2]
     g_dyn = run["g"] if run["gravity"] else 0.0
     advice = ("take a smaller dt or more steps_per_period" if method == "verlet" else
               "take a smaller rtol (and atol), or method='verlet'")  # fmt: skip
     watch = EnergyWatch(dyn, x0, u0, g_dyn, 2.0 * E, max_energy_drift, advice)  # 2 E = m v^2 / 2
     with np.errstate(over="ignore", invalid="ignore"):  # an unstable run is reported by the watch
-        if method == "verlet":
-            xs, us, stats = _verlet(dyn, x0, u0, t_eval, run["t_end"], run["dt"], g_dyn, run["keep"], watch)
-            dissipated = np.zeros((B, t_eval.size))
+        if method in COMPILED_METHODS:
+            xs, us, dissipated, stats = _compiled(method, dyn, x0, u0, run["scales"], t_eval, run["t_end"], run["rtol"],
+                                                  run["atol"], run["dt"], g_dyn, run["keep"], watch)  # fmt: skip
         else:
             xs, us, dissipated, stats = _adaptive(method, dyn, x0, u0, run["scales"], t_eval, run["rtol"],
                                                   run["atol"], g_dyn, run["keep"], watch)  # fmt: skip
