@@ -97,11 +97,11 @@ def _ring(args) -> int:
     chain_note = "yes" if ring.can_form_chain else (
         f"no: R/r < {MIN_CHAIN_ASPECT_RATIO:g}, two rings interlock but a chain cannot form")  # fmt: skip
     with opt.computing(f"{given} at --force {F:g} N"):
-        F_star = float(crossover_force(K_c, ring.K_b))
-        n_star = float(local_exponent(F_star, K_c, ring.K_b))
-        V_s = float(solitary_wave_speed(F, K, n, ring.spacing, m))
-        width = float(solitary_wave_width(n, ring.spacing))
-        extension = float(series_displacement(F, K_c, ring.K_b) if bem is None else bem.extension(F))
+        F_star = float(crossover_force(K_c=K_c, K_b=ring.K_b))
+        n_star = float(local_exponent(F_star, K_c=K_c, K_b=ring.K_b))
+        V_s = float(solitary_wave_speed(F, K=K, n=n, m=m, a=ring.spacing))
+        width = float(solitary_wave_width(n=n, a=ring.spacing))
+        extension = float(series_displacement(F, K_c=K_c, K_b=ring.K_b) if bem is None else bem.extension(F))
         n_F = float(ring.local_exponent(F) if bem is None else bem.local_exponent(F))
     contact_line = ("K_c, Hertz contact (Eq. 1)", f"{K_c:.4e} N/m^1.5")
     if bem is not None:
@@ -120,7 +120,7 @@ def _ring(args) -> int:
         ("K_b, ring bending (Eq. 2)", f"{ring.K_b:.4e} N/m" + (" (thin ring)" if args.thin else "")),
         ("crossover F* = K_b^3/K_c^2", f"{F_star:.4g} N (local exponent there {n_star:.4f})"),
         (f"power law over {F_lo:g}-{F_hi:g} N (Eq. 4)",
-         f"K = {float(si_to_n_per_mm(K, n)):.5g} N/mm^n = {K:.5g} N/m^n, n = {n:.4f}"),
+         f"K = {float(si_to_n_per_mm(K, n=n)):.5g} N/mm^n = {K:.5g} N/m^n, n = {n:.4f}"),
         (f"at F = {F:g} N (Eq. 3)", f"extension {extension * 1e6:.4g} um, local exponent {n_F:.4f}"),
         (f"solitary wave at F_m = {F:g} N", f"V_s = {V_s:.4g} m/s (Eq. (8), m = {ratio:g} m0 = {m * 1e3:.4g} g), "
          f"width {width * 1e3:.4g} mm = {width / ring.spacing:.3g} a"),
@@ -252,7 +252,7 @@ def _run_summary(sim, point, t_end) -> list[str]:
              f"m/s, {t_end * 1e3:.4g} ms"]  # fmt: skip
     for k in point.sensors:
         lines.append(f"  ring {k}: peak {sim.peak_force(k):.4g} N at {sim.arrival_time(k) * 1e3:.4g} ms")
-    V_s = float(solitary_wave_speed(sim.peak_force(near), K, n, chain.a, chain.m))
+    V_s = float(solitary_wave_speed(sim.peak_force(near), K=K, n=n, m=chain.m, a=chain.a))
     lines.append(f"  time of flight {sim.time_of_flight(near, far) * 1e3:.4g} ms, speed "
                  f"{sim.wave_speed(near, far):.4g} m/s (Eq. (8) at ring {near}'s peak: {V_s:.4g} m/s)")  # fmt: skip
     return lines

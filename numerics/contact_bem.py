@@ -201,7 +201,7 @@ class ContactCurve:
         if self.K_b is not None:
             raise ValueError("this curve already includes a bending spring")
         K_b = float(v.positive("K_b", K_b, "N/m"))
-        return dataclasses.replace(self, delta=series_extension(self.delta, self.force, K_b), K_b=K_b)
+        return dataclasses.replace(self, delta=series_extension(self.force, delta_c=self.delta, K_b=K_b), K_b=K_b)
 
 
 def _contact_mechanics():

@@ -110,7 +110,7 @@ def series_stiffness_for_power_law(K, n, F_min=None, F_max=None) -> tuple[float,
     --------
     >>> from ringchain.theory import fit_power_law
     >>> K_c, K_b = series_stiffness_for_power_law(4.9e6, 1.11)
-    >>> K, n = fit_power_law(K_c, K_b)
+    >>> K, n = fit_power_law(K_c=K_c, K_b=K_b)
     >>> round(float(K) / 4.9e6, 9), round(float(n), 9)
     (1.0, 1.11)
     """
@@ -125,7 +125,7 @@ def series_stiffness_for_power_law(K, n, F_min=None, F_max=None) -> tuple[float,
         raise ValueError(f"the force window needs F_min < F_max, got [{F_min:g}, {F_max:g}] N")
 
     def fitted(log_crossover):  # the fit with K_b = 1 N/m, K_c = F*^(-1/2)
-        return fit_power_law(np.exp(-0.5 * log_crossover), 1.0, F_min, F_max)
+        return fit_power_law(K_c=np.exp(-0.5 * log_crossover), K_b=1.0, F_min=F_min, F_max=F_max)
 
     # F* from 1e-12 to 1e12 times the window's geometric mean: n from ~1 to ~1.5.
     centre = 0.5 * (math.log(F_min) + math.log(F_max))
@@ -304,7 +304,7 @@ def static_table() -> Table:
             source = "Table I"
         rows.append([
             f"{aspect:.1f}", f"{ring.K_c:.4e}", f"{ring.K_b:.4e}", _g(ring.crossover_force),
-            _g(si_to_n_per_mm(K, n)), f"{n:.3f}", _as_printed(K_paper), _as_printed(n_paper), source,
+            _g(si_to_n_per_mm(K, n=n)), f"{n:.3f}", _as_printed(K_paper), _as_printed(n_paper), source,
         ])  # fmt: skip
     return _table(
         "Static theory of one contact against R/r (paper Sec. II and IV.A, Eqs. 1-4); stainless steel, "
@@ -349,10 +349,10 @@ def angle_table() -> Table:
                          "the tori touch at two patches (the paper's Abaqus regime, Sec. IV.B): BEM only")  # fmt: skip
         else:
             K, n = theory.power_law()
-            cells = [f"{theory.K_c:.4e}", _g(theory.crossover_force), _g(si_to_n_per_mm(K, n)), f"{n:.3f}"]
+            cells = [f"{theory.K_c:.4e}", _g(theory.crossover_force), _g(si_to_n_per_mm(K, n=n)), f"{n:.3f}"]
         bem = angle_power_law(ring90.R, ring90.r, STAINLESS_STEEL_304.E, STAINLESS_STEEL_304.nu,
                               math.radians(angle_deg), ring90.K_b)  # fmt: skip
-        cells += [_g(si_to_n_per_mm(bem.K, bem.n)), f"{bem.n:.3f}"]
+        cells += [_g(si_to_n_per_mm(bem.K, n=bem.n)), f"{bem.n:.3f}"]
         rows.append([f"{angle_deg:.0f}", *cells, _as_printed(K_paper), _as_printed(n_paper)])
     return _table(
         f"Exponent against contact angle (paper Sec. IV.B, App. A), R/r = {aspect:g}",
@@ -383,7 +383,7 @@ def speed_table(forces=PAPER_FORCES) -> Table:
     rows = []
     for label, ring, (K_mm, n, ratio) in table_parameters():
         m = ratio * ring.mass
-        V = solitary_wave_speed(forces, float(n_per_mm_to_si(K_mm, n)), n, ring.spacing, m)
+        V = solitary_wave_speed(forces, K=float(n_per_mm_to_si(K_mm, n=n)), n=n, m=m, a=ring.spacing)
         rows.append([
             label, _as_printed(K_mm), _as_printed(n), f"{m * 1e3:.2f}", f"{ring.spacing * 1e3:.1f}",
             *(_g(x) for x in V),
@@ -411,7 +411,9 @@ def experiment_table(runs) -> Table:
     rows, sources = [], []
     for model, run in runs.items():
         chain = run.simulation.chain
-        V_s = float(solitary_wave_speed(run.peak_forces[0], float(n_per_mm_to_si(K_mm, n)), n, chain.a, chain.m))
+        V_s = float(
+            solitary_wave_speed(run.peak_forces[0], K=float(n_per_mm_to_si(K_mm, n=n)), n=n, m=chain.m, a=chain.a)
+        )
         rows.append([
             model, _g(run.peak_forces[0]), _g(run.peak_forces[1]), _g(run.arrival_times[0] * 1e3),
             _g(run.arrival_times[1] * 1e3), _g(run.time_of_flight * 1e3), _g(run.wave_speed), _g(V_s), run.stiffness,
@@ -475,7 +477,7 @@ def write_figures(out, runs) -> list[Path]:
     aspect = np.linspace(3.02, 12.0, 200)
     K_c = hertz_stiffness(aspect * r, r, steel.E, steel.nu)
     K_b = bending_stiffness(aspect * r, r, steel.E, steel.nu)
-    _, n = fit_power_law(K_c, K_b)
+    _, n = fit_power_law(K_c=K_c, K_b=K_b)
     fig = new_figure(figsize=(5, 3.6))
     ax = fig.add_subplot()
     ax.plot(aspect, n, label="theory (Eqs. 1-4), fit over 1-100 N")
@@ -490,7 +492,7 @@ def write_figures(out, runs) -> list[Path]:
     lowest = float(minimum_contact_angle(R, r))
     angle = np.linspace(lowest + 1e-3, np.pi / 2, 150)
     K_c = hertz_stiffness(R, r, steel.E, steel.nu, angle)
-    _, n = fit_power_law(K_c, bending_stiffness(R, r, steel.E, steel.nu))
+    _, n = fit_power_law(K_c=K_c, K_b=bending_stiffness(R, r, steel.E, steel.nu))
     fig = new_figure(figsize=(5, 3.6))
     ax = fig.add_subplot()
     ax.plot(np.degrees(angle), n, label="theory, elliptical Hertz contact")
@@ -508,9 +510,9 @@ def write_figures(out, runs) -> list[Path]:
     for k, a_r in enumerate(PAPER_ASPECT_RATIOS):
         R = a_r * r
         K_c, K_b = hertz_stiffness(R, r, steel.E, steel.nu), bending_stiffness(R, r, steel.E, steel.nu)
-        K, n = fit_power_law(K_c, K_b)
+        K, n = fit_power_law(K_c=K_c, K_b=K_b)
         color = f"C{k}"
-        ax.plot(series_displacement(F, K_c, K_b) * 1e6, F, color=color, label=f"R/r = {a_r:g}")
+        ax.plot(series_displacement(F, K_c=K_c, K_b=K_b) * 1e6, F, color=color, label=f"R/r = {a_r:g}")
         ax.plot((F / K) ** (1.0 / n) * 1e6, F, "--", color=color)
     ax.set(xscale="log", yscale="log", xlabel="extension delta (um)", ylabel="force F (N)",
            title="Series law (solid) and fitted power law (dashed)")  # fmt: skip
@@ -523,7 +525,7 @@ def write_figures(out, runs) -> list[Path]:
     axes = fig.subplots(1, 2, sharey=True)
     for label, ring, (K_mm, n, ratio) in table_parameters():
         ax = axes[0] if label.startswith("Table I ") else axes[1]
-        V = solitary_wave_speed(F_m, float(n_per_mm_to_si(K_mm, n)), n, ring.spacing, ratio * ring.mass)
+        V = solitary_wave_speed(F_m, K=float(n_per_mm_to_si(K_mm, n=n)), n=n, m=ratio * ring.mass, a=ring.spacing)
         ax.plot(F_m, V, label=label.split(" ", 2)[2])
     for ax, title in zip(axes, ("Table I: aspect ratio", "Table II: contact angle"), strict=True):
         ax.set(xscale="log", xlabel="peak force F_m (N)", title=title)

@@ -25,3 +25,10 @@ def test_readme_opens_with_exactly_two_commands():
 def test_ci_runs_the_readme_test_command():
     ci = (ROOT / ".ci" / "run").read_text()
     assert readme_commands()[1].strip() in ci.splitlines()
+
+
+def test_readme_ten_lines_run(capsys):
+    # The README's Python example is code a reader copies: it must run against the package as it is.
+    (example,) = re.findall(r"```python\n(.*?)\n```", (ROOT / "README.md").read_text(), flags=re.S)[:1]
+    exec(compile(example, "README.md", "exec"), {})
+    assert capsys.readouterr().out.count("\n") == 4  # one line per print

@@ -40,6 +40,18 @@ Rings that bend (beyond the paper; module :mod:`.curved_beam`):
   the exact curved elements of :class:`ringchain.numerics.RingModel` come from the same module.
 
 The paper's reported numbers (Tables I-II, FE exponents) are data in :mod:`.paper_data`.
+
+One convention for every signature: the quantity a function is evaluated at comes first and may be
+given by position (a force ``F``, ``F_m`` or ``F_0``, a speed ``v0``, a wavenumber ``q``, a position
+``x``); the geometry and material of a contact (``R, r, E, nu, angle``) follow by position, since
+every swap among them is refused; the parameters of the chain and of its contact law are
+keyword-only, in the one order ``F_0, K, n, m, a, K_c, K_b``::
+
+    F_m = impact_amplitude(v0, K=K, n=n, m=m, a=a)
+    V_s = solitary_wave_speed(F_m, K=K, n=n, m=m, a=a)
+    c_0 = sound_speed(F_0, model="power-law", K=K, n=n, m=m, a=a)
+
+A static contact force is spelled ``F_0`` everywhere.
 """
 
 from . import curved_beam, paper_data

@@ -439,7 +439,7 @@ def _dof_scale(R, kind):
     return np.concatenate([dof, dof])
 
 
-def element_matrices(R, r, E, nu, rho, angle, kind="in-plane") -> ElementMatrices:
+def element_matrices(R, r, E, nu, *, rho, angle, kind="in-plane") -> ElementMatrices:
     """Stiffness, consistent mass and resultants of one exact curved element (step 4).
 
     Parameters
@@ -473,7 +473,7 @@ def element_matrices(R, r, E, nu, rho, angle, kind="in-plane") -> ElementMatrice
 
     Examples
     --------
-    >>> el = element_matrices(22.5e-3, 2.5e-3, 193e9, 0.29, 8000.0, np.pi / 16)
+    >>> el = element_matrices(22.5e-3, 2.5e-3, 193e9, 0.29, rho=8000.0, angle=np.pi / 16)
     >>> el.stiffness.shape, bool(np.allclose(el.stiffness, el.stiffness.T))
     ((6, 6), True)
     """
@@ -637,7 +637,7 @@ def _ring_inputs(R, r, E, nu, rho, k):
     return R, r, E, nu, rho, k
 
 
-def inextensional_frequency(R, r, E, nu, rho, k, kind="in-plane"):
+def inextensional_frequency(R, r, E, nu, *, rho, k, kind="in-plane"):
     """Classical flexural frequency of a free thin ring of order k, Hz.
 
     Parameters
@@ -659,7 +659,7 @@ def inextensional_frequency(R, r, E, nu, rho, k, kind="in-plane"):
 
     Examples
     --------
-    >>> round(float(inextensional_frequency(1.0, 0.05, 2e11, 0.3, 8000.0, 2)), 2)  # NAFEMS FV6 ring, Hz
+    >>> round(float(inextensional_frequency(1.0, 0.05, 2e11, 0.3, rho=8000.0, k=2)), 2)  # NAFEMS FV6 ring, Hz
     53.38
     """
     R, r, E, nu, rho, k = _ring_inputs(R, r, E, nu, rho, k)
@@ -667,7 +667,7 @@ def inextensional_frequency(R, r, E, nu, rho, k, kind="in-plane"):
     return func(k, R, r, E, nu, rho) / (2.0 * np.pi)
 
 
-def ring_frequencies(R, r, E, nu, rho, k, kind="in-plane", *, extension=True, shear=True, rotary_inertia=True,
+def ring_frequencies(R, r, E, nu, *, rho, k, kind="in-plane", extension=True, shear=True, rotary_inertia=True,
                      thick=True) -> np.ndarray:  # fmt: skip
     """The three frequencies of order-k motion of the continuous ring, Hz, lowest first.
 
@@ -692,8 +692,8 @@ def ring_frequencies(R, r, E, nu, rho, k, kind="in-plane", *, extension=True, sh
 
     Examples
     --------
-    >>> f = ring_frequencies(22.5e-3, 2.5e-3, 193e9, 0.29, 8000.0, 2)
-    >>> round(float(f[0] / inextensional_frequency(22.5e-3, 2.5e-3, 193e9, 0.29, 8000.0, 2)), 3)
+    >>> f = ring_frequencies(22.5e-3, 2.5e-3, 193e9, 0.29, rho=8000.0, k=2)
+    >>> round(float(f[0] / inextensional_frequency(22.5e-3, 2.5e-3, 193e9, 0.29, rho=8000.0, k=2)), 3)
     0.984
     """
     from scipy.linalg import eigh, null_space

@@ -224,7 +224,7 @@ def _amplitude():
     return (s["v_0"], s["K"], s["n"], s["m_s"]), impact_law()
 
 
-def solitary_wave_energy(F_m, K, n, m, a):
+def solitary_wave_energy(F_m, *, K, n, m, a):
     """Energy carried by the compact solitary wave of peak contact force F_m, J (App. B).
 
     Parameters
@@ -258,7 +258,7 @@ def solitary_wave_energy(F_m, K, n, m, a):
 
     Examples
     --------
-    >>> round(float(solitary_wave_energy(1.0, 1.0, 1.5, 1.0, 1.0)), 6)  # Hertz, in units K = F_m = 1
+    >>> round(float(solitary_wave_energy(1.0, K=1.0, n=1.5, m=1.0, a=1.0)), 6)  # Hertz, in units K = F_m = 1
     1.032266
     """
     F_m = v.positive("F_m", F_m, "N")
@@ -266,7 +266,7 @@ def solitary_wave_energy(F_m, K, n, m, a):
     return _energy(F_m, K, n)
 
 
-def solitary_wave_momentum(F_m, K, n, m, a):
+def solitary_wave_momentum(F_m, *, K, n, m, a):
     """Momentum carried by the compact solitary wave of peak contact force F_m, kg m/s (App. B).
 
     Parameters
@@ -290,7 +290,7 @@ def solitary_wave_momentum(F_m, K, n, m, a):
 
     Examples
     --------
-    >>> round(float(solitary_wave_momentum(1.0, 1.0, 1.5, 1.0, 1.0)), 6)
+    >>> round(float(solitary_wave_momentum(1.0, K=1.0, n=1.5, m=1.0, a=1.0)), 6)
     1.666081
     """
     F_m = v.positive("F_m", F_m, "N")
@@ -298,7 +298,7 @@ def solitary_wave_momentum(F_m, K, n, m, a):
     return _momentum(F_m, K, n, m)
 
 
-def impact_amplitude(v0, K, n, m, a, m_striker=None):
+def impact_amplitude(v0, *, K, n, m, a, m_striker=None):
     """Peak force of the leading solitary wave launched by a striker hitting the chain end at v0, N.
 
     Parameters
@@ -329,7 +329,7 @@ def impact_amplitude(v0, K, n, m, a, m_striker=None):
 
     Examples
     --------
-    >>> round(float(impact_amplitude(1.0, 1.0, 1.5, 1.0, 1.0)), 6)
+    >>> round(float(impact_amplitude(1.0, K=1.0, n=1.5, m=1.0, a=1.0)), 6)
     0.647302
     """
     v0 = v.positive("v0", v0, "m/s")

@@ -752,10 +752,10 @@ def _chain_speed(function, variable, K, n, a, m):
         return power_law_value(log_coefficient, exponent, variable)
 
 
-_CHAIN = "force, velocity and chain parameters (K, n, a, m)"
+_CHAIN = "force, velocity and chain parameters (K, n, m, a)"
 
 
-def solitary_wave_speed(F_m, K, n, a, m):
+def solitary_wave_speed(F_m, *, K, n, m, a):
     """Speed of the compact solitary wave of peak contact force F_m (paper Eq. (8)).
 
     Parameters
@@ -766,10 +766,10 @@ def solitary_wave_speed(F_m, K, n, a, m):
         Power-law prefactor, N/m^n (F = K delta^n, paper Eq. 4).
     n : array_like
         Power-law exponent, > 1.
-    a : array_like
-        Distance between adjacent ring centres, m (a = 2(R - r)).
     m : array_like
         Ring mass (the paper uses the effective mass m_eff), kg.
+    a : array_like
+        Distance between adjacent ring centres, m (a = 2(R - r)).
 
     Returns
     -------
@@ -786,7 +786,7 @@ def solitary_wave_speed(F_m, K, n, a, m):
 
     Examples
     --------
-    >>> round(float(solitary_wave_speed(8.0, 1.0, 3.0, 1.0, 1.0)), 6)  # sqrt(1/2) 8^(1/3)
+    >>> round(float(solitary_wave_speed(8.0, K=1.0, n=3.0, m=1.0, a=1.0)), 6)  # sqrt(1/2) 8^(1/3)
     1.414214
     """
     F_m = v.positive("F_m", F_m, "N")
@@ -795,7 +795,7 @@ def solitary_wave_speed(F_m, K, n, a, m):
     return v.finite_result(_chain_speed(_speed, F_m, *chain), "V_s", _CHAIN)
 
 
-def solitary_wave_speed_from_velocity(v_max, K, n, a, m):
+def solitary_wave_speed_from_velocity(v_max, *, K, n, m, a):
     """Speed of the compact solitary wave from its peak ring velocity v_max (App. B).
 
     Parameters
@@ -806,8 +806,8 @@ def solitary_wave_speed_from_velocity(v_max, K, n, a, m):
         away from the impact) the rings of a wave running towards +x move towards -x,
         u_t = -V_s xi, so the signed v_max of App. B is negative; a measured peak speed
         |v_max| > 0 gives the same V_s, and so does a wave running towards -x (v_max > 0).
-    K, n, a, m : array_like
-        Chain: prefactor (N/m^n), exponent (> 1), spacing (m), mass (kg), as in
+    K, n, m, a : array_like
+        Chain: prefactor (N/m^n), exponent (> 1), mass (kg), spacing (m), as in
         :func:`solitary_wave_speed`.
 
     Returns
@@ -824,9 +824,9 @@ def solitary_wave_speed_from_velocity(v_max, K, n, a, m):
 
     Examples
     --------
-    >>> round(float(solitary_wave_speed_from_velocity(-1.0, 1.0, 3.0, 1.0, 1.0)), 6)  # (1/2)^(1/4)
+    >>> round(float(solitary_wave_speed_from_velocity(-1.0, K=1.0, n=3.0, m=1.0, a=1.0)), 6)  # (1/2)^(1/4)
     0.840896
-    >>> round(float(solitary_wave_speed_from_velocity(1.0, 1.0, 3.0, 1.0, 1.0)), 6)  # the magnitude: same speed
+    >>> round(float(solitary_wave_speed_from_velocity(1.0, K=1.0, n=3.0, m=1.0, a=1.0)), 6)  # the magnitude: same speed
     0.840896
     """
     v_max = v.as_float("v_max", v_max)
@@ -841,7 +841,7 @@ def solitary_wave_speed_from_velocity(v_max, K, n, a, m):
     return v.finite_result(_chain_speed(_speed_from_velocity, speed, *chain), "V_s", _CHAIN)
 
 
-def solitary_wave_width(n, a):
+def solitary_wave_width(*, n, a):
     """Length of the support of the compact solitary wave, pi/omega (App. B).
 
     Parameters
@@ -859,7 +859,7 @@ def solitary_wave_width(n, a):
 
     Examples
     --------
-    >>> round(float(solitary_wave_width(1.5, 1.0)), 4)  # Hertz: 5 pi/sqrt(10), about five spacings
+    >>> round(float(solitary_wave_width(n=1.5, a=1.0)), 4)  # Hertz: 5 pi/sqrt(10), about five spacings
     4.9673
     """
     n = _exponent(n)
@@ -870,7 +870,7 @@ def solitary_wave_width(n, a):
     return v.finite_result(width, "the width", "exponent and spacing")
 
 
-def solitary_wave_profile(x, F_m, K, n, a):
+def solitary_wave_profile(x, *, F_m, K, n, a):
     """Contact-force profile of the compact solitary wave, zero outside its support.
 
     Parameters
@@ -901,7 +901,7 @@ def solitary_wave_profile(x, F_m, K, n, a):
 
     Examples
     --------
-    >>> [round(float(F), 6) for F in solitary_wave_profile([0.0, 1.0, 3.0], 2.0, 1.0, 1.5, 1.0)]
+    >>> [round(float(F), 6) for F in solitary_wave_profile([0.0, 1.0, 3.0], F_m=2.0, K=1.0, n=1.5, a=1.0)]
     [2.0, 0.550693, 0.0]
     """
     x = v.as_float("x", x)
@@ -913,7 +913,7 @@ def solitary_wave_profile(x, F_m, K, n, a):
     return v.finite_result(profile, "the profile", "positions, force and chain parameters")
 
 
-def solitary_wave_speed_prestressed(F_m, F_0, K, n, a, m):
+def solitary_wave_speed_prestressed(F_m, *, F_0, K, n, m, a):
     """Speed of the solitary wave on a chain pre-stretched by a static contact force F_0.
 
     Parameters
@@ -923,8 +923,8 @@ def solitary_wave_speed_prestressed(F_m, F_0, K, n, a, m):
     F_0 : array_like
         Static contact force far from the wave, N, >= 0 (in a hanging chain, the weight
         of the rings below the contact).
-    K, n, a, m : array_like
-        Chain: prefactor (N/m^n), exponent (> 1), spacing (m), mass (kg), as in
+    K, n, m, a : array_like
+        Chain: prefactor (N/m^n), exponent (> 1), mass (kg), spacing (m), as in
         :func:`solitary_wave_speed`.
 
     Returns
@@ -948,9 +948,9 @@ def solitary_wave_speed_prestressed(F_m, F_0, K, n, a, m):
 
     Examples
     --------
-    >>> round(float(solitary_wave_speed_prestressed(8.0, 0.0, 1.0, 3.0, 1.0, 1.0)), 6)
+    >>> round(float(solitary_wave_speed_prestressed(8.0, F_0=0.0, K=1.0, n=3.0, m=1.0, a=1.0)), 6)
     1.414214
-    >>> round(float(solitary_wave_speed_prestressed(8.0, 8.0, 1.0, 3.0, 1.0, 1.0)), 6)  # sqrt(3) 8^(1/3)
+    >>> round(float(solitary_wave_speed_prestressed(8.0, F_0=8.0, K=1.0, n=3.0, m=1.0, a=1.0)), 6)  # sqrt(3) 8^(1/3)
     3.464102
     """
     F_m = v.positive("F_m", F_m, "N")

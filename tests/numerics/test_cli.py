@@ -50,9 +50,9 @@ def test_ring_prints_everything_about_one_contact(capsys):
     assert number_after("(Eq. 2)", out) == pytest.approx(ring.K_b, rel=5e-5)
     assert number_after("K_b^3/K_c^2", out) == pytest.approx(ring.crossover_force, rel=5e-4)  # 4 figures
     assert number_after("N/m^n, n =", out) == pytest.approx(n, rel=5e-4)  # 4 decimals
-    assert number_after("(Eq. 4)  K =", out) == pytest.approx(si_to_n_per_mm(K, n), rel=5e-5)  # 5 figures
+    assert number_after("(Eq. 4)  K =", out) == pytest.approx(si_to_n_per_mm(K, n=n), rel=5e-5)  # 5 figures
     assert number_after("um, local exponent", out) == pytest.approx(ring.local_exponent(10.0), rel=5e-4)
-    V_s = solitary_wave_speed(10.0, K, n, ring.spacing, ring.mass)
+    V_s = solitary_wave_speed(10.0, K=K, n=n, m=ring.mass, a=ring.spacing)
     assert number_after("V_s =", out) == pytest.approx(V_s, rel=5e-4)  # 4 figures
     # The crossover sits where contact and bending extensions are equal: n = 6/5 there.
     assert "local exponent there 1.2000" in out
@@ -215,8 +215,8 @@ def test_paper_prints_the_key_numbers_beside_the_papers_and_writes_figures(capsy
     for aspect, (K_mm, n_t, ratio) in paper_data.TABLE_I.items():
         ring = Ring.from_aspect_ratio(aspect)
         cells = row(f"Table I R/r = {aspect:g} ")
-        expected = solitary_wave_speed(np.array([1.0, 10.0, 100.0]), K_mm * 1000.0**n_t, n_t, ring.spacing,
-                                       ratio * ring.mass)  # fmt: skip
+        expected = solitary_wave_speed(np.array([1.0, 10.0, 100.0]), K=K_mm * 1000.0**n_t, n=n_t, m=ratio * ring.mass,
+                                       a=ring.spacing)  # fmt: skip
         np.testing.assert_allclose([float(c) for c in cells[-3:]], expected, rtol=5e-4)  # 4 figures
     assert len([line for line in lines if line.strip().startswith("Table II ")]) == len(paper_data.TABLE_II)
     # The experiment: both models, peak forces and times of flight.

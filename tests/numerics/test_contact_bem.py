@@ -84,7 +84,7 @@ def test_series_curve_gives_the_papers_power_law_at_90_degrees():
     K_b = float(bending_stiffness(R, r, E, nu))
     curve = contact_curve(R, r, E, nu, np.pi / 2, np.geomspace(1.0, 100.0, 9))
     K, n = curve.series(K_b).fit()
-    K_ref, n_ref = fit_power_law(hertz_stiffness(R, r, E, nu), K_b)
+    K_ref, n_ref = fit_power_law(K_c=hertz_stiffness(R, r, E, nu), K_b=K_b)
     # Hertz to 0.2 % in force; 9 points over two decades interpolate ln delta to ~1e-4.
     assert n == pytest.approx(float(n_ref), rel=2e-3)
     assert K == pytest.approx(float(K_ref), rel=2e-2)  # K = F/delta^n: n's error times ln(delta) ~ 12
@@ -153,7 +153,7 @@ def test_half_space_warning_and_extent():
 def test_angle_power_law_row():
     K_b = float(bending_stiffness(R, r, E, nu))
     row = contact_bem.angle_power_law(R, r, E, nu, np.radians(60.0), K_b, window=(1.0, 100.0), n_forces=5)
-    _K_ref, n_ref = fit_power_law(hertz_stiffness(R, r, E, nu, np.radians(60.0)), K_b)
+    _K_ref, n_ref = fit_power_law(K_c=hertz_stiffness(R, r, E, nu, np.radians(60.0)), K_b=K_b)
     assert row.n == pytest.approx(float(n_ref), rel=5e-3)  # 5 forces over two decades: interpolation ~1e-3
     assert row.K_c == pytest.approx(float(hertz_stiffness(R, r, E, nu, np.radians(60.0))), rel=5e-3)
     assert row.n_patches == 1 and row.max_extent_over_r > 0

@@ -27,9 +27,9 @@ def test_series_stiffness_reduces_to_the_measured_power_law(row):
     """The springs found for each measured (K, n) of Tables I and II, fitted again by the theory's
     own least squares (Eq. 4, theory.fit_power_law), give that K and n back."""
     _, _, (K_mm, n, _) = row
-    K = float(n_per_mm_to_si(K_mm, n))
+    K = float(n_per_mm_to_si(K_mm, n=n))
     K_c, K_b = paper.series_stiffness_for_power_law(K, n)
-    K_fit, n_fit = fit_power_law(K_c, K_b)
+    K_fit, n_fit = fit_power_law(K_c=K_c, K_b=K_b)
     # The root finder stops at 1e-13 in ln F*; n depends smoothly on it.
     assert float(n_fit) == pytest.approx(n, rel=1e-9)
     assert float(K_fit) == pytest.approx(K, rel=1e-9)
@@ -43,7 +43,7 @@ def test_series_stiffness_reduces_to_the_measured_power_law(row):
 def test_series_stiffness_round_trips_over_the_admissible_range(K, n, window):
     K_c, K_b = paper.series_stiffness_for_power_law(K, n, *window)
     assert np.isfinite(K_c) and np.isfinite(K_b)
-    K_fit, n_fit = fit_power_law(K_c, K_b, *window)
+    K_fit, n_fit = fit_power_law(K_c=K_c, K_b=K_b, F_min=window[0], F_max=window[1])
     assert float(n_fit) == pytest.approx(n, rel=1e-8)  # root finding to 1e-13 in ln F*
     assert float(K_fit) == pytest.approx(K, rel=1e-7)  # K ~ K_b^n: the error in n times ln(delta)
 

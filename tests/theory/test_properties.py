@@ -162,12 +162,12 @@ def test_bending_admissible_range(r, aspect, E, nu, thin):
 @SETTINGS
 @given(ANY, ANY, ANY, ANY)
 def test_series_any_input(F, K_c, K_b, other):
-    finite_or_refused(lambda: series_displacement(F, K_c, K_b))
-    finite_or_refused(lambda: local_exponent(F, K_c, K_b))
-    finite_or_refused(lambda: crossover_force(K_c, K_b))
-    finite_or_refused(lambda: fit_power_law(K_c, K_b, F, other))
-    finite_or_refused(lambda: n_per_mm_to_si(F, other))
-    finite_or_refused(lambda: si_to_n_per_mm(F, other))
+    finite_or_refused(lambda: series_displacement(F, K_c=K_c, K_b=K_b))
+    finite_or_refused(lambda: local_exponent(F, K_c=K_c, K_b=K_b))
+    finite_or_refused(lambda: crossover_force(K_c=K_c, K_b=K_b))
+    finite_or_refused(lambda: fit_power_law(K_c=K_c, K_b=K_b, F_min=F, F_max=other))
+    finite_or_refused(lambda: n_per_mm_to_si(F, n=other))
+    finite_or_refused(lambda: si_to_n_per_mm(F, n=other))
 
 
 @SETTINGS
@@ -179,17 +179,17 @@ def test_series_any_input(F, K_c, K_b, other):
     n=st.floats(0.5, 3.0),
 )
 def test_series_admissible_range(F, K_c, K_b, decades, n):
-    finite_or_refused(lambda: series_displacement(F, K_c, K_b))
-    exponent = finite_or_refused(lambda: local_exponent(F, K_c, K_b))
+    finite_or_refused(lambda: series_displacement(F, K_c=K_c, K_b=K_b))
+    exponent = finite_or_refused(lambda: local_exponent(F, K_c=K_c, K_b=K_b))
     assert exponent is not None and 1.0 <= exponent <= 1.5  # every positive input has an exponent
-    finite_or_refused(lambda: crossover_force(K_c, K_b))
-    fitted = finite_or_refused(lambda: fit_power_law(K_c, K_b, F, F * 10.0**decades))
+    finite_or_refused(lambda: crossover_force(K_c=K_c, K_b=K_b))
+    fitted = finite_or_refused(lambda: fit_power_law(K_c=K_c, K_b=K_b, F_min=F, F_max=F * 10.0**decades))
     if fitted is not None:
         # The fitted exponent lies within the local exponents' range, to the rounding of a
         # least-squares slope over a window as narrow as 1e-6 decades (1e-8 at most).
         assert 1.0 - 1e-8 <= fitted[1] <= 1.5 + 1e-8
-    finite_or_refused(lambda: n_per_mm_to_si(K_c, n))
-    finite_or_refused(lambda: si_to_n_per_mm(K_c, n))
+    finite_or_refused(lambda: n_per_mm_to_si(K_c, n=n))
+    finite_or_refused(lambda: si_to_n_per_mm(K_c, n=n))
 
 
 # --- rings and materials ----------------------------------------------------------------------------
@@ -253,12 +253,12 @@ def test_material_presets_by_name():
 @SETTINGS
 @given(ANY, ANY, ANY, ANY, ANY, ANY)
 def test_waves_any_input(F_m, F_0, K, n, a, m):
-    finite_or_refused(lambda: solitary_wave_speed(F_m, K, n, a, m))
-    finite_or_refused(lambda: solitary_wave_speed_from_velocity(F_m, K, n, a, m))
-    finite_or_refused(lambda: solitary_wave_width(n, a))
-    finite_or_refused(lambda: solitary_wave_profile(F_0, F_m, K, n, a))
-    finite_or_refused(lambda: solitary_wave_speed_prestressed(F_m, F_0, K, n, a, m))
-    finite_or_refused(lambda: linear_sound_speed(F_0, K, n, a, m))
+    finite_or_refused(lambda: solitary_wave_speed(F_m, K=K, n=n, m=m, a=a))
+    finite_or_refused(lambda: solitary_wave_speed_from_velocity(F_m, K=K, n=n, m=m, a=a))
+    finite_or_refused(lambda: solitary_wave_width(n=n, a=a))
+    finite_or_refused(lambda: solitary_wave_profile(F_0, F_m=F_m, K=K, n=n, a=a))
+    finite_or_refused(lambda: solitary_wave_speed_prestressed(F_m, F_0=F_0, K=K, n=n, m=m, a=a))
+    finite_or_refused(lambda: linear_sound_speed(F_0, K=K, n=n, m=m, a=a))
 
 
 @SETTINGS
@@ -273,14 +273,14 @@ def test_waves_any_input(F_m, F_0, K, n, a, m):
 )
 def test_waves_admissible_range(F_m, ratio, K, n, a, m, x):
     speeds = [
-        finite_or_refused(lambda: solitary_wave_speed(F_m, K, n, a, m)),
-        finite_or_refused(lambda: solitary_wave_speed_from_velocity(-F_m, K, n, a, m)),
-        finite_or_refused(lambda: solitary_wave_speed_prestressed(F_m, ratio * F_m, K, n, a, m)),
-        finite_or_refused(lambda: linear_sound_speed(ratio * F_m, K, n, a, m)),
+        finite_or_refused(lambda: solitary_wave_speed(F_m, K=K, n=n, m=m, a=a)),
+        finite_or_refused(lambda: solitary_wave_speed_from_velocity(-F_m, K=K, n=n, m=m, a=a)),
+        finite_or_refused(lambda: solitary_wave_speed_prestressed(F_m, F_0=ratio * F_m, K=K, n=n, m=m, a=a)),
+        finite_or_refused(lambda: linear_sound_speed(ratio * F_m, K=K, n=n, m=m, a=a)),
     ]
     assert all(speed is None or speed >= 0 for speed in speeds)
-    finite_or_refused(lambda: solitary_wave_width(n, a))
-    profile = finite_or_refused(lambda: solitary_wave_profile(x, F_m, K, n, a))
+    finite_or_refused(lambda: solitary_wave_width(n=n, a=a))
+    profile = finite_or_refused(lambda: solitary_wave_profile(x, F_m=F_m, K=K, n=n, a=a))
     if profile is not None:
         assert 0 <= profile <= F_m
 
@@ -294,7 +294,7 @@ def test_waves_broadcast_or_name_the_arguments(forces, exponents):
     # Arrays of unrelated lengths: a result of the broadcast shape, or a ValueError naming both arguments.
     F, n = np.array(forces), np.array(exponents)
     try:
-        V = solitary_wave_speed(F, 1e8, n, 0.04, 0.01)
+        V = solitary_wave_speed(F, K=1e8, n=n, m=0.01, a=0.04)
     except ValueError as error:
         assert "F_m (shape" in str(error) and "n (shape" in str(error)
         return
@@ -318,19 +318,19 @@ def _edges_finite_or_refused(call, model):
 
 @SETTINGS
 @given(MODELS, ANY, ANY, ANY, ANY, ANY, ANY, ANY)
-def test_linear_any_input(model, q, F0, K, n, m, a, K_b):
+def test_linear_any_input(model, q, F_0, K, n, m, a, K_b):
     n_law = 1.5 if model == "dual-spring" and np.isfinite(n) else n
-    finite_or_refused(lambda: dispersion(q, model=model, F0=F0, K=K, n=n_law, m=m, a=a, K_b=K_b))
-    _edges_finite_or_refused(lambda: band_edges(model=model, F0=F0, K=K, n=n_law, m=m, K_b=K_b), model)
-    finite_or_refused(lambda: sound_speed(model=model, F0=F0, K=K, n=n_law, m=m, a=a, K_b=K_b))
-    finite_or_refused(lambda: linear_travel_time(0, 3, model=model, K=K, n=n_law, m=m, a=a, K_b=K_b, g=F0))
+    finite_or_refused(lambda: dispersion(q, model=model, F_0=F_0, K=K, n=n_law, m=m, a=a, K_b=K_b))
+    _edges_finite_or_refused(lambda: band_edges(model=model, F_0=F_0, K=K, n=n_law, m=m, K_b=K_b), model)
+    finite_or_refused(lambda: sound_speed(model=model, F_0=F_0, K=K, n=n_law, m=m, a=a, K_b=K_b))
+    finite_or_refused(lambda: linear_travel_time(0, 3, model=model, K=K, n=n_law, m=m, a=a, K_b=K_b, g=F_0))
 
 
 @SETTINGS
 @given(
     model=MODELS,
     fraction=st.floats(0.0, 1.0),
-    F0=st.one_of(st.just(0.0), log_uniform(1e-9, 1e9)),
+    F_0=st.one_of(st.just(0.0), log_uniform(1e-9, 1e9)),
     K=log_uniform(1e-3, 1e20),
     n=st.floats(1.0, 3.0),
     m=log_uniform(1e-9, 1e3),
@@ -338,16 +338,16 @@ def test_linear_any_input(model, q, F0, K, n, m, a, K_b):
     K_b=log_uniform(1e-3, 1e15),
     rings=st.tuples(st.integers(0, 50), st.integers(1, 50)),
 )
-def test_linear_admissible_range(model, fraction, F0, K, n, m, a, K_b, rings):
+def test_linear_admissible_range(model, fraction, F_0, K, n, m, a, K_b, rings):
     if model == "dual-spring":
         n = 1.5
     else:
         K_b = None  # the power-law chain has no ring-bending spring (refused if given)
     q = fraction * np.pi / a
-    omega = finite_or_refused(lambda: dispersion(q, model=model, F0=F0, K=K, n=n, m=m, a=a, K_b=K_b))
+    omega = finite_or_refused(lambda: dispersion(q, model=model, F_0=F_0, K=K, n=n, m=m, a=a, K_b=K_b))
     assert omega is not None and np.all(omega >= 0)
-    assert _edges_finite_or_refused(lambda: band_edges(model=model, F0=F0, K=K, n=n, m=m, K_b=K_b), model) is not None
-    c = finite_or_refused(lambda: sound_speed(model=model, F0=F0, K=K, n=n, m=m, a=a, K_b=K_b))
+    assert _edges_finite_or_refused(lambda: band_edges(model=model, F_0=F_0, K=K, n=n, m=m, K_b=K_b), model) is not None
+    c = finite_or_refused(lambda: sound_speed(model=model, F_0=F_0, K=K, n=n, m=m, a=a, K_b=K_b))
     assert c is not None and c >= 0
     lower, steps = rings
     t = finite_or_refused(lambda: linear_travel_time(lower, lower + steps, model=model, K=K, n=n, m=m, a=a, K_b=K_b))
@@ -357,10 +357,10 @@ def test_linear_admissible_range(model, fraction, F0, K, n, m, a, K_b, rings):
 @SETTINGS
 @given(ANY, ANY, ANY, ANY, ANY, ANY)
 def test_pulse_any_input(F_m, K, n, m, a, m_striker):
-    finite_or_refused(lambda: solitary_wave_energy(F_m, K, n, m, a))
-    finite_or_refused(lambda: solitary_wave_momentum(F_m, K, n, m, a))
-    finite_or_refused(lambda: impact_amplitude(F_m, K, n, m, a))
-    finite_or_refused(lambda: impact_amplitude(F_m, K, n, m, a, m_striker=m_striker))
+    finite_or_refused(lambda: solitary_wave_energy(F_m, K=K, n=n, m=m, a=a))
+    finite_or_refused(lambda: solitary_wave_momentum(F_m, K=K, n=n, m=m, a=a))
+    finite_or_refused(lambda: impact_amplitude(F_m, K=K, n=n, m=m, a=a))
+    finite_or_refused(lambda: impact_amplitude(F_m, K=K, n=n, m=m, a=a, m_striker=m_striker))
 
 
 @SETTINGS
@@ -375,10 +375,10 @@ def test_pulse_any_input(F_m, K, n, m, a, m_striker):
 )
 def test_pulse_admissible_range(F_m, v0, K, n, m, a, striker):
     for value in (
-        finite_or_refused(lambda: solitary_wave_energy(F_m, K, n, m, a)),
-        finite_or_refused(lambda: solitary_wave_momentum(F_m, K, n, m, a)),
-        finite_or_refused(lambda: impact_amplitude(v0, K, n, m, a)),
-        finite_or_refused(lambda: impact_amplitude(v0, K, n, m, a, m_striker=striker * m)),
+        finite_or_refused(lambda: solitary_wave_energy(F_m, K=K, n=n, m=m, a=a)),
+        finite_or_refused(lambda: solitary_wave_momentum(F_m, K=K, n=n, m=m, a=a)),
+        finite_or_refused(lambda: impact_amplitude(v0, K=K, n=n, m=m, a=a)),
+        finite_or_refused(lambda: impact_amplitude(v0, K=K, n=n, m=m, a=a, m_striker=striker * m)),
     ):
         assert value is None or value >= 0
 
@@ -423,10 +423,10 @@ def test_torus_admissible_range(r, aspect, fraction, where, E, nu):
 @SETTINGS
 @given(ANY, ANY, ANY, ANY, ANY)
 def test_curves_any_input(delta_c, F, K_b, F_min, n):
-    finite_or_refused(lambda: series_extension(delta_c, F, K_b))
+    finite_or_refused(lambda: series_extension(F, delta_c=delta_c, K_b=K_b))
     finite_or_refused(lambda: fit_power_law_to_curve(np.array([F, 2.0, 3.0]), np.array([delta_c, 1.0, 2.0])))
     finite_or_refused(
-        lambda: fit_power_law_to_curve(np.geomspace(1.0, 100.0, 5), np.linspace(1.0, 2.0, 5), F_min, F_min * 10, n)
+        lambda: fit_power_law_to_curve(np.geomspace(1.0, 100.0, 5), np.linspace(1.0, 2.0, 5), F_min, F_min * 10, n=n)
     )
 
 
@@ -441,9 +441,9 @@ def test_curves_any_input(delta_c, F, K_b, F_min, n):
 )
 def test_curves_admissible_range(K, n, K_b, F_min, decades, fixed):
     F = np.geomspace(F_min, F_min * 10.0**decades, 12)
-    delta = finite_or_refused(lambda: series_extension((F / K) ** (1 / n), F, K_b))
+    delta = finite_or_refused(lambda: series_extension(F, delta_c=(F / K) ** (1 / n), K_b=K_b))
     assert delta is not None and np.all(np.diff(delta) > 0)
-    fit = finite_or_refused(lambda: fit_power_law_to_curve(F, delta, F[0], F[-1], n if fixed else None))
+    fit = finite_or_refused(lambda: fit_power_law_to_curve(F, delta, F[0], F[-1], n=n if fixed else None))
     if fit is not None:
         assert fit[0] > 0 and 1.0 - 1e-6 <= fit[1] <= n + 1e-6  # n of the series law lies in [1, n]
 
@@ -451,8 +451,8 @@ def test_curves_admissible_range(K, n, K_b, F_min, decades, fixed):
 @SETTINGS
 @given(ANY, ANY, ANY, ANY, ANY, st.integers(-2, 12), st.sampled_from(["in-plane", "out-of-plane"]))
 def test_ring_modes_any_input(R, r, E, nu, rho, k, kind):
-    finite_or_refused(lambda: ring_frequencies(R, r, E, nu, rho, k, kind))
-    finite_or_refused(lambda: inextensional_frequency(R, r, E, nu, rho, k, kind))
+    finite_or_refused(lambda: ring_frequencies(R, r, E, nu, rho=rho, k=k, kind=kind))
+    finite_or_refused(lambda: inextensional_frequency(R, r, E, nu, rho=rho, k=k, kind=kind))
 
 
 @SETTINGS
@@ -470,10 +470,20 @@ def test_ring_modes_admissible_range(r, aspect, E, nu, rho, k, kind, options):
     extension, shear, rotary, thick = options
     frequencies = finite_or_refused(
         lambda: ring_frequencies(
-            aspect * r, r, E, nu, rho, k, kind, extension=extension, shear=shear, rotary_inertia=rotary, thick=thick
+            aspect * r,
+            r,
+            E,
+            nu,
+            rho=rho,
+            k=k,
+            kind=kind,
+            extension=extension,
+            shear=shear,
+            rotary_inertia=rotary,
+            thick=thick,
         )
     )
-    classical = finite_or_refused(lambda: inextensional_frequency(aspect * r, r, E, nu, rho, k, kind))
+    classical = finite_or_refused(lambda: inextensional_frequency(aspect * r, r, E, nu, rho=rho, k=k, kind=kind))
     if frequencies is not None:
         assert np.all(frequencies >= 0) and np.all(np.diff(frequencies) >= 0)
     if classical is not None:
@@ -515,28 +525,28 @@ def test_hertz_pair_admissible_range(r1, aspect1, r_ratio, aspect2, E1, E2, nu1,
 
 @SETTINGS
 @given(ANY, ANY, ANY, ANY, ANY, ANY, ANY)
-def test_junction_any_input(Z1, Z2, F0, K, n, m, a):
+def test_junction_any_input(Z1, Z2, F_0, K, n, m, a):
     finite_or_refused(lambda: theory.junction_coefficients(Z1, Z2))
-    finite_or_refused(lambda: theory.impedance(model="power-law", F0=F0, K=K, n=n, m=m, a=a))
-    finite_or_refused(lambda: theory.impedance(model="dual-spring", F0=F0, K=K, n=n, m=m, a=a, K_b=Z1))
+    finite_or_refused(lambda: theory.impedance(model="power-law", F_0=F_0, K=K, n=n, m=m, a=a))
+    finite_or_refused(lambda: theory.impedance(model="dual-spring", F_0=F_0, K=K, n=n, m=m, a=a, K_b=Z1))
 
 
 @SETTINGS
 @given(
     Z1=log_uniform(1e-100, 1e100),
     Z2=log_uniform(1e-100, 1e100),
-    F0=log_uniform(1e-30, 1e30),
+    F_0=log_uniform(1e-30, 1e30),
     K=log_uniform(1e-30, 1e30),
     n=st.floats(1.0, 3.0),
     m=log_uniform(1e-30, 1e30),
     a=log_uniform(1e-30, 1e30),
 )
-def test_junction_admissible_range(Z1, Z2, F0, K, n, m, a):
+def test_junction_admissible_range(Z1, Z2, F_0, K, n, m, a):
     coefficients = finite_or_refused(lambda: theory.junction_coefficients(Z1, Z2))
     if coefficients is not None:
         R, T = coefficients
         assert -1 <= R <= 1 and 0 <= T <= 2
-    Z = finite_or_refused(lambda: theory.impedance(model="dual-spring", F0=F0, K=K, n=n, m=m, a=a, K_b=K))
+    Z = finite_or_refused(lambda: theory.impedance(model="dual-spring", F_0=F_0, K=K, n=n, m=m, a=a, K_b=K))
     assert Z is None or Z >= 0
 
 
