@@ -32,7 +32,17 @@ The numerical half of the paper (Sec. III.B): the chain integrated ring by ring.
 
 from . import signals
 from .chain import MODELS, STIFFNESS_SOURCES, SUPPORTS, Chain
-from .contact_bem import AnglePowerLaw, ContactCurve, HalfSpaceWarning, PressureMaps, angle_power_law, contact_curve
+from .contact_bem import (
+    HALF_SPACE_LIMIT,
+    AngleContact,
+    AnglePowerLaw,
+    ContactCurve,
+    HalfSpaceWarning,
+    PressureMaps,
+    angle_power_law,
+    contact_at_angle,
+    contact_curve,
+)
 from .effective_mass import fit_effective_mass, predict_effective_mass
 from .fit import (
     DataError,
@@ -106,6 +116,9 @@ __all__ = [
     "HalfSpaceWarning",
     "angle_power_law",
     "AnglePowerLaw",
+    "contact_at_angle",
+    "AngleContact",
+    "HALF_SPACE_LIMIT",
     "read_traces",
     "read_static",
     "read_speed_amplitude",

@@ -61,11 +61,12 @@ def _ring(args) -> int:
         crossover_force,
         local_exponent,
         minimum_contact_angle,
-        series_displacement,
         si_to_n_per_mm,
         solitary_wave_speed,
         solitary_wave_width,
     )
+
+    from .contact_bem import HALF_SPACE_LIMIT, NUMERICAL, contact_at_angle
 
     aspect = args.R / args.r
     opt.check_geometry(aspect, [args.angle], chain=False, given="arguments --R and --r", two_patches=True)
@@ -74,26 +75,21 @@ def _ring(args) -> int:
         raise ValueError(f"argument --window: the force window needs F_min < F_max, got {F_lo:g} {F_hi:g} N")
     given = f"the ring of --R {args.R:g} m and --r {args.r:g} m"
     F, ratio = args.force, args.m_eff_ratio
-    angle = math.radians(args.angle)
-    bem = None  # below theta_min: the numerical contact (two patches), fitted over the window
-    if angle <= float(minimum_contact_angle(args.R, args.r)):
-        from .contact_bem import angle_power_law
-
-        if not F_lo <= F <= F_hi:
-            raise ValueError(f"argument --force: below arccos(1 - 2r/R) the force must lie within the --window "
-                             f"{F_lo:g} {F_hi:g} N, got {F:g} N")  # fmt: skip
-        # Mass, spacing and K_b do not depend on the angle; the contact is the numerical one.
-        ring = opt.ring_of(args.R, args.r, args.material, 90.0, given, thin=args.thin)
-        with opt.computing(f"the numerical contact of {given} at --angle {args.angle:g} deg"):
-            bem = angle_power_law(ring.R, ring.r, ring.material.E, ring.material.nu, angle, ring.K_b, (F_lo, F_hi))
-        K, n, K_c = bem.K, bem.n, bem.K_c
-    else:
-        ring = opt.ring_of(args.R, args.r, args.material, args.angle, given, thin=args.thin, window=args.window)
-        K, n = ring.power_law(F_lo, F_hi)
-        K_c = ring.K_c
+    # Mass, spacing and K_b do not depend on the angle; the contact is Hertz's or the numerical one
+    # (ringchain.numerics.contact_at_angle, the choice the paper's angle table makes too).
+    ring = opt.ring_of(args.R, args.r, args.material, 90.0, given, thin=args.thin)
     mat = ring.material
+    where = f"{given} at --angle {args.angle:g} deg, --force {F:g} N and --window {F_lo:g} {F_hi:g} N"
+    with opt.computing(f"the contact of {where}"):
+        try:
+            contact = contact_at_angle(ring.R, ring.r, mat.E, mat.nu, math.radians(args.angle), K_b=ring.K_b,
+                                       window=(F_lo, F_hi), forces=[F])  # fmt: skip
+        except RuntimeError as exc:  # the contact solver's own failure, in one line like every other
+            raise ValueError(opt.one_line(exc)) from None
+    K, n, K_c = contact.K, contact.n, contact.K_c
     m = ratio * ring.mass
     lowest = math.degrees(float(minimum_contact_angle(ring.R, ring.r)))
+    top = max(F_hi, F)
     chain_note = "yes" if ring.can_form_chain else (
         f"no: R/r < {MIN_CHAIN_ASPECT_RATIO:g}, two rings interlock but a chain cannot form")  # fmt: skip
     with opt.computing(f"{given} at --force {F:g} N"):
@@ -101,18 +97,25 @@ def _ring(args) -> int:
         n_star = float(local_exponent(F_star, K_c=K_c, K_b=ring.K_b))
         V_s = float(solitary_wave_speed(F, K=K, n=n, m=m, a=ring.spacing))
         width = float(solitary_wave_width(n=n, a=ring.spacing))
-        extension = float(series_displacement(F, K_c=K_c, K_b=ring.K_b) if bem is None else bem.extension(F))
-        n_F = float(ring.local_exponent(F) if bem is None else bem.local_exponent(F))
-    contact_line = ("K_c, Hertz contact (Eq. 1)", f"{K_c:.4e} N/m^1.5")
-    if bem is not None:
-        contact_line = (f"K_c, two patches (BEM, tilt {math.degrees(bem.curve.tilt):.1f} deg)",
+        extension = float(contact.extension(F))
+        n_F = float(contact.local_exponent(F))
+    if contact.method == NUMERICAL:
+        patches = "two patches" if contact.n_patches == 2 else "one patch"
+        contact_line = (f"K_c, {patches} (BEM, tilt {math.degrees(contact.curve.tilt):.1f} deg)",
                         f"{K_c:.4e} N/m^1.5 (F = K_c delta^1.5 fitted over {F_lo:g}-{F_hi:g} N; contact up to "
-                        f"{bem.max_extent_over_r:.2f} r)")  # fmt: skip
+                        f"{contact.extent_over_r:.2f} r at {top:g} N)")  # fmt: skip
+    else:
+        contact_line = ("K_c, Hertz contact (Eq. 1)",
+                        f"{K_c:.4e} N/m^1.5 (ellipse up to {contact.extent_over_r:.3f} r at {top:g} N)")  # fmt: skip
+    if contact.handover is None:
+        hertz_range = f"none within the half-space limit at {top:g} N"
+    else:
+        hertz_range = f"within the half-space limit up to {top:g} N above {math.degrees(contact.handover):.2f} deg"
     lines = [
         ("geometry", f"R = {ring.R * 1e3:g} mm, r = {ring.r * 1e3:g} mm, "
                      f"R/r = {opt.distinct(ring.aspect_ratio, MIN_CHAIN_ASPECT_RATIO)}"),
         ("material", f"{mat.name}: E = {mat.E / 1e9:g} GPa, nu = {mat.nu:g}, rho = {mat.rho:g} kg/m^3"),
-        ("contact angle", f"{args.angle:g} deg (single Hertz contact above {lowest:.2f} deg)"),
+        ("contact angle", f"{args.angle:g} deg (single Hertz contact above {lowest:.2f} deg; {hertz_range})"),
         ("forms a chain", chain_note),
         ("ring mass m0", f"{ring.mass * 1e3:.4g} g"),
         ("spacing a = 2(R - r)", f"{ring.spacing * 1e3:.4g} mm"),
@@ -128,7 +131,13 @@ def _ring(args) -> int:
     pad = max(len(k) for k, _ in lines)
     for key, value in lines:
         print(f"{key.ljust(pad)}  {value}")
-    return 0
+    if contact.within_half_space:
+        return 0
+    print(f"ringchain ring: warning: the contact reaches {contact.extent_over_r:.2f} r from its centre at {top:g} N, "
+          f"beyond the half-space limit {HALF_SPACE_LIMIT:g} r of both contact models, so K_c, K, n and V_s above "
+          f"extrapolate them: keep --window's F_MAX and --force below about {contact.limit_force:.3g} N",
+          file=sys.stderr)  # fmt: skip
+    return 1
 
 
 # -- ringchain simulate ------------------------------------------------------------------------------

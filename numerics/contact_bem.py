@@ -54,6 +54,7 @@ where we warn (:class:`HalfSpaceWarning`); the half-lengths are in
 from __future__ import annotations
 
 import dataclasses
+import math
 import warnings
 from dataclasses import dataclass
 
@@ -65,6 +66,8 @@ __all__ = [
     "ContactCurve",
     "PressureMaps",
     "contact_curve",
+    "contact_at_angle",
+    "AngleContact",
     "angle_power_law",
     "AnglePowerLaw",
     "HalfSpaceWarning",
@@ -100,6 +103,10 @@ class HalfSpaceWarning(UserWarning):
 
 class ResolutionWarning(UserWarning):
     """The force did not converge to :data:`RESOLUTION_TOLERANCE` within the allowed refinements."""
+
+
+class _OffTheTube(RuntimeError):
+    """A ray from the plane of the maps misses a torus: the grid reaches round the side of the tube."""
 
 
 @dataclass(frozen=True)
@@ -276,7 +283,7 @@ class _Tori:
             s = s - update
             if np.all(np.abs(update) < tolerance):
                 return s
-        raise RuntimeError("ray casting onto the torus did not converge: the window reaches too far round the tube")
+        raise _OffTheTube("ray casting onto the torus did not converge: the window reaches too far round the tube")
 
     def gap(self, x, y):
         """Gap (m) along the contact normal at points (x, y) of the plane of the maps.
@@ -539,7 +546,29 @@ def contact_curve(R, r, E, nu, angle, forces, *, frame="tangent", points_across=
     tori = _Tori(R, r, angle, frame)
     loads = tori.normal_force_per_patch(forces)
     A, B = _curvatures(tori, 1e-3 * r)
+    _check_isolated(tori, B)
     _check_resolvable(tori, E_star, (A, B), forces, loads)
+    with np.errstate(over="ignore"):  # a force so large that the estimate overflows is round the tube too
+        estimate = np.sqrt(_hertz_sphere_approach(loads[-1], E_star, (A, B)) / (2 * np.sqrt(A * B)))
+    if not estimate < r:  # the contact radius of the Hertz sphere of the local curvatures
+        raise _round_the_tube(forces[-1])
+    try:
+        return _curve(tori, E_star, forces, loads, (A, B), points_across)
+    except _OffTheTube:
+        raise _round_the_tube(forces[-1]) from None
+
+
+def _round_the_tube(force):
+    return ValueError(
+        f"the contact reaches round the tube at {force:.3g} N: the window that holds it takes in the sides of the "
+        f"tubes, where no half-space describes the surfaces (limit {HALF_SPACE_LIMIT:g} r); ask for smaller forces"
+    )
+
+
+def _curve(tori, E_star, forces, loads, curvatures, points_across):
+    """:func:`contact_curve` of checked inputs."""
+    R, r, angle, frame = tori.R, tori.r, tori.angle, tori.frame
+    A, B = curvatures
 
     # Pilot: window from the rigid overlap at twice a Hertz-sphere estimate of the approach, coarse grid.
     x_lo, x_hi, y_half = _overlap_box(tori, 2 * _hertz_sphere_approach(loads[-1], E_star, (A, B)), limit=0.9 * r)
@@ -584,7 +613,7 @@ def contact_curve(R, r, E, nu, angle, forces, *, frame="tangent", points_across=
             f"the contact force changed by {error:.2%} between grids after {_MAX_PASSES} refinements "
             f"(tolerance {RESOLUTION_TOLERANCE:.0%})",
             ResolutionWarning,
-            stacklevel=2,
+            stacklevel=3,
         )
     extent = solution["extent"]
     if np.any(extent > HALF_SPACE_LIMIT * r):
@@ -594,7 +623,7 @@ def contact_curve(R, r, E, nu, angle, forces, *, frame="tangent", points_across=
             f"(up to {extent.max() / r:.2f} r at {forces[-1]:.3g} N); the half-space model assumes it small "
             f"compared with the tube radius r (limit {HALF_SPACE_LIMIT:g} r)",
             HalfSpaceWarning,
-            stacklevel=2,
+            stacklevel=3,
         )
     mirrored = tori.n_patches == 2 and not grid.joint
     return ContactCurve(
@@ -612,6 +641,32 @@ def contact_curve(R, r, E, nu, angle, forces, *, frame="tangent", points_across=
         tilt=tori.tilt,
         resolution_error=error,
         grid=(grid.nx, grid.ny, grid.hx, grid.hy),
+    )
+
+
+def _check_isolated(tori, B):
+    """Refuse angles at which the gap curves away from the contact points across the bisector (B <= 0).
+
+    Just above 2 arcsin(r/R) the two contact points sit on the flanks of the tubes, and the gap across
+    them falls away instead of rising: the tori touch along lines, not at two points, and no
+    half-space contact of a point describes them.  The message names the angle where B = 0.
+    """
+    if B > 0:
+        return
+    from ringchain.theory import minimum_contact_angle, smallest_patch_angle
+    from scipy.optimize import brentq
+
+    def across(angle):
+        return _curvatures(_Tori(tori.R, tori.r, angle, tori.frame), 1e-3 * tori.r)[1]
+
+    lo, hi = tori.angle, float(minimum_contact_angle(tori.R, tori.r))
+    floor = float(smallest_patch_angle(tori.R, tori.r))
+    lowest = brentq(across, max(lo, floor), hi, xtol=1e-9) if across(hi) > 0 else hi
+    raise ValueError(
+        f"at {math.degrees(tori.angle):.6g} deg the gap between the tubes curves away from the contact points "
+        f"across the bisector (curvature {B:.3g} 1/m): the tori touch along lines there, not at two points, and "
+        f"the numerical contact does not apply; for R/r = {tori.R / tori.r:.6g} it needs the contact angle above "
+        f"about {math.degrees(lowest):.4g} deg"
     )
 
 
@@ -764,4 +819,208 @@ def angle_power_law(R, r, E, nu, angle, K_b, window=DEFAULT_FORCE_WINDOW, n_forc
         max_extent_over_r=float(curve.extent.max() / curve.r),
         curve=curve,
         K_b=float(K_b),
+    )
+
+
+# -- one contact at any angle: the closed form where it holds, the numerical contact elsewhere ----------------
+HERTZ, NUMERICAL = "hertz", "numerical"
+
+
+@dataclass(frozen=True)
+class AngleContact:
+    """The contact of two interlocked tori at one angle, from :func:`contact_at_angle`.
+
+    Attributes
+    ----------
+    angle : float
+        Contact angle, rad.
+    method : {"hertz", "numerical"}
+        The single-ellipse Hertz contact (paper Eq. (1), App. A) or the numerical contact of the exact
+        gap (:func:`contact_curve`).
+    K_c : float
+        Contact stiffness, N/m^1.5: Hertz's, or F = K_c delta^1.5 fitted over the window (numerical).
+    K, n : float
+        The power law F = K delta^n (N/m^n) of contact and bending in series, fitted over the window
+        (Eqs. (3)-(4)).
+    window : (float, float)
+        The force window of the fits, N.
+    K_b : float
+        Bending stiffness of one ring, N/m.
+    extent_over_r : float
+        Largest half-length of the contact over the tube radius, at the largest force computed: the
+        long semi-axis of Hertz's ellipse, or the largest patch of the numerical contact.
+    limit_force : float
+        Force, N, at which the contact reaches :data:`HALF_SPACE_LIMIT` r (interpolated in log-log
+        between computed forces; beyond them, extrapolated as F^(1/3), the Hertz growth).
+    handover : float or None
+        Angle, rad, above which Hertz's ellipse stays within :data:`HALF_SPACE_LIMIT` r up to the
+        largest force, so that the closed form is used; None if it does at no angle.
+    n_patches : int
+        Contact regions at the smallest force.
+    curve : ContactCurve or None
+        The numerical contact alone (None for the Hertz contact).
+    """
+
+    angle: float
+    method: str
+    K_c: float
+    K: float
+    n: float
+    window: tuple
+    K_b: float
+    extent_over_r: float
+    limit_force: float
+    handover: float | None
+    n_patches: int
+    curve: ContactCurve | None = None
+
+    @property
+    def within_half_space(self) -> bool:
+        """Whether the contact stays within :data:`HALF_SPACE_LIMIT` r at every force computed."""
+        return self.extent_over_r <= HALF_SPACE_LIMIT
+
+    def _numerical(self, F, values):
+        F = v.positive("F", F, "N")
+        series = self.curve.series(self.K_b)
+        if np.any(F < series.force[0]) or np.any(F > series.force[-1]):
+            raise ValueError(f"F must lie within the computed forces [{series.force[0]:g}, {series.force[-1]:g}] N")
+        return np.exp(np.interp(np.log(F), np.log(series.force), np.log(values(series))))
+
+    def extension(self, F):
+        """Extension (m) of contact and bending in series at force F (N), Eq. (3)."""
+        if self.curve is None:
+            from ringchain.theory import series_displacement
+
+            return series_displacement(F, K_c=self.K_c, K_b=self.K_b)
+        return self._numerical(F, lambda series: series.delta)
+
+    def local_exponent(self, F):
+        """Local exponent d ln F/d ln delta of contact and bending in series at force F (N)."""
+        if self.curve is None:
+            from ringchain.theory import local_exponent
+
+            return local_exponent(F, K_c=self.K_c, K_b=self.K_b)
+        return self._numerical(F, lambda series: series.local_exponent)
+
+
+def _hertz_semi_axis(R, r, E, nu, angle, force):
+    from ringchain.theory import contact_semi_axes
+
+    return float(contact_semi_axes(R, r, E, nu, angle, F=force)[0])
+
+
+def _handover(R, r, E, nu, force):
+    """The angle (rad) above which Hertz's long semi-axis at ``force`` stays within the half-space limit, or None."""
+    from ringchain.theory import minimum_contact_angle
+    from scipy.optimize import brentq
+
+    limit = HALF_SPACE_LIMIT * r
+
+    def excess(angle):
+        return _hertz_semi_axis(R, r, E, nu, angle, force) / limit - 1.0
+
+    if excess(np.pi / 2) > 0:
+        return None
+    lowest = float(minimum_contact_angle(R, r))
+    step = 1e-9 * (np.pi / 2 - lowest)
+    while True:  # the ellipse is a line at theta_min: a point just above it, still representable, brackets the root
+        try:
+            if excess(lowest + step) > 0:
+                break
+        except ValueError:  # within rounding of theta_min, the ellipse is too long to represent
+            pass
+        step *= 10.0
+    return float(brentq(excess, lowest + step, np.pi / 2, xtol=1e-12))
+
+
+def _limit_force(force, extent, limit):
+    """Force at which ``extent`` (rising with ``force``) reaches ``limit``: log-log interpolation, F^(1/3) beyond."""
+    extent = np.maximum.accumulate(np.asarray(extent, dtype=float))
+    if limit <= extent[0]:
+        return float(force[0] * (limit / extent[0]) ** 3)
+    if limit >= extent[-1]:
+        return float(force[-1] * (limit / extent[-1]) ** 3)
+    return float(np.exp(np.interp(np.log(limit), np.log(extent), np.log(force))))
+
+
+def contact_at_angle(R, r, E, nu, angle, *, K_b, window=DEFAULT_FORCE_WINDOW, forces=(), n_forces=15) -> AngleContact:
+    """The contact of two interlocked identical tori at any angle: Hertz's ellipse where it holds, else numerical.
+
+    Parameters
+    ----------
+    R, r, E, nu, angle : float
+        As :func:`contact_curve` (m, Pa, rad).
+    K_b : float
+        Bending stiffness of one ring, N/m (:func:`ringchain.theory.bending_stiffness`), in series
+        with the contact (Eq. (3)).
+    window : (float, float), optional
+        Force window of the fits, N (default 1 N to 100 N).
+    forces : sequence of float, optional
+        Further forces, N, at which :meth:`AngleContact.extension` and
+        :meth:`AngleContact.local_exponent` will be asked (the numerical contact is computed there
+        too, and every force counts for the choice and for the half-space limit).
+    n_forces : int, optional
+        Forces of the numerical contact, log-spaced over the window (default 15).
+
+    Returns
+    -------
+    AngleContact
+        K_c, K and n over the window, the extension and local exponent at any force computed, the
+        method used and the contact's size against its half-space limit.
+
+    Notes
+    -----
+    The single-ellipse Hertz contact (Eq. (1), App. A, elliptical above 90 deg) is a half-space
+    solution: it holds while the ellipse is small against the tube.  Its long semi-axis
+    (:func:`ringchain.theory.contact_semi_axes`) grows without bound as the angle falls to
+    theta_min = arccos(1 - 2r/R), and with it K_c.  So the closed form is used where that semi-axis,
+    at the largest force, stays within :data:`HALF_SPACE_LIMIT` r (above :attr:`AngleContact.handover`),
+    and the numerical contact of the exact gap (:func:`contact_curve`, two patches below theta_min)
+    everywhere else.  At the handover the two agree to the numerical contact's resolution (measured
+    2e-4 in K_c for the paper's ring), so K_c is continuous across it.  Below the handover the
+    numerical contact may itself exceed the limit: :attr:`AngleContact.within_half_space` says so,
+    and :attr:`AngleContact.limit_force` says up to which force it holds.  A contact that reaches
+    round the tube is refused (ValueError).  Beyond the paper (which uses Abaqus below 45 deg).
+
+    Examples
+    --------
+    >>> contact = contact_at_angle(22.5e-3, 2.5e-3, 193e9, 0.29, np.radians(60), K_b=3.3e6)
+    >>> contact.method, round(math.degrees(contact.handover), 2), contact.within_half_space
+    ('hertz', 55.84, True)
+    """
+    from ringchain.theory import fit_power_law, hertz_stiffness, minimum_contact_angle
+
+    F_lo, F_hi = (float(f) for f in v.positive("window", window, "N"))
+    if not F_lo < F_hi:
+        raise ValueError(f"the force window needs F_min < F_max, got F_min = {F_lo:g} N and F_max = {F_hi:g} N")
+    K_b = float(v.positive("K_b", K_b, "N/m"))
+    extra = v.positive("forces", forces, "N").ravel()
+    angle = float(v.as_float("angle", angle))
+    top = max(F_hi, float(extra.max())) if extra.size else F_hi
+    handover = _handover(R, r, E, nu, top)
+    if handover is not None and angle > handover and angle > float(minimum_contact_angle(R, r)):
+        K_c = float(hertz_stiffness(R, r, E, nu, angle))
+        K, n = (float(x) for x in fit_power_law(K_c=K_c, K_b=K_b, F_min=F_lo, F_max=F_hi))
+        extent = _hertz_semi_axis(R, r, E, nu, angle, top) / r
+        return AngleContact(angle, HERTZ, K_c, K, n, (F_lo, F_hi), K_b, extent,
+                            top * (HALF_SPACE_LIMIT / extent) ** 3, handover, 1)  # fmt: skip
+    computed = np.union1d(np.geomspace(F_lo, F_hi, int(n_forces)), extra)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", HalfSpaceWarning)  # recorded in the result instead
+        curve = contact_curve(R, r, E, nu, angle, computed)
+    K_c, _ = curve.fit((F_lo, F_hi), n=1.5)
+    K, n = curve.series(K_b).fit((F_lo, F_hi))
+    return AngleContact(
+        angle=angle,
+        method=NUMERICAL,
+        K_c=float(K_c),
+        K=float(K),
+        n=float(n),
+        window=(F_lo, F_hi),
+        K_b=K_b,
+        extent_over_r=float(curve.extent.max() / curve.r),
+        limit_force=_limit_force(curve.force, curve.extent, HALF_SPACE_LIMIT * curve.r),
+        handover=handover,
+        n_patches=int(curve.n_patches[0]),
+        curve=curve,
     )

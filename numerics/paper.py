@@ -316,50 +316,49 @@ def static_table() -> Table:
     )  # fmt: skip
 
 
-def _single_contact_ring(aspect, angle):
-    """The ring of aspect ratio ``aspect`` at contact ``angle`` (rad), or None below the single-contact angle."""
-    from ringchain.theory import Ring, minimum_contact_angle
-
-    ring_r = paper_data.TUBE_RADIUS
-    if angle <= float(minimum_contact_angle(aspect * ring_r, ring_r)):
-        return None
-    return Ring.from_aspect_ratio(aspect, r=ring_r, angle=angle)
-
-
 def angle_table() -> Table:
     """Exponent against contact angle beside Table II (Sec. IV.B, App. A).
 
-    The closed-form Hertz contact (elliptical, App. A) where one contact exists, and at every
-    angle the numerical contact of the exact torus gap (:func:`~ringchain.numerics.contact_curve`,
-    two patches below arccos(1 - 2r/R), each in its tangent plane) in series with bending.
+    Each angle's contact from :func:`~ringchain.numerics.contact_at_angle`, the choice ``ringchain ring``
+    makes too: the closed-form Hertz ellipse (App. A) where it stays within the half-space limit over
+    the fit's window, the numerical contact of the exact torus gap (:func:`~ringchain.numerics.contact_curve`,
+    two patches below arccos(1 - 2r/R), each in its tangent plane) elsewhere; in series with bending.
     """
     from ringchain.theory import STAINLESS_STEEL_304, Ring, minimum_contact_angle, si_to_n_per_mm
 
-    from .contact_bem import angle_power_law
+    from .contact_bem import HALF_SPACE_LIMIT, HERTZ, contact_at_angle
 
     aspect = paper_data.TABLE_II_ASPECT_RATIO
     lowest = math.degrees(float(minimum_contact_angle(aspect, 1.0)))
     ring90 = Ring.from_aspect_ratio(aspect, r=paper_data.TUBE_RADIUS)
-    rows, notes = [], []
+    steel = STAINLESS_STEEL_304
+    rows, notes, handover = [], [], None
     for angle_deg, (K_paper, n_paper, _) in paper_data.TABLE_II.items():
-        theory = _single_contact_ring(aspect, math.radians(angle_deg))
-        if theory is None:
-            cells = ["n/a"] * 4
-            notes.append(f"{angle_deg:g} deg: no single Hertz contact below {lowest:.1f} deg = arccos(1 - 2r/R); "
-                         "the tori touch at two patches (the paper's Abaqus regime, Sec. IV.B): BEM only")  # fmt: skip
-        else:
-            K, n = theory.power_law()
-            cells = [f"{theory.K_c:.4e}", _g(theory.crossover_force), _g(si_to_n_per_mm(K, n=n)), f"{n:.3f}"]
-        bem = angle_power_law(ring90.R, ring90.r, STAINLESS_STEEL_304.E, STAINLESS_STEEL_304.nu,
-                              math.radians(angle_deg), ring90.K_b)  # fmt: skip
-        cells += [_g(si_to_n_per_mm(bem.K, n=bem.n)), f"{bem.n:.3f}"]
-        rows.append([f"{angle_deg:.0f}", *cells, _as_printed(K_paper), _as_printed(n_paper)])
+        contact = contact_at_angle(ring90.R, ring90.r, steel.E, steel.nu, math.radians(angle_deg), K_b=ring90.K_b)
+        handover = contact.handover
+        crossover = ring90.K_b**3 / contact.K_c**2
+        method = "Hertz" if contact.method == HERTZ else f"BEM, {contact.n_patches} patch" + (
+            "es" if contact.n_patches > 1 else "")  # fmt: skip
+        rows.append([
+            f"{angle_deg:.0f}", method, f"{contact.K_c:.4e}", _g(crossover), _g(si_to_n_per_mm(contact.K, n=contact.n)),
+            f"{contact.n:.3f}", f"{contact.extent_over_r:.3f}", _as_printed(K_paper), _as_printed(n_paper),
+        ])  # fmt: skip
+        if not contact.within_half_space:
+            reach = f"the contact reaches {contact.extent_over_r:.2f} r at 100 N"
+            within = f"within it up to {contact.limit_force:.3g} N"
+            notes.append(f"{angle_deg:g} deg: {reach}, beyond the half-space limit {HALF_SPACE_LIMIT:g} r ({within})")
+    above = "at no angle" if handover is None else f"above {math.degrees(handover):.2f} deg"
     return _table(
         f"Exponent against contact angle (paper Sec. IV.B, App. A), R/r = {aspect:g}",
-        ["angle (deg)", "K_c (N/m^1.5)", "F* (N)", "K (N/mm^n)", "n", "K BEM", "n BEM", "K Table II", "n Table II"],
+        ["angle (deg)", "contact", "K_c (N/m^1.5)", "F* (N)", "K (N/mm^n)", "n", "contact/r", "K Table II",
+         "n Table II"],
         rows,
-        [*notes, "BEM: numerical contact of the exact torus gap (ringchain.numerics.contact_curve, each patch in its "
-         "tangent plane) in series with bending, fitted over 1-100 N",
+        [*notes,
+         f"contact: Hertz's ellipse (Eq. 1, App. A) where it stays within {HALF_SPACE_LIMIT:g} r up to 100 N ({above}; "
+         f"a single contact exists above {lowest:.2f} deg = arccos(1 - 2r/R)), else the numerical contact of the exact "
+         "torus gap (BEM, ringchain.numerics.contact_at_angle; two patches below arccos(1 - 2r/R), the paper's "
+         "Abaqus regime); in series with bending, fitted over 1-100 N",
+         "contact/r: largest half-length of the contact at 100 N over the tube radius",
          f"Table II's rings: R/r = {aspect:g} (paper_data.TABLE_II_ASPECT_RATIO; Sec. IV.B says R = 20 mm)"],
     )  # fmt: skip
 

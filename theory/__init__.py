@@ -8,6 +8,7 @@ Static theory of one contact (paper Sec. II, Eqs. 1-4, App. A):
 
 - :func:`hertz_stiffness` -- K_c of two tori, circular or elliptical contact (Eq. 1);
 - :func:`hertz_stiffness_pair` -- K_c of two different tori (radii, materials), for chains that vary;
+- :func:`contact_semi_axes` -- the semi-axes of the contact ellipse under a force (where it outgrows the tube);
 - :func:`torus_gap`, :func:`contact_patches` -- the exact gap of two tori beyond its quadratic
   (Hertz) part, and the two contact points it has below theta_min (:mod:`.contact`, Sec. 4);
 - :func:`bending_stiffness` -- K_b of one ring by Castigliano (Eq. 2);
@@ -59,6 +60,7 @@ from .contact import (
     contact_ellipse,
     contact_modulus,
     contact_patches,
+    contact_semi_axes,
     hertz_stiffness,
     hertz_stiffness_pair,
     minimum_contact_angle,
@@ -104,6 +106,7 @@ __all__ = [
     "hertz_stiffness",
     "hertz_stiffness_pair",
     "contact_ellipse",
+    "contact_semi_axes",
     "minimum_contact_angle",
     "contact_patches",
     "smallest_patch_angle",

@@ -62,6 +62,7 @@ __all__ = [
     "hertz_circular",
     "hertz_elliptical",
     "hertz_elliptical_monomial",
+    "hertz_semi_axes",
     "elliptic_placeholders",
     "ellipse_shape_ratio",
     "minimum_angle",
@@ -79,6 +80,7 @@ __all__ = [
     "effective_modulus_pair",
     "minimum_angle_pair",
     "contact_ellipse",
+    "contact_semi_axes",
     "minimum_contact_angle",
     "gap_symbols",
     "torus_distance_expr",
@@ -241,6 +243,28 @@ def hertz_elliptical():
     K_m, D_m = elliptic_placeholders()
     K, E = sp.elliptic_k(m), sp.elliptic_e(m)
     return K_c.subs({K_m: K, D_m: (K - E) / m}), Es
+
+
+def hertz_semi_axes():
+    """(a, b, E*): the semi-axes a >= b of the contact ellipse under the load P (Johnson Sec. 4.2).
+
+    From the same relations as :func:`hertz_elliptical_monomial` (P = 2/3 pi a b p0,
+    A = p0 b D_m/(E* a^2), b = a sqrt(1 - m)), solved for a instead of the approach:
+    a^3 = 3 P D_m/(2 pi A E*) with D_m = (K(m) - E(m))/m (:func:`elliptic_placeholders`); at
+    m = 0 (D_m = pi/4, A = 1/(2 R_e)) Hertz's sphere a^3 = 3 P R_e/(4 E*).  The half-space
+    model holds while a is small against the tube (:data:`ringchain.numerics.HALF_SPACE_LIMIT`).
+    """
+    s = symbols()
+    P, A, m, a, p0 = (s[k] for k in ("P", "A", "m", "a", "p0"))
+    Es = sp.Symbol("E^*", positive=True)
+    _, D_m = elliptic_placeholders()
+    b_of_a = a * sp.sqrt(1 - m)
+    _, p0_of_a = sp.solve_linear(A - p0 * b_of_a * D_m / (Es * a**2), symbols=[p0])
+    per_cube = sp.cancel(sp.Rational(2, 3) * sp.pi * a * b_of_a * p0_of_a / a**3)
+    if a in per_cube.free_symbols:  # pragma: no cover - derivation check
+        raise RuntimeError("Johnson's load is not proportional to a^3")
+    a_of_P = (P / per_cube) ** sp.Rational(1, 3)
+    return a_of_P, a_of_P * sp.sqrt(1 - m), Es
 
 
 def ellipse_shape_ratio():
@@ -536,6 +560,18 @@ def _stiffness_of_curvature_pair():
 
 
 @derived
+def _long_semi_axis():
+    """a(P, A, m_1, E, nu) of :func:`hertz_semi_axes`, with D_m = R_D(0, m_1, 1)/3 (exact as m -> 0 and m -> 1)."""
+    s = symbols()
+    a, _, Es = hertz_semi_axes()
+    _, D_m = elliptic_placeholders()
+    a = a.subs({Es: effective_modulus(), D_m: carlson_rd(0, s["m_1"], 1) / 3})
+    if s["m"] in a.free_symbols:  # pragma: no cover - derivation check
+        raise RuntimeError("the long semi-axis depends on m other than through D_m")
+    return (s["P"], s["A"], s["m_1"], s["E"], s["nu"]), a
+
+
+@derived
 def _stiffness_elliptical():
     """:func:`elliptical_table` as generated code (a constant array: no arguments)."""
     table = elliptical_table()
@@ -715,6 +751,50 @@ def contact_ellipse(R, r, angle=np.pi / 2):
         m = np.minimum(log_ratio * _from_table(1, np.log1p(log_ratio)), 1.0)  # 1 - m < 1e-16 rounds to 1
     reason = "radii (the curvatures 1/r overflow)"
     return v.finite_result(A, "A", reason), v.finite_result(B, "B", reason), m
+
+
+def contact_semi_axes(R, r, E, nu, angle=np.pi / 2, *, F):
+    """Semi-axes a >= b of the Hertz contact ellipse of two identical tori under the force F, m.
+
+    Parameters
+    ----------
+    R, r, E, nu, angle : array_like
+        As :func:`hertz_stiffness` (m, Pa, rad; angle in (theta_min, pi/2], default pi/2).
+    F : array_like
+        Force pressing the tori together, N, > 0 (keyword-only: it would pass silently for R).
+
+    Returns
+    -------
+    a, b : ndarray
+        Long and short semi-axis, m; a along the bisector of the ring planes (the direction of the
+        smaller relative curvature A), b = a sqrt(1 - m) across it.
+
+    Notes
+    -----
+    Johnson's elliptical solution (Contact Mechanics, Sec. 4.2; :func:`hertz_semi_axes`),
+    a^3 = 3 F (K(m) - E(m))/(2 pi m A E*), with A and m from :func:`contact_ellipse`; at
+    pi/2 the sphere of App. A, a^3 = 3 F R'/(4 E*).  The half-space solution, and with it the
+    single-ellipse K_c of Eq. (1), needs a small against the tube radius r: as theta falls to
+    theta_min the ellipse grows into a line at any force.  ``b`` rounds to 0 when b/a < 1e-8.
+
+    Examples
+    --------
+    >>> a, b = contact_semi_axes(22.5e-3, 2.5e-3, 193e9, 0.29, F=100.0)
+    >>> round(float(a) * 1e3, 4), bool(a == b)  # mm: a circle at 90 deg
+    (0.1267, True)
+    """
+    R, r = _check_geometry(R, r)
+    E, nu = _check_material(E, nu)
+    angle = _check_angle(angle)
+    F = v.positive("F", F, "N")
+    v.broadcast_shape(R=R, r=r, E=E, nu=nu, angle=angle, F=F)
+    A, _, m = contact_ellipse(R, r, angle)
+    with np.errstate(all="ignore"):
+        m_1 = 1.0 - m
+        a = np.asarray(_long_semi_axis(F, A, m_1, E, nu), dtype=float)
+        b = a * np.sqrt(m_1)
+    reason = "force, radii and elastic constants"
+    return v.finite_result(a, "the semi-axis a", reason), v.finite_result(b, "the semi-axis b", reason)
 
 
 def hertz_stiffness(R, r, E, nu, angle=np.pi / 2):

@@ -93,6 +93,7 @@ def test_every_public_function_is_covered():
         "solitary_wave_energy", "solitary_wave_momentum", "impact_amplitude", "contact_modulus",
         "torus_gap", "contact_patches", "smallest_patch_angle", "series_extension",
         "fit_power_law_to_curve", "ring_frequencies", "inextensional_frequency",
+        "contact_semi_axes",  # issue 24: its block below the contact's
     }  # fmt: skip
     data = {"paper_data", "DEFAULT_FORCE_WINDOW", "MIN_CHAIN_ASPECT_RATIO", "PAPER_TUBE_RADIUS", "MATERIALS"}
     data |= {"curved_beam"}  # a module: its public functions are ring_frequencies and inextensional_frequency
@@ -134,6 +135,34 @@ def test_hertz_admissible_range(r, aspect, E, nu, fraction):
     if shape is not None:
         A, B, m = shape
         assert 0 < A <= B and 0 <= m <= 1
+
+
+# --- issue 24: the semi-axes of the contact ellipse (item 3) ------------------------------------------
+
+
+@SETTINGS
+@given(ANY, ANY, ANY, ANY, ANY, ANY)
+def test_semi_axes_any_input(R, r, E, nu, angle, F):
+    finite_or_refused(lambda: theory.contact_semi_axes(R, r, E, nu, angle, F=F))
+
+
+@SETTINGS
+@given(
+    r=log_uniform(1e-12, 1e6),
+    aspect=st.one_of(log_uniform(2.0 + 1e-9, 1e12), st.floats(2.0, 2.1, exclude_min=True)),
+    E=log_uniform(1e3, 1e15),
+    nu=st.floats(-0.999, 0.499),
+    fraction=st.one_of(st.floats(0.0, 1.0), log_uniform(1e-17, 1e-3)),
+    F=log_uniform(1e-30, 1e30),
+)
+def test_semi_axes_admissible_range(r, aspect, E, nu, fraction, F):
+    R = aspect * r
+    lowest = float(minimum_contact_angle(R, r))
+    angle = min(lowest + fraction * (np.pi / 2 - lowest), np.pi / 2)
+    axes = finite_or_refused(lambda: theory.contact_semi_axes(R, r, E, nu, angle, F=F))
+    if axes is not None:
+        a, b = axes
+        assert a > 0 and 0 <= b <= a
 
 
 @SETTINGS
