@@ -923,14 +923,16 @@ def _handover(R, r, E, nu, force):
         return None
     lowest = float(minimum_contact_angle(R, r))
     step = 1e-9 * (np.pi / 2 - lowest)
-    while True:  # the ellipse is a line at theta_min: a point just above it, still representable, brackets the root
+    while lowest + step < np.pi / 2:  # the ellipse is a line at theta_min: a point just above it brackets the root
         try:
-            if excess(lowest + step) > 0:
-                break
+            above = excess(lowest + step) > 0
         except ValueError:  # within rounding of theta_min, the ellipse is too long to represent
-            pass
-        step *= 10.0
-    return float(brentq(excess, lowest + step, np.pi / 2, xtol=1e-12))
+            step *= 10.0
+            continue
+        if not above:  # within the limit 1e-9 of the range above theta_min: the handover is closer still
+            return lowest + step
+        return float(brentq(excess, lowest + step, np.pi / 2, xtol=1e-12))
+    return None  # pragma: no cover - excess(pi/2) <= 0 was checked
 
 
 def _limit_force(force, extent, limit):

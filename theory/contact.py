@@ -423,6 +423,9 @@ def carlson_form(expr):
 #: largest ln(B/A) covered: 690, an ellipse with b/a about 1e-151, beyond any use (the single
 #: Hertz ellipse needs theta well above theta_min); the last interval ends where m_1 = 1 - m
 #: reaches the smallest normal double.
+#: Beyond this length (m) its square overflows a double.
+_SQUARE_LIMIT = float(np.sqrt(np.finfo(float).max))
+
 _TABLE_STEP = 0.025
 _TABLE_DEGREE = 5
 _TABLE_MAX_LOG_RATIO = 690.0
@@ -684,6 +687,10 @@ def _ellipse(R, r, angle):
         bad = ~(np.broadcast_to(A, shape) > 0)
         given = np.broadcast_to(angle, shape)[bad].min()
         limit = np.broadcast_to(minimum_contact_angle(R, r), shape)[bad].max()
+        with np.errstate(over="ignore"):
+            overflowed = not np.all(np.isfinite(r * (R - r)))
+        if overflowed and given > limit:  # above theta_min, A vanished in rounding: r (R - r) overflowed
+            v.finite_result(np.inf, "the relative curvature A", "radii (r (R - r) overflows)")
         raise ValueError(
             f"angle {v.show(given)} rad ({np.degrees(given):.6g} deg) is at or below theta_min = "
             f"{v.show(limit)} rad ({np.degrees(limit):.6g} deg) = arccos(1 - 2r/R), to double precision: "
@@ -1144,8 +1151,11 @@ def torus_distance(X, Y, Z, R, r):
     :func:`torus_distance_expr`.  Undefined on the axis X = Z = 0.
     """
     R, r = _check_geometry(R, r)
-    D, *gradient = _distance(*(v.as_float(name, w) for name, w in zip("XYZ", (X, Y, Z), strict=True)), R, r)
-    return D, tuple(gradient)
+    points = (v.as_float(name, w) for name, w in zip("XYZ", (X, Y, Z), strict=True))
+    with np.errstate(all="ignore"):  # overflow is reported by value
+        D, *gradient = _distance(*points, R, r)
+    reason = "points and radii (or points on the axis X = Z = 0)"
+    return v.finite_result(D, "the distance", reason), tuple(v.finite_result(g, "the normal", reason) for g in gradient)
 
 
 def smallest_patch_angle(R, r):
@@ -1189,11 +1199,13 @@ def torus_gap(x, y, R, r, angle):
     R, r = _check_geometry(R, r)
     angle = v.in_range("angle", angle, 0.0, np.pi / 2)
     x, y = v.as_float("x", x), v.as_float("y", y)
-    with np.errstate(invalid="ignore"):
+    with np.errstate(all="ignore"):
         g = np.asarray(_gap(x, y, R, r, angle), dtype=float)
     if np.any(np.isnan(g)):
+        if R.max() > _SQUARE_LIMIT:  # R^2 overflows: the gap is lost to rounding, whatever the point
+            v.finite_result(g, "the gap", "radii")
         raise ValueError("x, y must lie over both tubes (|offset across each tube| < r); some points do not")
-    return g
+    return v.finite_result(g, "the gap", "positions and radii")
 
 
 def contact_patches(R, r, angle):

@@ -632,9 +632,14 @@ def _ring_inputs(R, r, E, nu, rho, k):
     R, r, E, nu = _ring_and_material(R, r, E, nu)
     rho = v.positive("rho", rho, "kg/m^3")
     k = v.as_float("k", k)
-    if np.any((k != np.round(k)) | (k < 2)):
-        raise ValueError(f"k must be an integer circumferential order >= 2, got {k!r}")
+    bad = (k != np.round(k)) | (k < 2)
+    if np.any(bad):
+        raise ValueError(f"k must be an integer circumferential order >= 2, got {v.show(k[bad] if k.ndim else k)}")
     return R, r, E, nu, rho, k
+
+
+#: What is beyond double precision in the frequencies of a ring.
+_EXTREME = "radii, elastic constants, density and order"
 
 
 def inextensional_frequency(R, r, E, nu, *, rho, k, kind="in-plane"):
@@ -664,7 +669,9 @@ def inextensional_frequency(R, r, E, nu, *, rho, k, kind="in-plane"):
     """
     R, r, E, nu, rho, k = _ring_inputs(R, r, E, nu, rho, k)
     func = _inextensional_in_plane if _plane(kind) == "in-plane" else _inextensional_out_of_plane
-    return func(k, R, r, E, nu, rho) / (2.0 * np.pi)
+    with np.errstate(all="ignore"):  # overflow is reported by value
+        frequency = np.asarray(func(k, R, r, E, nu, rho), dtype=float) / (2.0 * np.pi)
+    return v.finite_result(frequency, "the frequency", _EXTREME)
 
 
 def ring_frequencies(R, r, E, nu, *, rho, k, kind="in-plane", extension=True, shear=True, rotary_inertia=True,
@@ -696,10 +703,20 @@ def ring_frequencies(R, r, E, nu, *, rho, k, kind="in-plane", extension=True, sh
     >>> round(float(f[0] / inextensional_frequency(22.5e-3, 2.5e-3, 193e9, 0.29, rho=8000.0, k=2)), 3)
     0.984
     """
-    from scipy.linalg import eigh, null_space
-
     R, r, E, nu, rho, k = (float(x) for x in _ring_inputs(R, r, E, nu, rho, k))
     kind = _plane(kind)
+    try:
+        with np.errstate(all="ignore"):  # overflow is reported by value
+            frequencies = _ring_frequencies(R, r, E, nu, rho, k, kind, extension, shear, rotary_inertia, thick)
+    except (OverflowError, ZeroDivisionError, np.linalg.LinAlgError, ValueError):  # infinities met on the way
+        frequencies = np.array([np.inf])
+    return v.finite_result(frequencies, "a frequency", _EXTREME)
+
+
+def _ring_frequencies(R, r, E, nu, rho, k, kind, extension, shear, rotary_inertia, thick):
+    """:func:`ring_frequencies` of checked numbers."""
+    from scipy.linalg import eigh, null_space
+
     section = _sections(R, r, E, nu, thick=thick)
     D, m = section["D"][kind], section["m"][kind]
     s = symbols()

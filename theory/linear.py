@@ -573,9 +573,10 @@ def junction_coefficients(Z1, Z2):
 
 
 def _ring_index(name, value):
-    if isinstance(value, bool) or not float(value).is_integer():
-        raise TypeError(f"{name} must be an integer ring index, got {value!r}")
-    return int(value)
+    number = value.item() if isinstance(value, np.generic) else value  # 2.5, not np.float64(2.5), in the message
+    if isinstance(number, bool) or not isinstance(number, (int, float)) or not float(number).is_integer():
+        raise TypeError(f"{name} must be an integer ring index, got {number!r}")
+    return int(number)
 
 
 def linear_travel_time(ring_from, ring_to, *, model, K, n, m, a, K_b=None, m_gravity=None, g=STANDARD_GRAVITY):

@@ -43,9 +43,12 @@ from __future__ import annotations
 
 import functools
 
+import numpy as np
+
 from . import _validate as v
 from . import longwave, solitary
 from ._codegen import derived, sp
+from ._forms import power_law, power_law_value
 from .solitary import _chain
 from .special import beta
 
@@ -206,22 +209,32 @@ def impact_law():
 # --- numeric functions --------------------------------------------------------------------------
 
 
+# Each is a power of its force or speed, C x^p: evaluated as exp(log C + p log x) (:func:`power_law_value`), so
+# that no intermediate power overflows where the result does not (v0^2 overflows from 1.3e154 m/s on).
 @derived
 def _energy():
     s = symbols()
-    return (s["F_m"], s["K"], s["n"]), energy()
+    return (s["K"], s["n"]), power_law(energy(), s["F_m"])
 
 
 @derived
 def _momentum():
     s = symbols()
-    return (s["F_m"], s["K"], s["n"], s["m"]), momentum()
+    return (s["K"], s["n"], s["m"]), power_law(momentum(), s["F_m"])
 
 
 @derived
 def _amplitude():
     s = symbols()
-    return (s["v_0"], s["K"], s["n"], s["m_s"]), impact_law()
+    return (s["K"], s["n"], s["m_s"]), power_law(sp.expand_power_base(impact_law(), force=True), s["v_0"])
+
+
+def _power_of(function, variable, *parameters, what):
+    """exp(log C + p log variable) of a derived power law, refused by value beyond double precision."""
+    with np.errstate(all="ignore"):
+        log_coefficient, exponent = function(*parameters)
+        value = power_law_value(log_coefficient, exponent, variable)
+    return v.finite_result(value, what, "force or speed and chain parameters (K, n, m)")
 
 
 def solitary_wave_energy(F_m, *, K, n, m, a):
@@ -263,7 +276,7 @@ def solitary_wave_energy(F_m, *, K, n, m, a):
     """
     F_m = v.positive("F_m", F_m, "N")
     K, n, _, _ = _chain(K, n, a, m)
-    return _energy(F_m, K, n)
+    return _power_of(_energy, F_m, K, n, what="the energy")
 
 
 def solitary_wave_momentum(F_m, *, K, n, m, a):
@@ -295,7 +308,7 @@ def solitary_wave_momentum(F_m, *, K, n, m, a):
     """
     F_m = v.positive("F_m", F_m, "N")
     K, n, _, m = _chain(K, n, a, m)
-    return _momentum(F_m, K, n, m)
+    return _power_of(_momentum, F_m, K, n, m, what="the momentum")
 
 
 def impact_amplitude(v0, *, K, n, m, a, m_striker=None):
@@ -335,4 +348,4 @@ def impact_amplitude(v0, *, K, n, m, a, m_striker=None):
     v0 = v.positive("v0", v0, "m/s")
     K, n, _, m = _chain(K, n, a, m)
     m_striker = m if m_striker is None else v.positive("m_striker", m_striker, "kg")
-    return _amplitude(v0, K, n, m_striker)
+    return _power_of(_amplitude, v0, K, n, m_striker, what="F_m")

@@ -74,7 +74,9 @@ def test_fit_static_compares_the_two_laws(capsys, tmp_path):
     code, out, _ = run(capsys, "fit", "static", path, "--plot", plot)
     assert code == 0
     assert "static power-law fit" in out and "static series fit" in out
-    assert "the data support the series law" in out
+    # One line naming both laws by their equations (issue 24, item 15: "than the power-law law's").
+    assert "the data support the series law (Eq. 3): its AIC is lower by " in out
+    assert "than that of the power law (Eq. 4)" in out and "law law" not in out
     assert plot.read_bytes().startswith(PNG_MAGIC)
     code, out, _ = run(capsys, "fit", "static", path, "--model", "series", "--offset", "--json")
     data = json.loads(out)

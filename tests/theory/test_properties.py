@@ -604,3 +604,85 @@ DISORDER_COVERED: set = set()
 
 
 # --- end of the issue 23 block ----------------------------------------------------------------------------
+
+
+# --- issue 24, item 15: one extreme argument among physical ones -----------------------------------------
+
+#: A physical value of every numeric argument of the public functions (the paper's ring and chain).
+PHYSICAL = dict(
+    R=22.5e-3, r=2.5e-3, E=193e9, nu=0.29, angle=1.2, F=10.0, F_m=10.0, F_0=1.0, K=4.9e6, n=1.11, m=8e-3, a=0.04,
+    K_c=7.5e9, K_b=3.3e6, v0=1.0, v_max=1.0, x=0.0, y=0.0, q=1.0, rho=8000.0, k=2, delta_c=1e-6, Z1=1.0, Z2=2.0,
+    F_min=1.0, F_max=100.0, m_striker=8e-3, m_gravity=8e-3, g=9.81,
+    R1=22.5e-3, r1=2.5e-3, E1=193e9, nu1=0.29, R2=15e-3, r2=2.5e-3, E2=193e9, nu2=0.29,
+)  # fmt: skip
+ARRAYS = {"fit_power_law_to_curve": dict(F=np.array([1.0, 10.0, 100.0]), delta=np.array([1e-6, 5e-6, 2e-5]))}
+OTHER = {"dispersion": dict(model="power-law"), "band_edges": dict(model="power-law"),
+         "sound_speed": dict(model="power-law"), "impedance": dict(model="power-law"),
+         "linear_travel_time": dict(ring_from=0, ring_to=3, model="power-law")}  # fmt: skip
+
+
+def _one_extreme_cases():
+    import inspect
+
+    for name in theory.__all__:
+        function = getattr(theory, name)
+        if not inspect.isfunction(function):
+            continue
+        parameters = inspect.signature(function).parameters
+        for varied in parameters:
+            if varied in PHYSICAL:
+                for value in (1e150, 1e300, 1e-150, 1e-300):
+                    yield pytest.param(name, varied, value, id=f"{name}-{varied}-{value:g}")
+
+
+@pytest.mark.parametrize(("name", "varied", "value"), list(_one_extreme_cases()))
+def test_one_extreme_argument_is_answered_or_refused(name, varied, value):
+    """A finite result or a ValueError, with no floating-point warning on the way (they are errors here)."""
+    import inspect
+
+    function = getattr(theory, name)
+    args, kwargs = [], {}
+    for parameter in inspect.signature(function).parameters.values():
+        p = parameter.name
+        given = {**PHYSICAL, **ARRAYS.get(name, {}), **OTHER.get(name, {})}
+        if p not in given:
+            continue
+        chosen = value * np.asarray(given[p]) if p == varied and p in ARRAYS.get(name, {}) else (
+            value if p == varied else given[p])  # fmt: skip
+        if parameter.kind is inspect.Parameter.KEYWORD_ONLY:
+            kwargs[p] = chosen
+        else:
+            args.append(chosen)
+    finite_or_refused(lambda: function(*args, **kwargs))
+
+
+@pytest.mark.parametrize(
+    ("call", "message"),
+    [
+        (lambda: linear_travel_time(np.float64(2.5), 4, model="power-law", K=1.0, n=1.5, m=1.0, a=1.0),
+         "ring_from must be an integer ring index, got 2.5"),
+        (lambda: linear_travel_time(0, "4", model="power-law", K=1.0, n=1.5, m=1.0, a=1.0),
+         "ring_to must be an integer ring index, got '4'"),
+        (lambda: inextensional_frequency(22.5e-3, 2.5e-3, 193e9, 0.29, rho=8000.0, k=np.float64(2.5)),
+         "k must be an integer circumferential order >= 2, got 2.5"),
+        (lambda: ring_frequencies(22.5e-3, 2.5e-3, 193e9, 0.29, rho=8000.0, k=np.array([2.0, 2.5])),
+         "k must be an integer circumferential order >= 2, got 2.5"),
+        (lambda: ring_frequencies(1e300, 2.5e-3, 193e9, 0.29, rho=8000.0, k=2),
+         "a frequency is not representable in double precision"),
+    ],
+)  # fmt: skip
+def test_messages_show_numbers_as_numbers(call, message):
+    # Issue 24, item 15: np.float64(2.5) and array(2.5) in messages; an OverflowError from Python floats.
+    with pytest.raises((TypeError, ValueError)) as refused:
+        call()
+    assert str(refused.value).startswith(message) and "np." not in str(refused.value)
+    assert "array(" not in str(refused.value)
+
+
+def test_huge_rings_are_refused_as_huge_not_as_below_theta_min():
+    # Issue 24, item 15: R = 2.25e301 m, r = 2.5e300 m at 90 deg was refused as "at or below theta_min": the
+    # curvature A = (R sin^2 - r)/(r (R - r)) vanished because r (R - r) overflowed.
+    with pytest.raises(ValueError, match="relative curvature A is not representable in double precision"):
+        contact_ellipse(22.5e300, 2.5e300, 1.0)
+    with pytest.raises(ValueError, match="at or below theta_min"):  # a true refusal keeps its message
+        contact_ellipse(22.5e-3, 2.5e-3, 0.5)
