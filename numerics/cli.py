@@ -438,10 +438,21 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
 
 
+def _version() -> str:
+    """The installed package's version (importlib.metadata), as ``ringchain --version`` prints it."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("ringchain")
+    except PackageNotFoundError:  # pragma: no cover - run from a source tree that was never installed
+        return "(not installed)"
+
+
 def build_parser() -> argparse.ArgumentParser:
     from .solve import ADAPTIVE_METHODS
 
     parser = _Parser(prog="ringchain", description=__doc__.split("\n\n")[0], allow_abbrev=False)
+    parser.add_argument("--version", action="version", version=f"ringchain {_version()}")
     sub = parser.add_subparsers(dest="command", required=True, metavar="{paper,ring,simulate,sweep,cache,fit}")
 
     p = sub.add_parser("paper", help="derive the theory, print the paper's key numbers, write the figures",

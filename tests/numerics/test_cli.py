@@ -273,6 +273,17 @@ def test_help_exits_0_and_no_subcommand_exits_2(capsys):
     assert_one_line_error(code, out, err, "the following arguments are required: {paper,ring,simulate,sweep,cache,fit}")
 
 
+def test_version_is_the_package_version_in_one_line(capsys):
+    # Issue 24, item 17: `ringchain --version` was refused as a missing subcommand.
+    from importlib.metadata import version
+
+    code, out, err = run(capsys, "--version")
+    assert (code, out, err) == (0, f"ringchain {version('ringchain')}\n", "")
+    script = Path(sys.executable).with_name("ringchain")
+    done = subprocess.run([script, "--version"], capture_output=True, text=True)
+    assert (done.returncode, done.stdout, done.stderr) == (0, f"ringchain {version('ringchain')}\n", "")
+
+
 def test_console_script_exit_codes():
     script = Path(sys.executable).with_name("ringchain")
     ok = subprocess.run([script, "ring", "--R", "22.5e-3", "--r", "2.5e-3"], capture_output=True, text=True)
