@@ -499,7 +499,8 @@ class Listener:
     """A TCP server on 127.0.0.1 that is not a Dask scheduler; it stops when the test ends.
 
     ``banner`` speaks first (as an SSH server does); ``http`` waits for a request and
-    answers 400 to any bytes (an HTTP server); ``silent`` accepts and never says a word.
+    answers 400 to any bytes (an HTTP server); ``silent`` accepts and never says a word;
+    ``closing`` accepts and closes the connection at once.
     """
 
     def __init__(self, kind):
@@ -524,6 +525,8 @@ class Listener:
             conn.settimeout(0.1)
             if self.kind == "banner":
                 conn.sendall(b"SSH-2.0-OpenSSH_9.6\r\n")
+            if self.kind == "closing":
+                conn.close()
             if self.kind == "http":
                 while not self.stop.is_set():
                     try:
@@ -558,9 +561,13 @@ def sweep_on_dask(address, timeout=None):
 @pytest.mark.parametrize(
     ("listener", "reason"),
     [
-        ("banner", "accepts connections, but it speaks another protocol (it sent b'SSH-2.0-'...)"),
+        (
+            "banner",
+            "accepts connections, but it speaks another protocol (its first message is not one distributed can read)",
+        ),
         ("http", "accepts connections, but it sent nothing within 2 s, while a Dask scheduler greets at once"),
         ("silent", "accepts connections, but it sent nothing within 2 s"),
+        ("closing", "accepts connections, but it closed the connection without a Dask handshake"),
     ],
     indirect=["listener"],
 )
