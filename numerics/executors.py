@@ -224,6 +224,7 @@ async def _greeting(address: str, where: str, timeout: float) -> str | None:
 
     from distributed.comm.core import CommClosedError
     from distributed.comm.registry import get_backend
+    from tornado.iostream import StreamClosedError
 
     loop = asyncio.get_running_loop()
     deadline = loop.time() + timeout
@@ -239,6 +240,8 @@ async def _greeting(address: str, where: str, timeout: float) -> str | None:
         if isinstance(cause, ConnectionRefusedError):
             raise ConnectionError(f"no Dask scheduler at {address}: connection refused (nothing listens on {where})"
                                   ) from None  # fmt: skip
+        if isinstance(cause, (StreamClosedError, CommClosedError, ConnectionResetError)):  # accepted, then closed
+            return "it closed the connection without a Dask handshake"
         raise ConnectionError(f"no Dask scheduler at {address}: {_reason(cause)}") from None
     try:
         message = await asyncio.wait_for(comm.read(), max(deadline - loop.time(), 0.0))
@@ -304,4 +307,4 @@ def _tcp_host_port(address: str) -> tuple[str | None, int]:
 
 
 def _reason(exc: BaseException) -> str:
-    return " ".join(str(getattr(exc, "strerror", None) or exc or type(exc).__name__).split())
+    return " ".join(str(getattr(exc, "strerror", None) or exc).split()) or type(exc).__name__
