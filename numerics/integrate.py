@@ -147,6 +147,7 @@ _SECONDS_PER_SITE_STEP = 2e-8
 # Most LSODA steps between two samples (odeint's mxstep); a run that needs more fails.
 _MAX_STEPS_PER_SAMPLE = 1_000_000
 
+
 class IntegrationError(ValueError):
     """The integrator failed, or its result is unstable (non-finite, or the energy drifted)."""
 

@@ -207,8 +207,8 @@ def _network_accelerations(m, b, g, x, u, out):
     """Accelerations of member ``b`` of a packed network under gravity ``g`` into ``out``; returns the power its
     dashpots take out."""
     d, n, damped = m.ints[1], m.ints[2], m.ints[3] != 0
-    bm = b if m.inv_mass.shape[0] > 1 else 0
-    bp = b if m.par.shape[0] > 1 else 0
+    bm = b * (m.inv_mass.shape[0] > 1)  # one row shared by every member, or one per member (integers only:
+    bp = b * (m.par.shape[0] > 1)  # a prange index is unsigned, and b if ... else 0 would unify to a float)
     par, li, lj, kind = m.par[bp], m.li, m.lj, m.kind
     for c in range(n):
         out[c] = 0.0

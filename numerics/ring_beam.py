@@ -167,7 +167,7 @@ class RingModel:
         kind = _kind(kind)
         return self._cached(
             ("element", kind),
-            lambda: element_matrices(self.R, self.r, m.E, m.nu, m.rho, self.element_angle, kind),
+            lambda: element_matrices(self.R, self.r, m.E, m.nu, rho=m.rho, angle=self.element_angle, kind=kind),
         )
 
     def matrices(self, kind="in-plane") -> tuple[np.ndarray, np.ndarray]:

@@ -326,7 +326,7 @@ def test_speed_shifts_against_exact_evaluation(symmetric, order, n_value):
     for sigma in spreads:
         K_, m_, a_ = 2.0 * (1 + sigma * z_K), 0.3 * (1 + 0.7 * sigma * z_m), 0.05 * (1 + 0.5 * sigma * z_a)
         sK, sm, corr = _sample_spreads(K_, m_)
-        uniform = solitary_wave_speed(1.5, K_.mean(), n_value, a_.mean(), m_.mean()) if n_value > 1 else None
+        uniform = solitary_wave_speed(1.5, K=K_.mean(), n=n_value, a=a_.mean(), m=m_.mean()) if n_value > 1 else None
         speeds = {}
         for estimate in disorder.ESTIMATES:
             if n_value > 1:
@@ -354,7 +354,9 @@ def test_effective_medium_ignores_mass_and_spacing_spreads():
     K_ = np.full(50, 2.0)
     m_, a_ = rng.uniform(0.1, 0.5, 50), rng.uniform(0.01, 0.1, 50)
     exact = disordered_solitary_wave_speed(2.0, K_, 1.4, a_, m_, estimate="effective-medium")
-    assert exact == pytest.approx(solitary_wave_speed(2.0, 2.0, 1.4, a_.mean(), m_.mean()), rel=1e-14)  # rounding
+    assert exact == pytest.approx(
+        solitary_wave_speed(2.0, K=2.0, n=1.4, a=a_.mean(), m=m_.mean()), rel=1e-14
+    )  # rounding
 
 
 # --- numeric: impedance spreads ---------------------------------------------------------------------------
@@ -591,7 +593,7 @@ def test_compact_wave_in_a_random_power_law_chain(n_value):
     # fitted exponential trend), both scaled by the ordered chain's ratio of measured to Eq. (8) time (Eq. (8) is a
     # long-wave speed, about 1 % slow for n = 1.5 on the lattice).
     base = (ordered_time[0, last] - ordered_time[0, first]) / np.sum(
-        1 / solitary_wave_speed(ordered[0, first:last], 1.0, n_value, 1.0, 1.0)
+        1 / solitary_wave_speed(ordered[0, first:last], K=1.0, n=n_value, a=1.0, m=1.0)
     )
     excess = {estimate: np.empty(chains) for estimate in disorder.ESTIMATES}
     for c in range(chains):

@@ -405,7 +405,7 @@ def test_square_sheet_without_cross_links_is_the_power_law_chain():
     qx = np.linspace(-np.pi / spacing, 2 * np.pi / spacing, 31)
     qy = np.linspace(-50.0, 80.0, 31)
     omega = sheet_dispersion(qx, qy, pattern="square", k=(k_c, 0.0), T=(F0, 0.0), m=mass, a=(spacing, 0.03))
-    chain = dispersion(qx, model="power-law", F0=F0, K=K, n=n, m=mass, a=spacing)[:, 0]
+    chain = dispersion(qx, model="power-law", F_0=F0, K=K, n=n, m=mass, a=spacing)[:, 0]
     string = 2 * np.sqrt(F0 / (mass * spacing)) * np.abs(np.sin(qx * spacing / 2))
     # the same closed forms evaluated in double, k_c rounded once more on its way through float(): 1e-12
     assert np.allclose(omega[:, 1], chain, rtol=1e-12, atol=0)
