@@ -9,10 +9,11 @@ underscore name reached across modules):
 
 1. the command line: ``cli``, ``fit_cli``, ``_cli_options`` -- parse, call one public function, print;
 2. jobs: ``paper``, ``experiment``, ``sweep``, ``fit``, ``fit_dynamic``, ``junction``,
-   ``effective_mass``, ``contact_bem`` -- the paper's tables and figures, a drop read at two
-   sensors, grids, inverse problems, the impedance experiment, the effective mass, the
-   numerical contact at any angle;
-3. layouts: ``chain``, ``chain_file``, ``ring_chain``, ``ring_beam`` -- a Chain builds a Network;
+   ``effective_mass``, ``contact_bem``, ``dissipation`` -- the paper's tables and figures, a drop read at
+   two sensors, grids, inverse problems, the impedance experiment, the effective mass, the
+   numerical contact at any angle, where the energy of a yielding chain goes;
+3. layouts: ``chain``, ``chain_file``, ``ring_chain``, ``ring_beam``, ``yielding`` -- a Chain builds a Network
+   (with contacts that yield: ``yielding``);
    chain files; the ring-resolved chain (its own dynamics) and the ring as a curved beam;
 4. the engine: ``integrate``, ``results``, ``traces``, ``plots``, ``executors``, ``signals`` --
    the integrator layer, result records, measurement files, figures, where sweeps run,
@@ -23,7 +24,9 @@ What each module owns:
 
 - :mod:`.laws` -- :class:`~.laws.PowerLaw` (Eq. (4), the paper's gamma inside its bracket, Eq. (7)),
   :func:`~.laws.Hertz` (Eq. (1)), :class:`~.laws.LinearSpring` (Eq. (2)), :class:`~.laws.Dashpot`: force,
-  stored energy, tangent stiffness, dissipated power from the extension and its rate;
+  stored energy, tangent stiffness, dissipated power from the extension and its rate; beyond the paper
+  :class:`~.laws.Thornton` (a contact that yields, with memory), :class:`~.laws.HuntCrossley` and
+  :func:`~.laws.loss_factor_spring`;
 - :mod:`.network` -- :class:`Network`, :class:`Links`: sites (mass, weight, 1-3 components) and
   links; the dynamics contract every integrator calls (stepper, first-order right-hand side and its
   bandwidth, energies, tolerance scales, fastest frequency), with a fast path for chains;
@@ -54,6 +57,7 @@ from . import laws, signals
 from .chain import MODELS, STRIKERS, SUPPORTS, Chain, initial_state
 from .contact_angle import AngleContact, AnglePowerLaw, angle_power_law, contact_at_angle
 from .contact_bem import HALF_SPACE_LIMIT, ContactCurve, HalfSpaceWarning, PressureMaps, contact_curve
+from .dissipation import energy_shares, equivalent_contact_dashpot, second_impact
 from .effective_mass import fit_effective_mass, predict_effective_mass
 from .fit import FitError, FitResult, fit_speed_amplitude, fit_static
 from .fit_dynamic import TraceRecord, fit_traces
@@ -89,6 +93,9 @@ __all__ = [
     "Links",
     "ANCHOR",
     "laws",
+    "energy_shares",
+    "equivalent_contact_dashpot",
+    "second_impact",
     "NetworkSimulation",
     "NetworkBatch",
     "STRIKERS",

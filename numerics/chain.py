@@ -74,15 +74,16 @@ from ringchain.theory import STANDARD_GRAVITY, Ring, fit_power_law, hertz_stiffn
 from ringchain.theory import _validate as v
 
 from .integrate import impact_speeds
-from .laws import LinearSpring, PowerLaw
+from .laws import LinearSpring, PowerLaw, Thornton
 from .network import ANCHOR, Links, Network
 from .results import BatchSimulation
+from .yielding import yielding_chain
 
 __all__ = ["Chain", "MODELS", "SUPPORTS", "GRADING_PROFILES", "STRIKERS", "initial_state", "sensor_pair", "ring_index"]
 
 #: What each parameter of a :class:`Chain` is given per, when it varies along the chain.
 _PROFILES = {"K": "contact", "n": "contact", "gamma": "contact", "m": "ring", "m_gravity": "ring", "K_b": "ring",
-             "gamma_b": "ring", "a": "pair"}  # fmt: skip
+             "gamma_b": "ring", "a": "pair", "delta_y": "contact", "delta_max": "contact"}  # fmt: skip
 
 #: The two lattice models of paper Sec. III.B (named once, in :mod:`ringchain.theory.linear`).
 MODELS = linear.MODELS
@@ -177,6 +178,9 @@ class Chain:
         Inertial mass of ring 0, the struck ring, kg; None: ``m`` of ring 0 (the paper's
         convention).  The constructors take ``"m0"`` for the ring's own mass (``m_gravity``
         of ring 0: a rigid striker) and ``"m_eff"`` for None (module notes).
+    delta_y, delta_max : float, ndarray or None
+        Yielding contacts (:mod:`~ringchain.numerics.yielding`): Thornton's approach at first yield and the largest
+        approach before the run, m (per contact); ``delta_y`` None: elastic Hertz contacts.
     """
 
     model: str
@@ -191,6 +195,8 @@ class Chain:
     m_gravity: float | None = None
     support: str = "fixed"
     striker_mass: float | str | None = None
+    delta_y: float | None = None
+    delta_max: float = 0.0
 
     def __post_init__(self):
         v.choice("model", self.model, MODELS)
@@ -218,6 +224,11 @@ class Chain:
             set_("gamma_b", _parameter("gamma_b", self.gamma_b, rings, v.nonnegative, "N s/m", "ring"))
         elif self.K_b is not None or np.any(self.gamma_b):
             raise ValueError("K_b and gamma_b belong to the dual-spring model, not the power-law one")
+        if self.delta_y is not None:  # Thornton contacts: Hertz's exponent only
+            if np.any(np.asarray(self.n) != 1.5):
+                raise ValueError("contacts that yield follow Hertz's law (n = 3/2): use the dual-spring model")
+            set_("delta_y", _parameter("delta_y", self.delta_y, contacts, v.positive, "m", "contact"))
+        set_("delta_max", _parameter("delta_max", self.delta_max, contacts, v.nonnegative, "m", "contact"))
         striker = self.striker_mass
         if isinstance(striker, str):
             striker = None if v.choice("striker_mass", striker, STRIKERS) == "m_eff" else self.profile("m_gravity")[0]
@@ -227,7 +238,7 @@ class Chain:
         return tuple(
             (value.shape, value.tobytes()) if isinstance(value, np.ndarray) else value
             for value in (self.model, self.n_rings, self.K, self.n, self.m, self.a, self.gamma, self.K_b,
-                          self.gamma_b, self.m_gravity, self.support, self.striker_mass)
+                          self.gamma_b, self.m_gravity, self.support, self.striker_mass, self.delta_y, self.delta_max)
         )  # fmt: skip
 
     def __eq__(self, other):
@@ -327,6 +338,7 @@ class Chain:
         gamma_b: float = 0.0,
         support: str = "fixed",
         striker_mass=None,
+        yield_strength=None,
     ) -> Chain:
         """A chain of identical :class:`~ringchain.theory.Ring` s.
 
@@ -351,6 +363,8 @@ class Chain:
         striker_mass : float or {"m_eff", "m0"}, optional
             Inertial mass of ring 0, kg: default the lattice's m_eff (the paper's convention);
             "m0" the ring's mass (a rigid ring in free fall; module notes).
+        yield_strength : float, optional
+            Pa: contacts that yield, from the hanging chain's plastic equilibrium (dual-spring; :mod:`.yielding`).
 
         Examples
         --------
@@ -367,12 +381,14 @@ class Chain:
         if model == "dual-spring":
             if K is not None or n is not None or gamma:
                 raise ValueError("K, n and gamma belong to the power-law model; use gamma_c and gamma_b")
-            return cls.dual_spring(
+            chain = cls.dual_spring(
                 n_rings, ring.K_c, ring.K_b, ratio * m0, ring.spacing, gamma_c, gamma_b, m0, support=support,
                 striker_mass=striker_mass,
             )  # fmt: skip
-        if gamma_c or gamma_b:
-            raise ValueError("gamma_c and gamma_b belong to the dual-spring model; use gamma")
+            return chain if yield_strength is None else yielding_chain(chain, [ring] * n_rings, yield_strength,
+                                                                       ring.angle)  # fmt: skip
+        if gamma_c or gamma_b or yield_strength is not None:
+            raise ValueError("gamma_c, gamma_b and yield_strength belong to the dual-spring model")
         if (K is None) != (n is None):
             raise ValueError("give both K and n, or neither (then the series law is fitted, Eq. 4)")
         if K is None:
@@ -393,6 +409,7 @@ class Chain:
         gamma_b: float = 0.0,
         support: str = "fixed",
         striker_mass=None,
+        yield_strength=None,
     ) -> Chain:
         """A chain of given rings, ring 0 at the impact end: each contact from the two rings it joins.
 
@@ -419,6 +436,8 @@ class Chain:
             The support's contact is that of the top ring with a ring like itself.
         striker_mass : float or {"m_eff", "m0"}, optional
             Inertial mass of ring 0, kg (see :meth:`from_ring`).
+        yield_strength : float or array_like, optional
+            Pa, one number or one per ring: contacts that yield (see :meth:`from_ring`).
 
         Notes
         -----
@@ -469,9 +488,10 @@ class Chain:
         if model == "dual-spring":
             if gamma is not None and np.any(gamma):
                 raise ValueError("gamma belongs to the power-law model; use gamma_c and gamma_b")
-            return cls.dual_spring(n_rings, K_c, K_b[:n_rings], ratio * m0, a, gamma_c, gamma_b, m0, support=support,
-                                   striker_mass=striker_mass)  # fmt: skip
-        if np.any(gamma_c) or np.any(gamma_b):
+            chain = cls.dual_spring(n_rings, K_c, K_b[:n_rings], ratio * m0, a, gamma_c, gamma_b, m0, support=support,
+                                    striker_mass=striker_mass)  # fmt: skip
+            return chain if yield_strength is None else yielding_chain(chain, rings, yield_strength, angles)
+        if np.any(gamma_c) or np.any(gamma_b) or yield_strength is not None:
             raise ValueError("gamma_c and gamma_b belong to the dual-spring model; use gamma")
         # Each period of the chain is a contact in series with the body of the ring below it (Eq. 3).
         below_K_b = np.append(K_b, K_b[-1])[: len(pairs)]
@@ -716,7 +736,10 @@ class Chain:
         j = i + 1
         if self.support == "fixed":
             j[-1] = ANCHOR
-        links = [Links(i, j, PowerLaw(self.K, self.n, self.gamma), index=i)]
+        law = PowerLaw(self.K, self.n, self.gamma)
+        if self.delta_y is not None:  # contacts that yield (:mod:`.yielding`)
+            law = Thornton(self.K, self.delta_y, self.gamma, self.delta_max)
+        links = [Links(i, j, law, index=i)]
         if self.model == "dual-spring":
             springs = k * np.arange(N)
             links.insert(0, Links(springs, springs + 1, LinearSpring(self.K_b, self.gamma_b), index=springs))

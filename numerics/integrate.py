@@ -255,23 +255,34 @@ def _compiled(method, dyn, x0, u0, scales, t_eval, t_end, rtol, atol, dt, g, kee
     packed = kernels.pack(dyn)
     B, N = x0.shape
     keep = np.arange(N) if keep is None else keep
+    memory = dyn.initial_memory() if getattr(dyn, "stateful", False) else None  # (B or 1, links)
+    if memory is not None:
+        memory = np.broadcast_to(memory, (B, memory.shape[-1]))
     if method == "verlet":
-        xs, us, x_end, u_end, status, dt, steps = kernels.verlet(packed, x0, u0, t_eval, t_end, dt, keep, g)
+        out = kernels.verlet(packed, x0, u0, t_eval, t_end, dt, keep, g, memory=memory)
+        xs, us, x_end, u_end, status, dt, steps = out[:7]
+        ms, m_end = out[7:] if memory is not None else (None, None)
         _check_status(method, status, t_end)
-        watch(t_end, x_end, u_end)
-        return xs, us, np.zeros((B, t_eval.size)), {"method": method, "dt": dt, "nfev": steps + 1}
+        watch(t_end, x_end, u_end, 0.0, m_end)
+        return xs, us, np.zeros((B, t_eval.size)), {"method": method, "dt": dt, "nfev": steps + 1}, ms
     X, V, E = scales
     columns = [np.repeat(X[:, None], N, axis=1), np.repeat(V[:, None], N, axis=1)]
     state = [x0, u0]
     if dyn.damped:
         columns.append(E[:, None])
         state.append(np.zeros((B, 1)))
-    xs, us, w, final, status, counts = kernels.dopri5(packed, np.hstack(state), t_eval, rtol,
-                                                      atol * np.hstack(columns), keep, g, shared=shared)  # fmt: skip
+    if memory is not None:  # the memory's derivative is zero: its tolerance never enters the error
+        columns.append(np.repeat(X[:, None], memory.shape[1], axis=1))
+        state.append(memory)
+    xs, us, w, ms, final, status, counts = kernels.dopri5(
+        packed, np.hstack(state), t_eval, rtol, atol * np.hstack(columns), keep, g, shared=shared)  # fmt: skip
     _check_status(method, status, t_end, rtol)
-    watch(t_end, final[:, :N], final[:, N : 2 * N], final[:, 2 * N] if dyn.damped else 0.0)
+    first = 2 * N + int(dyn.damped)
+    watch(t_end, final[:, :N], final[:, N : 2 * N], final[:, 2 * N] if dyn.damped else 0.0,
+          final[:, first:] if memory is not None else None)  # fmt: skip
     return xs, us, w, {"method": method, "rtol": rtol, "nfev": int(counts[:, 0].sum()),
-                       "steps": counts[:, 1].tolist(), "rejected": counts[:, 2].tolist()}  # fmt: skip
+                       "steps": counts[:, 1].tolist(), "rejected": counts[:, 2].tolist()}, \
+        (ms if memory is not None else None)  # fmt: skip
 
 
 def _check_status(method, status, t_end, rtol=None):
@@ -302,15 +313,20 @@ class EnergyWatch:
 
     def __init__(self, dyn, x0, u0, g, scale, limit, advice):
         self.dyn, self.x0, self.g, self.scale, self.limit, self.advice = dyn, x0, g, scale, limit, advice
-        self.initial = dyn.energy(x0, u0, x0, g, 0.0).total
+        self.initial = self._total(x0, u0, 0.0, dyn.initial_memory() if getattr(dyn, "stateful", False) else None)
 
-    def __call__(self, t, x, u, dissipated=0.0):
+    def _total(self, x, u, dissipated, memory):
+        """Total energy, J; with the plastic work of laws with memory (``memory`` per link) when given."""
+        extra = {} if memory is None else {"memory": memory}
+        return self.dyn.energy(x, u, self.x0, self.g, dissipated, **extra).total
+
+    def __call__(self, t, x, u, dissipated=0.0, memory=None):
         if not (np.all(np.isfinite(x)) and np.all(np.isfinite(u))):
             raise IntegrationError(f"the state became non-finite by t = {t:g} s: the integration is unstable; "
                                    f"{self.advice}")  # fmt: skip
         if self.limit is None:
             return
-        total = self.dyn.energy(x, u, self.x0, self.g, dissipated).total
+        total = self._total(x, u, dissipated, memory)
         drift = float(np.max(np.abs(total - self.initial) / self.scale))
         if not drift <= self.limit:
             raise IntegrationError(
@@ -507,6 +523,12 @@ def _prepare(model, t_end, impact_velocities, drop_heights, gravity, t_eval, n_s
     if not isinstance(method, str) or method not in METHODS:
         raise ValueError(f"method must be one of {METHODS}, got {method!r}")
     dyn = model.dynamics()
+    if getattr(dyn, "stateful", False) and method not in COMPILED_METHODS:
+        raise ValueError(
+            f"this model has laws with memory ({', '.join(dyn.stateful_laws)}: the largest approach of each contact), "
+            f"which only the compiled methods {COMPILED_METHODS} update, on accepted steps; method={method!r} cannot "
+            "integrate it: use method='dopri5' (the default) or 'verlet'"
+        )
     if initial is None:
         speeds, dropped = impact_speeds(impact_velocities, drop_heights, g)
         x0, u0 = model.impact_state(speeds, dropped, gravity, g)
@@ -684,15 +706,17 @@ max_energy_drift
     watch = EnergyWatch(dyn, x0, u0, g_dyn, 2.0 * E, max_energy_drift, advice)  # 2 E = m v^2 / 2
     with np.errstate(over="ignore", invalid="ignore"):  # an unstable run is reported by the watch
         if method in COMPILED_METHODS:
-            xs, us, dissipated, stats = _compiled(method, dyn, x0, u0, run["scales"], t_eval, run["t_end"], run["rtol"],
-                                                  run["atol"], run["dt"], g_dyn, run["keep"], watch,
-                                                  shared=v.flag("shared_steps", shared_steps))  # fmt: skip
+            xs, us, dissipated, stats, memory = _compiled(
+                method, dyn, x0, u0, run["scales"], t_eval, run["t_end"], run["rtol"], run["atol"], run["dt"], g_dyn,
+                run["keep"], watch, shared=v.flag("shared_steps", shared_steps))  # fmt: skip
         else:
             xs, us, dissipated, stats = _adaptive(method, dyn, x0, u0, run["scales"], t_eval, run["rtol"],
                                                   run["atol"], g_dyn, run["keep"], watch)  # fmt: skip
+            memory = None
     heights = None if drop_heights is None else np.atleast_1d(np.asarray(drop_heights, dtype=float))
+    extra = {} if memory is None else {"memory": memory}  # laws with memory: the largest approach per link
     return model.result(t=t_eval, x=xs, u=us, dissipated=dissipated, g=g_dyn, stats=stats, rings=run["rings"],
-                        impact_velocity=np.max(np.abs(u0), axis=-1), drop_height=heights)  # fmt: skip
+                        impact_velocity=np.max(np.abs(u0), axis=-1), drop_height=heights, **extra)  # fmt: skip
 
 
 def simulate(model, t_end, *, impact_velocity=None, drop_height=None, gravity=True, t_eval=None, initial=None,

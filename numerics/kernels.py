@@ -21,6 +21,17 @@ ever, with the disk cache) and not once per chain:
 A stack of networks (:meth:`~ringchain.numerics.Network.stack`) gives per-member masses and parameters
 (a leading axis of length B; length 1 when every member shares them).
 
+Laws with memory.  A network with a :class:`~ringchain.numerics.laws.Thornton` link carries one memory per
+link (its largest approach, m) at the end of each run's state, [x, u, W if damped, memory if stateful].
+Its derivative is zero, so the Runge-Kutta stages carry it unchanged and a trial stage (or a rejected step)
+never writes it; the law reads max(memory, delta), so a stage beyond the memory is on the loading curve.
+After each accepted step the memory becomes the largest extension over the step, read from the cubic
+through the extensions and rates at both ends (:func:`_remember`: the peak of a step, not only its end,
+to fourth order); a sample records the memory its step started from (what the stages used).  Velocity
+Verlet updates it after each step from the new positions.  Memory as an integrated state (dm/dt = the
+rate while loading) was the other choice: its right-hand side jumps whenever the approach crosses the
+memory, which the step control pays for with rejections at every loading; and it drifts off the approach.
+
 The Runge-Kutta pair.  Dormand and Prince's 5(4) pair with its fourth-order continuous extension
 (Hairer, Norsett and Wanner, Solving ODEs I, Sec. II.5-6), first-same-as-last, step-size control
 0.9 err^(-1/5) within [0.2, 10].  The error is measured in the max norm over the components,
@@ -72,7 +83,7 @@ __all__ = [
 PARAMETERS = 4
 
 #: Kind code of each law class the kernels implement, by class name.
-LAW_KINDS = {"PowerLaw": 0, "LinearSpring": 1, "Dashpot": 2}
+LAW_KINDS = {"PowerLaw": 0, "LinearSpring": 1, "Dashpot": 2, "Thornton": 3, "HuntCrossley": 4}
 
 #: Exit codes of the integrators: 0 done; 1 too many steps; 2 a non-finite state; 3 the step underflowed.
 STATUS = {1: "too many steps", 2: "the state became non-finite", 3: "the step size fell below the time resolution"}
@@ -187,7 +198,7 @@ def pack_ring_chain(chain) -> Packed:
 
 # -- the laws --------------------------------------------------------------------------------------------------
 @_jit(inline="always")
-def _law(kind, p0, p1, p2, e, rate):
+def _law(kind, p0, p1, p2, e, rate, memory):
     """(force, elastic force) of one link: the :mod:`ringchain.numerics.laws` of kind ``kind``, parameters p0-p2."""
     if kind == 0:  # PowerLaw: [K delta^n + gamma delta_dot]_+ where engaged (K, n, gamma)
         if e <= 0.0:
@@ -195,15 +206,107 @@ def _law(kind, p0, p1, p2, e, rate):
         elastic = p0 * e * math.sqrt(e) if p1 == 1.5 else p0 * e**p1
         force = elastic + p2 * rate
         return (force if force > 0.0 else 0.0), elastic
+    if kind == 3:  # Thornton: the memory is the largest approach (K_c, delta_y, gamma)
+        return _thornton(p0, p1, p2, e, rate, memory)
+    if kind == 4:  # HuntCrossley: [K delta^n (1 + 3/2 alpha delta_dot)]_+ where engaged (K, n, alpha)
+        if e <= 0.0:
+            return 0.0, 0.0
+        elastic = p0 * e * math.sqrt(e) if p1 == 1.5 else p0 * e**p1
+        force = elastic * (1.0 + 1.5 * p2 * rate)
+        return (force if force > 0.0 else 0.0), elastic
     if kind == 1:  # LinearSpring: K delta + gamma delta_dot (K, gamma)
         elastic = p0 * e
         return elastic + p1 * rate, elastic
     return p0 * rate, 0.0  # Dashpot (gamma)
 
 
+@_jit()
+def _thornton(K, dy, gamma, e, rate, memory):
+    """(force, elastic force) of Thornton's contact (:class:`~ringchain.numerics.laws.Thornton`): with
+    dm = max(memory, delta) beyond delta_y, F_m = K sqrt(dy)(3 dm - dy)/2 and w = sqrt(dy)(3 dm - dy)/(2 sqrt(dm)),
+    F = F_m (u/w)^(3/2) for u = delta - dm + w > 0; the Hertz curve below delta_y."""
+    if e <= 0.0:
+        return 0.0, 0.0
+    dm = memory if memory > e else e
+    if dm <= dy:
+        elastic = K * e * math.sqrt(e)
+    else:
+        F_m = 0.5 * K * math.sqrt(dy) * (3.0 * dm - dy)
+        w = 0.5 * math.sqrt(dy) * (3.0 * dm - dy) / math.sqrt(dm)
+        u = e - dm + w
+        if u <= 0.0:
+            return 0.0, 0.0
+        elastic = F_m * (u / w) * math.sqrt(u / w)
+    force = elastic + gamma * rate
+    return (force if force > 0.0 else 0.0), elastic
+
+
+@_jit()
+def _extension(m, k, x, u):
+    """(extension, rate) of link k of a packed network at displacements x and velocities u."""
+    i, j, d = m.li[k], m.lj[k], m.ints[1]
+    if d == 1:
+        far, far_u = (x[j], u[j]) if j >= 0 else (0.0, 0.0)
+        return far - x[i], far_u - u[i]
+    length2, rate = 0.0, 0.0
+    for c in range(d):
+        ri = m.positions[i, c] + x[i * d + c]
+        rj = m.anchors[k, c] if j < 0 else m.positions[j, c] + x[j * d + c]
+        length2 += (rj - ri) ** 2
+    length = math.sqrt(length2)
+    for c in range(d):
+        ri = m.positions[i, c] + x[i * d + c]
+        rj = m.anchors[k, c] if j < 0 else m.positions[j, c] + x[j * d + c]
+        rate += ((0.0 if j < 0 else u[j * d + c]) - u[i * d + c]) * (rj - ri) / length
+    return length - m.rest[k], rate
+
+
+@_jit()
+def _cubic_peak(e0, s0, e1, s1):
+    """Largest value on [0, 1] of the cubic with values e0, e1 and slopes s0, s1 (per unit parameter) at its ends."""
+    a, b, c = 6.0 * (e0 - e1) + 3.0 * (s0 + s1), 6.0 * (e1 - e0) - 4.0 * s0 - 2.0 * s1, s0  # p'(s) = a s^2 + b s + c
+    peak = max(e0, e1)
+    disc = b * b - 4.0 * a * c
+    roots = (
+        (-c / b if b != 0.0 else -1.0, -1.0)
+        if a == 0.0
+        else (((-b + math.sqrt(disc)) / (2.0 * a), (-b - math.sqrt(disc)) / (2.0 * a)) if disc >= 0.0 else (-1.0, -1.0))
+    )
+    for z in roots:
+        if 0.0 < z < 1.0:
+            value = (
+                (2 * z**3 - 3 * z**2 + 1) * e0
+                + (z**3 - 2 * z**2 + z) * s0
+                + (-2 * z**3 + 3 * z**2) * e1
+                + (z**3 - z**2) * s1
+            )
+            peak = max(peak, value)
+    return peak
+
+
+@_jit()
+def _remember(m, members, y, y_new, h, N, n):
+    """After an accepted step from ``y`` to ``y_new`` (the group's states), each Thornton link's memory in ``y_new``
+    becomes the largest of its memory and the peak extension over the step (the module notes).  Returns whether a
+    memory now exceeds its link's extension at the end of the step."""
+    w = 2 * N + (1 if m.ints[3] else 0)
+    changed = False
+    for q in range(members.size):
+        o = q * n
+        for k in range(n - w):
+            if m.kind[k] == 3:
+                e0, r0 = _extension(m, k, y[o : o + N], y[o + N : o + 2 * N])
+                e1, r1 = _extension(m, k, y_new[o : o + N], y_new[o + N : o + 2 * N])
+                peak = _cubic_peak(e0, h * r0, e1, h * r1)
+                if peak > y_new[o + w + k]:
+                    changed = changed or peak > e1  # memory beyond the end's approach: the force at the end changes
+                    y_new[o + w + k] = peak
+    return changed
+
+
 # -- right-hand sides ----------------------------------------------------------------------------------------
 @_jit(inline="always")
-def _network_accelerations(m, b, g, x, u, out):
+def _network_accelerations(m, b, g, x, u, out, memory):
     """Accelerations of member ``b`` of a packed network under gravity ``g`` into ``out``; returns the power its
     dashpots take out."""
     d, n, damped = m.ints[1], m.ints[2], m.ints[3] != 0
@@ -222,7 +325,7 @@ def _network_accelerations(m, b, g, x, u, out):
             else:
                 e = -x[k]
                 rate = -u[k] if damped else 0.0
-            force, elastic = _law(kind[k], par[k, 0], par[k, 1], par[k, 2], e, rate)
+            force, elastic = _law(kind[k], par[k, 0], par[k, 1], par[k, 2], e, rate, memory[k] if memory.size else 0.0)
             if damped:
                 power += (force - elastic) * rate
             out[k] += force
@@ -237,7 +340,7 @@ def _network_accelerations(m, b, g, x, u, out):
             else:
                 e = -x[i]
                 rate = -u[i] if damped else 0.0
-            force, elastic = _law(kind[k], par[k, 0], par[k, 1], par[k, 2], e, rate)
+            force, elastic = _law(kind[k], par[k, 0], par[k, 1], par[k, 2], e, rate, memory[k] if memory.size else 0.0)
             if damped:
                 power += (force - elastic) * rate
             out[i] += force
@@ -260,7 +363,7 @@ def _network_accelerations(m, b, g, x, u, out):
                     rj = m.anchors[k, c] if j < 0 else m.positions[j, c] + x[j * d + c]
                     du = (0.0 if j < 0 else u[j * d + c]) - u[i * d + c]
                     rate += du * (rj - ri) / length
-            force, elastic = _law(kind[k], par[k, 0], par[k, 1], par[k, 2], e, rate)
+            force, elastic = _law(kind[k], par[k, 0], par[k, 1], par[k, 2], e, rate, memory[k] if memory.size else 0.0)
             if damped:
                 power += (force - elastic) * rate
             for c in range(d):
@@ -304,10 +407,11 @@ def _ring_accelerations(m, x, out):
 
 
 @_jit(inline="always")
-def _accelerations(m, b, g, x, u, out):
-    """Accelerations of member ``b`` of either kind of model (the packed kind says which)."""
+def _accelerations(m, b, g, x, u, out, memory):
+    """Accelerations of member ``b`` of either kind of model (the packed kind says which); ``memory`` per link
+    (laws with memory) or empty."""
     if m.ints[0] == 0:
-        return _network_accelerations(m, b, g, x, u, out)
+        return _network_accelerations(m, b, g, x, u, out, memory)
     _ring_accelerations(m, x, out)
     n, N = m.ints[7], m.ints[6]
     rigid = m.gravity[0]
@@ -319,20 +423,25 @@ def _accelerations(m, b, g, x, u, out):
 
 @_jit(inline="always")
 def _derivative(m, b, g, y, dy, N):
-    """dy/dt of the state y = [x (N), u (N), W (dissipated energy, if damped)]."""
-    power = _accelerations(m, b, g, y[:N], y[N : 2 * N], dy[N : 2 * N])
+    """dy/dt of the state y = [x (N), u (N), W (dissipated energy, if damped), memory (per link, if stateful)]."""
+    w = 2 * N + (1 if m.ints[3] else 0)
+    power = _accelerations(m, b, g, y[:N], y[N : 2 * N], dy[N : 2 * N], y[w:])
     for c in range(N):
         dy[c] = y[N + c]
-    if y.size > 2 * N:
+    if w > 2 * N:
         dy[2 * N] = power
+    for c in range(w, y.size):
+        dy[c] = 0.0  # the memory changes on accepted steps only
 
 
-def accelerations(packed: Packed, x, u=None, g=9.80665, member=0) -> np.ndarray:
-    """Accelerations of one state (m/s^2), for tests: the compiled right-hand side against the NumPy one."""
+def accelerations(packed: Packed, x, u=None, g=9.80665, member=0, memory=None) -> np.ndarray:
+    """Accelerations of one state (m/s^2), for tests: the compiled right-hand side against the NumPy one
+    (``memory``: the largest approach of each link, m, for laws with memory; read, never written)."""
     x = np.ascontiguousarray(x, dtype=float)
     u = np.zeros_like(x) if u is None else np.ascontiguousarray(u, dtype=float)
+    memory = np.zeros(0) if memory is None else np.ascontiguousarray(memory, dtype=float)
     out = np.empty_like(x)
-    _accelerations(packed, member, float(g), x, u, out)
+    _accelerations(packed, member, float(g), x, u, out, memory)
     return out
 
 
@@ -359,11 +468,12 @@ def _group_derivative(m, members, g, y, dy, N, n):
 
 
 @_jit()
-def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps):
+def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, out_m):
     """The runs ``members`` stepped together (one step size for the group; one member: its own steps).
 
     ``y0`` and ``atol`` are (G, n), the states of the group's members; ``out_x``, ``out_u`` (B, T, K) and ``out_w``
-    (B, T) are filled at rows ``members``.  Returns (status, evaluations, steps, rejections, final states (G, n)).
+    (B, T) are filled at rows ``members``, ``out_m`` (B, T, links) with the memory of laws that have one.
+    Returns (status, evaluations, steps, rejections, final states (G, n)).
     """
     G, n = y0.shape
     size = G * n
@@ -376,7 +486,8 @@ def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, 
     t_end = t_eval[T - 1]
     t = 0.0
     j = 0
-    damped = n > 2 * N
+    damped = m.ints[3] != 0
+    w = 2 * N + (1 if damped else 0)
     K = keep.size
     while j < T and t_eval[j] <= 0.0:  # samples at the start
         for q in range(G):
@@ -384,6 +495,8 @@ def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, 
             for c in range(K):
                 out_x[b, j, c], out_u[b, j, c] = y[o + keep[c]], y[o + N + keep[c]]
             out_w[b, j] = y[o + 2 * N] if damped else 0.0
+            for c in range(n - w):
+                out_m[b, j, c] = y[o + w + c]
         j += 1
     _group_derivative(m, members, g, y, k1, N, n)
     evaluations = 1
@@ -477,7 +590,12 @@ def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, 
                             out_u[b, j, c - K] = value
                         else:
                             out_w[b, j] = value
+                    for c in range(n - w):
+                        out_m[b, j, c] = y[o + w + c]  # the memory the step started from (what its stages used)
                 j += 1
+            if n > w and _remember(m, members, y, y_new, h, N, n):  # a peak inside the step: the new memory
+                _group_derivative(m, members, g, y_new, k7, N, n)  # changes the force at y_new (first same as last)
+                evaluations += 1
             for c in range(size):
                 y[c] = y_new[c]
                 k1[c] = k7[c]  # first same as last
@@ -497,39 +615,46 @@ def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, 
 
 
 @_jit()
-def _dopri5_shared(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, status, stats, final):
+def _dopri5_shared(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, status, stats, final,
+                   out_m):  # fmt: skip
     members = np.arange(y0.shape[0])
     code, evaluations, steps, rejections, y = _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x,
-                                                            out_u, out_w, max_steps)  # fmt: skip
+                                                            out_u, out_w, max_steps, out_m)  # fmt: skip
     for b in range(y0.shape[0]):
         status[b], stats[b, 0], stats[b, 1], stats[b, 2] = code, evaluations, steps, rejections
         final[b] = y[b]
 
 
 @_jit()
-def _dopri5_serial(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, status, stats, final):
+def _dopri5_serial(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, status, stats, final,
+                   out_m):  # fmt: skip
     for b in range(y0.shape[0]):
         code, evaluations, steps, rejections, y = _dopri5_group(
-            m, np.array([b]), g, y0[b : b + 1], t_eval, rtol, atol[b : b + 1], keep, N, out_x, out_u, out_w, max_steps
-        )
+            m, np.array([b]), g, y0[b : b + 1], t_eval, rtol, atol[b : b + 1], keep, N, out_x, out_u, out_w, max_steps,
+            out_m,
+        )  # fmt: skip
         status[b], stats[b, 0], stats[b, 1], stats[b, 2] = code, evaluations, steps, rejections
         final[b] = y[0]
 
 
 @_jit(parallel=True)
-def _dopri5_parallel(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, status, stats, final):
+def _dopri5_parallel(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, status, stats, final,
+                     out_m):  # fmt: skip
     for b in prange(y0.shape[0]):
         code, evaluations, steps, rejections, y = _dopri5_group(
-            m, np.array([b]), g, y0[b : b + 1], t_eval, rtol, atol[b : b + 1], keep, N, out_x, out_u, out_w, max_steps
-        )
+            m, np.array([b]), g, y0[b : b + 1], t_eval, rtol, atol[b : b + 1], keep, N, out_x, out_u, out_w, max_steps,
+            out_m,
+        )  # fmt: skip
         status[b], stats[b, 0], stats[b, 1], stats[b, 2] = code, evaluations, steps, rejections
         final[b] = y[0]
 
 
 def dopri5(packed: Packed, y0, t_eval, rtol, atol, keep, g, *, max_steps=10_000_000, parallel=None, shared=False):
-    """Integrate B runs (rows of ``y0``, each [x, u, W if damped]) over ``t_eval`` with the 5(4) pair.
+    """Integrate B runs (rows of ``y0``, each [x, u, W if damped, memory per link if stateful]) over ``t_eval``
+    with the 5(4) pair.
 
-    Returns x and u of the coordinates ``keep`` (B, T, K), W (B, T), the final states (B, n), the exit
+    Returns x and u of the coordinates ``keep`` (B, T, K), W (B, T), the memory (B, T, links; links 0 without
+    memory), the final states (B, n), the exit
     status of each run (0 done, :data:`STATUS` otherwise) and its counts (evaluations, accepted and
     rejected steps), shape (B, 3).  ``atol`` has one row per run.  Each run takes its own steps, on Numba's
     threads when ``parallel`` (default: more than one run); ``shared``: the runs take one step size, the
@@ -540,6 +665,7 @@ def dopri5(packed: Packed, y0, t_eval, rtol, atol, keep, g, *, max_steps=10_000_
     T, K = t_eval.size, keep.size
     N = int(packed.ints[2])
     out_x, out_u, out_w = np.empty((B, T, K)), np.empty((B, T, K)), np.zeros((B, T))
+    out_m = np.zeros((B, T, y0.shape[1] - 2 * N - int(packed.ints[3] != 0)))
     status, stats, final = np.zeros(B, dtype=np.int64), np.zeros((B, 3), dtype=np.int64), np.empty_like(y0)
     if shared:
         kernel = _dopri5_shared
@@ -547,18 +673,18 @@ def dopri5(packed: Packed, y0, t_eval, rtol, atol, keep, g, *, max_steps=10_000_
         kernel = _dopri5_parallel if (B > 1 if parallel is None else parallel) else _dopri5_serial
     kernel(packed, float(g), y0, np.ascontiguousarray(t_eval, dtype=float), float(rtol),
            np.ascontiguousarray(atol, dtype=float), np.ascontiguousarray(keep, dtype=np.int64), N, out_x, out_u, out_w,
-           int(max_steps), status, stats, final)  # fmt: skip
-    return out_x, out_u, out_w, final, status, stats
+           int(max_steps), status, stats, final, out_m)  # fmt: skip
+    return out_x, out_u, out_w, out_m, final, status, stats
 
 
 # -- velocity Verlet -----------------------------------------------------------------------------------------------
 @_jit()
-def _verlet_member(m, b, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u):
+def _verlet_member(m, b, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, memory, out_m):
     N = x0.size
     x, u_half = x0.copy(), np.empty(N)
     a = np.empty(N)
     x_prev, u_prev = np.empty(keep.size), np.empty(keep.size)
-    _accelerations(m, b, g, x, u0, a)
+    _accelerations(m, b, g, x, u0, a, memory)
     half = 0.5 * dt
     for c in range(N):
         u_half[c] = u0[c] + half * a[c]
@@ -567,6 +693,7 @@ def _verlet_member(m, b, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u):
     while j < T and t_eval[j] / dt - 1e-9 <= 0.0:  # samples at the start (step "-1")
         for c in range(keep.size):
             out_x[j, c], out_u[j, c] = x[keep[c]], u0[keep[c]]
+        out_m[j] = memory
         j += 1
     for k in range(n_steps):
         sampling = j < T and math.ceil(t_eval[j] / dt - 1e-9) - 1 == k
@@ -576,7 +703,7 @@ def _verlet_member(m, b, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u):
                 u_prev[c] = u_half[keep[c]] - half * a[keep[c]]
         for c in range(N):
             x[c] += dt * u_half[c]
-        _accelerations(m, b, g, x, u_half, a)  # undamped: the velocities are not read
+        _accelerations(m, b, g, x, u_half, a, memory)  # undamped: the velocities are not read
         while j < T and math.ceil(t_eval[j] / dt - 1e-9) - 1 == k:
             s = t_eval[j] / dt - k
             h00, h10, h01, h11 = 2 * s**3 - 3 * s**2 + 1, s**3 - 2 * s**2 + s, -2 * s**3 + 3 * s**2, s**3 - s**2
@@ -586,7 +713,12 @@ def _verlet_member(m, b, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u):
                 u_now = u_half[q] + half * a[q]
                 out_x[j, c] = h00 * x_prev[c] + h10 * dt * u_prev[c] + h01 * x[q] + h11 * dt * u_now
                 out_u[j, c] = (d00 * x_prev[c] + d01 * x[q]) / dt + d10 * u_prev[c] + d11 * u_now
+            out_m[j] = memory
             j += 1
+        for k in range(memory.size):  # the memory after the step, from the new positions
+            if m.kind[k] == 3:
+                e, _ = _extension(m, k, x, u_half)
+                memory[k] = max(memory[k], e)
         for c in range(N):
             u_half[c] += dt * a[c]
         if not math.isfinite(x[0] + u_half[0]):
@@ -601,24 +733,27 @@ def _verlet_member(m, b, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u):
 
 
 @_jit()
-def _verlet_serial(m, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, status, final_x, final_u):
+def _verlet_serial(m, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, status, final_x, final_u, memory, out_m):
     for b in range(x0.shape[0]):
-        code, x, u = _verlet_member(m, b, g, x0[b], u0[b], t_eval, n_steps, dt, keep, out_x[b], out_u[b])
+        code, x, u = _verlet_member(m, b, g, x0[b], u0[b], t_eval, n_steps, dt, keep, out_x[b], out_u[b], memory[b],
+                                    out_m[b])  # fmt: skip
         status[b] = code
         final_x[b], final_u[b] = x, u
 
 
 @_jit(parallel=True)
-def _verlet_parallel(m, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, status, final_x, final_u):
+def _verlet_parallel(m, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, status, final_x, final_u, memory, out_m):
     for b in prange(x0.shape[0]):
-        code, x, u = _verlet_member(m, b, g, x0[b], u0[b], t_eval, n_steps, dt, keep, out_x[b], out_u[b])
+        code, x, u = _verlet_member(m, b, g, x0[b], u0[b], t_eval, n_steps, dt, keep, out_x[b], out_u[b], memory[b],
+                                    out_m[b])  # fmt: skip
         status[b] = code
         final_x[b], final_u[b] = x, u
 
 
-def verlet(packed: Packed, x0, u0, t_eval, t_end, dt, keep, g, *, parallel=None):
+def verlet(packed: Packed, x0, u0, t_eval, t_end, dt, keep, g, *, parallel=None, memory=None):
     """Velocity Verlet over ``t_eval`` (steps of ``t_end``/ceil(t_end/dt)): x and u of ``keep`` (B, T, K), the
-    final x and u (B, n), the exit status of each run and the step taken."""
+    final x and u (B, n), the exit status of each run and the step taken; with ``memory`` (B, links: laws with
+    memory) also the memory at the samples (B, T, links) and at the end (B, links)."""
     x0 = np.ascontiguousarray(x0, dtype=float)
     u0 = np.ascontiguousarray(u0, dtype=float)
     B = x0.shape[0]
@@ -627,9 +762,15 @@ def verlet(packed: Packed, x0, u0, t_eval, t_end, dt, keep, g, *, parallel=None)
     T, K = t_eval.size, keep.size
     out_x, out_u = np.empty((B, T, K)), np.empty((B, T, K))
     status, final_x, final_u = np.zeros(B, dtype=np.int64), np.empty_like(x0), np.empty_like(u0)
+    stateful = memory is not None
+    memory = np.array(memory if stateful else np.zeros((B, 0)), dtype=float)  # a copy: the kernel updates it
+    out_m = np.zeros((B, T, memory.shape[1]))
     kernel = _verlet_parallel if (B > 1 if parallel is None else parallel) else _verlet_serial
     kernel(packed, float(g), x0, u0, np.ascontiguousarray(t_eval, dtype=float), int(n_steps), float(dt),
-           np.ascontiguousarray(keep, dtype=np.int64), out_x, out_u, status, final_x, final_u)  # fmt: skip
+           np.ascontiguousarray(keep, dtype=np.int64), out_x, out_u, status, final_x, final_u, memory,
+           out_m)  # fmt: skip
+    if stateful:
+        return out_x, out_u, final_x, final_u, status, dt, n_steps, out_m, memory
     return out_x, out_u, final_x, final_u, status, dt, n_steps
 
 

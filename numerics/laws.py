@@ -33,6 +33,15 @@ dashpot gamma_b of Eqs. (5)-(6)) and :class:`Dashpot` (a linear dashpot on its o
 dashpot in parallel with a spring is the spring's ``gamma``; ``law + Dashpot(gamma)``
 writes the same thing.  The paper's dashpots gamma_c and gamma_b are those of its
 contact and bending springs.
+
+Where the energy goes (beyond the paper): :class:`Thornton` (the contact that yields, with
+the largest approach of each link as its internal state, ``n_state = 1``),
+:class:`HuntCrossley` (a viscoelastic contact whose damping grows with the indentation) and
+:func:`loss_factor_spring` (the ring body with a material loss factor).  A law with state
+takes the state as ``memory`` (m, one value per link) in ``force``, ``energy`` and
+``plastic_work``; without it, the state is the law's own initial value.  The integrators
+keep the state per run and update it on accepted steps only
+(:mod:`ringchain.numerics.kernels`).
 """
 
 from __future__ import annotations
@@ -42,7 +51,18 @@ import functools
 import numpy as np
 from ringchain.theory import _validate as v
 
-__all__ = ["Law", "PowerLaw", "Hertz", "LinearSpring", "Dashpot", "power_law_force", "linear_spring_force"]
+__all__ = [
+    "Law",
+    "PowerLaw",
+    "Hertz",
+    "LinearSpring",
+    "Dashpot",
+    "Thornton",
+    "HuntCrossley",
+    "loss_factor_spring",
+    "power_law_force",
+    "linear_spring_force",
+]
 
 
 def power_law_force(delta, delta_rate=0.0, *, K, n, gamma=0.0):
@@ -440,3 +460,241 @@ class Dashpot(Law):
 
     def static_extension(self, tension) -> np.ndarray:
         raise ValueError("a dashpot carries no static tension")
+
+
+class Thornton(Law):
+    r"""Thornton's elastic-perfectly plastic contact with memory of its largest approach (beyond the paper).
+
+    The contact of two tori through its equivalent sphere (:mod:`ringchain.theory.plastic`): the
+    Hertz law K delta^(3/2) (paper Eq. (1)) up to the approach at first yield delta_y, then the
+    loading line of slope 3/2 K sqrt(delta_y); below the largest approach reached so far,
+    delta_m, the elastic Hertz curve of the flattened tip, which opens at the residual approach
+    delta_p (:func:`~ringchain.theory.thornton_unloading_force`).  A viscous ``gamma`` may act
+    in parallel, inside the bracket, where the contact is engaged (force > 0).
+
+    Parameters
+    ----------
+    K : float or array_like
+        K_c, N/m^1.5 (:func:`ringchain.theory.hertz_stiffness`).
+    delta_y : float or array_like
+        Approach at first yield, m (:func:`ringchain.theory.first_yield`).
+    gamma : float or array_like, optional
+        Dashpot in parallel, N s/m.
+    delta_max : float or array_like, optional
+        Largest approach before the run, m (the initial state; default 0: a virgin contact).
+
+    Notes
+    -----
+    The internal state of a link is delta_m.  The force at approach delta uses
+    max(delta_m, delta), so that a trial state beyond the memory is already on the loading
+    line: the force is a function of the state and the memory, and the memory is written by
+    the integrator after each accepted step only (:mod:`ringchain.numerics.kernels`).  The
+    energy of a link is split into the elastic energy stored on the current curve
+    (:meth:`energy`) and the plastic work done so far (:meth:`plastic_work`), both from
+    :func:`~ringchain.theory.thornton_energy`.
+
+    Examples
+    --------
+    >>> law = Thornton(K=1.0, delta_y=1.0)
+    >>> float(law.force(2.0)), float(law.force(2.0, memory=3.0))  # loading line; unloading from 3
+    (2.5, 1.7077330597891507)
+    """
+
+    PARAMETERS = (("K", "N/m^1.5", v.positive), ("delta_y", "m", v.positive), ("gamma", "N s/m", v.nonnegative),
+                  ("delta_max", "m", v.nonnegative))  # fmt: skip
+    LINEAR = ("K", "gamma")
+    one_sided = True
+    energy_kind = "contact"
+    n_state = 1
+
+    def _default(self, name):
+        return 0.0 if name in ("gamma", "delta_max") else None
+
+    def _memory(self, e, memory):
+        return np.broadcast_to(self.delta_max if memory is None else np.asarray(memory, dtype=float), np.shape(e))
+
+    def _elastic(self, e, memory):
+        from ringchain.theory import thornton_unloading_force
+
+        return thornton_unloading_force(e, delta_max=self._memory(e, memory), K_c=self.K, delta_y=self.delta_y)
+
+    def force_into(self, e, rate, out, work, memory=None):
+        out[...] = self._elastic(e, memory)
+        if rate is not None and self.damped:
+            engaged = out > 0
+            np.multiply(rate, self.gamma, out=work)
+            out += work
+            np.maximum(out, 0.0, out=out)
+            out[~engaged] = 0.0
+
+    def force(self, e, rate=None, memory=None) -> np.ndarray:
+        """Force, N, at extensions ``e`` (m), rates ``rate`` (m/s) and largest approaches ``memory`` (m)."""
+        e = np.asarray(e, dtype=float)
+        shape = np.broadcast_shapes(e.shape, np.shape(rate) if rate is not None else (), np.shape(memory),
+                                    self._shape())  # fmt: skip
+        e = np.broadcast_to(e, shape)
+        rate = None if rate is None or not self.damped else np.broadcast_to(np.asarray(rate, dtype=float), shape)
+        out = np.empty(shape)
+        self.force_into(e, rate, out, np.empty(shape), None if memory is None else np.broadcast_to(memory, shape))
+        return out
+
+    def elastic_force(self, e, memory=None) -> np.ndarray:
+        return self.force(e, None, memory)
+
+    def dissipation(self, e, rate, memory=None) -> np.ndarray:
+        """Power the dashpot takes out, W (the plastic work is :meth:`plastic_work`)."""
+        if not self.damped:
+            return np.zeros(np.broadcast_shapes(np.shape(e), self._shape()))
+        return (self.force(e, rate, memory) - self.elastic_force(e, memory)) * rate
+
+    def _energies(self, e, memory):
+        from ringchain.theory import thornton_energy
+
+        e = np.asarray(e, dtype=float)
+        shape = np.broadcast_shapes(e.shape, np.shape(memory), self._shape())
+        e = np.broadcast_to(e, shape)
+        return thornton_energy(e, delta_max=self._memory(e, memory), K_c=self.K, delta_y=self.delta_y)
+
+    def energy(self, e, memory=None) -> np.ndarray:
+        """Elastic energy stored on the current curve, J (2/5 F (delta - delta_p) once yielded)."""
+        return self._energies(e, memory)[0]
+
+    def plastic_work(self, e, memory=None) -> np.ndarray:
+        """Plastic work done on the contact up to max(memory, delta), J (zero below first yield)."""
+        return self._energies(e, memory)[1]
+
+    def _hertz(self) -> PowerLaw:
+        return PowerLaw(self.K, 1.5)
+
+    def stiffness(self, e, memory=None) -> np.ndarray:
+        """dF/d(delta), N/m: the loading slope 3/2 K sqrt(delta_y) on the line, the tip's Hertz slope below it."""
+        e = np.asarray(e, dtype=float)
+        h = 1e-7 * np.maximum(np.abs(e), self.delta_y)
+        return (self.force(e + h, None, memory) - self.force(e - h, None, memory)) / (2 * h)
+
+    def extension_at_energy(self, E) -> np.ndarray:
+        """The Hertz curve's ((5/2) E/K)^(2/5), m (a tolerance scale)."""
+        return self._hertz().extension_at_energy(E)
+
+    def stiffness_bound(self, X) -> np.ndarray:
+        """The Hertz curve's bound (the loading line and the tip's curve are never stiffer), N/m."""
+        return self._hertz().stiffness_bound(X)
+
+    def static_extension(self, tension) -> np.ndarray:
+        """Extension carrying the static ``tension`` (N) from the law's memory ``delta_max``, m.
+
+        On the loading curve where the tension exceeds the loading force at delta_max (the
+        Hertz inverse up to F_y = K delta_y^(3/2), then (2 T/(K sqrt(delta_y)) + delta_y)/3);
+        else on the curve of the flattened tip, delta_p + (delta_m - delta_p)(T/F_m)^(2/3).
+        """
+        from ringchain.theory import thornton_loading_force, thornton_residual_indentation
+
+        T = np.maximum(np.asarray(tension, dtype=float), 0.0)
+        K, dy, dm = self.K, self.delta_y, np.maximum(self.delta_max, self.delta_y)
+        loading = np.where(T <= K * dy**1.5, (T / K) ** (2.0 / 3.0), (2.0 * T / (K * np.sqrt(dy)) + dy) / 3.0)
+        F_m = thornton_loading_force(dm, K_c=K, delta_y=dy)
+        delta_p = thornton_residual_indentation(dm, delta_y=dy)
+        unloading = delta_p + (dm - delta_p) * (T / F_m) ** (2.0 / 3.0)
+        return np.where(T >= F_m, loading, unloading)
+
+    def remembered(self, memory) -> Thornton:
+        """The same law whose initial memory is ``memory`` (m per link): a contact flattened by an earlier run."""
+        memory = np.asarray(v.nonnegative("memory", memory, "m"), dtype=float)
+        return self._rebuilt(delta_max=np.maximum(memory, 0.0))
+
+
+class HuntCrossley(Law):
+    r"""Viscoelastic contact [K delta^n (1 + 3/2 alpha delta_dot)]_+ (Hunt and Crossley 1975; beyond the paper).
+
+    The damping force 3/2 alpha K delta^n delta_dot grows with the indentation as the contact
+    area does (the Kuwabara-Kono form, whose damping is proportional to the contact
+    stiffness times the rate), so that it vanishes when the contact opens and closes: no jump
+    of the force at first touch, unlike a constant dashpot.  The bracket stops it pulling.
+
+    Parameters
+    ----------
+    K : float or array_like
+        Stiffness, N/m^n (K_c of paper Eq. (1) for n = 3/2).
+    n : float or array_like, optional
+        Exponent, >= 1; default 3/2.
+    alpha : float or array_like, optional
+        Damping constant, s/m, >= 0.  For small alpha V a collision at speed V rebounds with
+        e = 1 - alpha V (Hunt and Crossley's linearisation).
+
+    Examples
+    --------
+    >>> law = HuntCrossley(K=3.0, alpha=0.2)
+    >>> round(float(law.force(4.0, 1.0)), 12)  # 3 * 8 * (1 + 0.3)
+    31.2
+    """
+
+    PARAMETERS = (("K", "N/m^n", v.positive), ("n", "", _exponent), ("alpha", "s/m", v.nonnegative))
+    LINEAR = ("K",)
+    one_sided = True
+    energy_kind = "contact"
+
+    def _default(self, name):
+        return {"n": 1.5, "alpha": 0.0}.get(name)
+
+    @functools.cached_property
+    def damped(self) -> bool:
+        return bool(np.any(np.asarray(self.alpha) > 0))
+
+    def _elastic(self) -> PowerLaw:
+        return PowerLaw(self.K, self.n)
+
+    def force_into(self, e, rate, out, work):
+        self._elastic().force_into(e, None, out, work)
+        if rate is not None and self.damped:
+            np.multiply(rate, 1.5 * self.alpha, out=work)
+            work += 1.0
+            out *= work
+            np.maximum(out, 0.0, out=out)
+
+    def energy(self, e) -> np.ndarray:
+        return self._elastic().energy(e)
+
+    def stiffness(self, e) -> np.ndarray:
+        return self._elastic().stiffness(e)
+
+    def extension_at_energy(self, E) -> np.ndarray:
+        return self._elastic().extension_at_energy(E)
+
+    def stiffness_bound(self, X) -> np.ndarray:
+        return self._elastic().stiffness_bound(X)
+
+    def static_extension(self, tension) -> np.ndarray:
+        return self._elastic().static_extension(tension)
+
+
+def loss_factor_spring(K, *, eta, omega) -> LinearSpring:
+    """The ring body's bending spring with a material loss factor: K and the dashpot gamma = eta K/omega.
+
+    Parameters
+    ----------
+    K : float or array_like
+        Bending stiffness K_b, N/m (paper Eq. (2)).
+    eta : float or array_like
+        Loss factor, >= 0 (energy lost per cycle over 2 pi times the largest stored energy; of
+        order 1e-4 to 1e-3 for steels).
+    omega : float
+        Angular frequency at which the loss factor holds, rad/s: the pulse's (pi over its width)
+        for a chain's leading pulse.
+
+    Returns
+    -------
+    LinearSpring
+        A Kelvin-Voigt spring: under a harmonic motion at omega it loses 2 pi eta times its largest
+        stored energy per cycle, as a hysteretic (frequency-independent) loss factor would; at other
+        frequencies its loss grows as omega.  This choice keeps the law in the engine's state (no
+        fractional or Prony states) and is exact at the frequency that carries the pulse.
+
+    Examples
+    --------
+    >>> loss_factor_spring(3.3e6, eta=1e-3, omega=1e5).gamma  # N s/m
+    0.033
+    """
+    K = v.positive("K", K, "N/m")
+    eta = v.nonnegative("eta", eta)
+    omega = v.positive("omega", omega, "rad/s")
+    return LinearSpring(K, np.asarray(eta * K / omega, dtype=float))

@@ -262,6 +262,41 @@ class Network:
         """Whether any law has a dashpot (the motion then depends on velocities)."""
         return any(law.damped for law, _ in self.groups)
 
+    @functools.cached_property
+    def stateful(self) -> bool:
+        """Whether a law has internal state (a memory per link, as :class:`~ringchain.numerics.laws.Thornton`)."""
+        return any(law.n_state for law, _ in self.groups)
+
+    @property
+    def stateful_laws(self) -> tuple:
+        """Names of the laws with internal state."""
+        return tuple(type(law).__name__ for law, _ in self.groups if law.n_state)
+
+    def initial_memory(self) -> np.ndarray:
+        """The memory of every link before a run (its law's ``delta_max``, 0 for laws without), m, shape
+        (B or 1, n_links)."""
+        out = np.zeros((self.batch_shape[0] if self.batch_shape else 1, self.n_links))
+        for law, index in self.groups:
+            if law.n_state:
+                out[:, index] = np.broadcast_to(law.delta_max, (out.shape[0], index.size))
+        return out
+
+    def remembered(self, memory) -> Network:
+        """The same network whose laws with memory start from ``memory`` (m per link, e.g. the end of a run)."""
+        memory = np.asarray(memory, dtype=float)
+        if memory.shape[-1] != self.n_links or self.batch_shape:
+            raise ValueError(f"memory must give one value per link ({self.n_links}) of one network, got {memory.shape}")
+        out = object.__new__(type(self))
+        out.__dict__.update({k: val for k, val in self.__dict__.items() if k in (*_LAYOUT, "mass", "weight_mass")})
+        out.groups = tuple((law.remembered(memory[index]) if law.n_state else law, index) for law, index in self.groups)
+        return out
+
+    def _law_call(self, law, method, e, memory, index, *args):
+        """``law.method(e, *args)``, with the memory of the links ``index`` for laws with memory."""
+        if law.n_state and memory is not None:
+            return getattr(law, method)(e, *args, memory=np.asarray(memory)[..., index])
+        return getattr(law, method)(e, *args)
+
     def law_of(self, link: int) -> Law:
         """The law of one link (its parameters as numbers)."""
         for law, index in self.groups:
@@ -458,21 +493,22 @@ class Network:
         """Extension of every link, m, shape (..., n_links)."""
         return self.geometry(np.asarray(x, dtype=float))[0]
 
-    def forces(self, e, rate=None) -> np.ndarray:
+    def forces(self, e, rate=None, memory=None) -> np.ndarray:
         """Force of every link, N, from the links' extensions ``e`` (m) and rates (m/s; read if damped), shape
-        (..., n_links)."""
+        (..., n_links); ``memory`` (m, per link) for laws with memory (default their initial memory)."""
         e = np.asarray(e, dtype=float)
         out = np.empty_like(e)
         for law, index in self.groups:
-            out[..., index] = law.force(e[..., index], None if rate is None else np.asarray(rate)[..., index])
+            out[..., index] = self._law_call(law, "force", e[..., index], memory, index,
+                                             None if rate is None else np.asarray(rate)[..., index])  # fmt: skip
         return out
 
-    def link_energy(self, e) -> np.ndarray:
-        """Energy stored in every link at extensions ``e``, J, shape (..., n_links)."""
+    def link_energy(self, e, memory=None) -> np.ndarray:
+        """Energy stored in every link at extensions ``e``, J, shape (..., n_links) (``memory`` as :meth:`forces`)."""
         e = np.asarray(e, dtype=float)
         out = np.empty_like(e)
         for law, index in self.groups:
-            out[..., index] = law.energy(e[..., index])
+            out[..., index] = self._law_call(law, "energy", e[..., index], memory, index)
         return out
 
     def stiffness(self, e) -> np.ndarray:
@@ -500,10 +536,11 @@ class Network:
                 power = power + np.sum(law.dissipation(e[..., index], rate[..., index]), axis=-1)
         return power
 
-    def link_forces(self, x, u=None, links=None, columns=None, elastic=False) -> np.ndarray:
+    def link_forces(self, x, u=None, links=None, columns=None, elastic=False, memory=None) -> np.ndarray:
         """Force of ``links`` (default all), N, positive in tension, shape (..., n); see :meth:`geometry`.
 
-        ``u`` is read only if the network is damped; ``elastic`` leaves out the dashpots.
+        ``u`` is read only if the network is damped; ``elastic`` leaves out the dashpots; ``memory`` (m, every
+        link: shape (..., n_links)) for laws with memory.
         """
         links = np.arange(self.n_links) if links is None else np.asarray(links, dtype=np.intp)
         e, rate, _ = self.geometry(x, u if (self.damped and not elastic) else None, links, columns)
@@ -515,7 +552,11 @@ class Network:
             part = law.take(np.searchsorted(index, links[hit])) if not np.array_equal(index, links[hit]) else law
             if part._shape() and len(part._shape()) > 1:  # a stack: parameters (B, n) against e (B, T, n)
                 part = part._rebuilt(**{k: p[:, None, :] if np.ndim(p) > 1 else p for k, p in part.params.items()})
-            out[..., hit] = part.force(e[..., hit], None if rate is None else rate[..., hit])
+            args = (e[..., hit], None if rate is None else rate[..., hit])
+            if part.n_state and memory is not None:
+                out[..., hit] = part.force(*args, memory=np.asarray(memory)[..., links[hit]])
+            else:
+                out[..., hit] = part.force(*args)
         return out
 
     # -- the dynamics contract ---------------------------------------------------------------------
@@ -723,18 +764,26 @@ class Network:
         per_site = np.broadcast_to(per_site, (X.size, self.n_sites, 2, self.dim)).ravel()
         return np.concatenate([per_site, E]) if self.damped else per_site
 
-    def energy(self, x, u, x_start, g, dissipated):
-        """Kinetic, contact, bending, gravity and dissipated energy, J, each of shape (...)."""
+    def energy(self, x, u, x_start, g, dissipated, memory=None):
+        """Kinetic, contact, bending, gravity, dissipated and plastic energy, J, each of shape (...).
+
+        ``memory`` (m, shape (..., n_links)): the memory of laws with one (default their initial memory);
+        the plastic work is counted from a virgin contact.
+        """
         mass = np.repeat(self.mass, self.dim, axis=-1)
         if mass.ndim > 1:  # a stack: (B, n) against states (B, T, n)
             mass = mass[:, None, :]
         e, _, _ = self.geometry(x)
         stored = {"contact": np.zeros(e.shape[:-1]), "bending": np.zeros(e.shape[:-1])}
+        plastic = np.zeros(e.shape[:-1])
         for law, index in self.groups:
             part = law
             if len(law._shape()) > 1:
                 part = law._rebuilt(**{k: p[:, None, :] if np.ndim(p) > 1 else p for k, p in law.params.items()})
-            stored[law.energy_kind] = stored[law.energy_kind] + np.sum(part.energy(e[..., index]), axis=-1)
+            stored[law.energy_kind] = stored[law.energy_kind] + np.sum(
+                self._law_call(part, "energy", e[..., index], memory, index), axis=-1)  # fmt: skip
+            if law.n_state:
+                plastic = plastic + np.sum(self._law_call(part, "plastic_work", e[..., index], memory, index), axis=-1)
         weight = self.weight_mass if self.weight_mass.ndim == 1 else self.weight_mass[:, None, :]
         height = np.asarray(x - x_start)
         if self.dim > 1:
@@ -745,6 +794,7 @@ class Network:
             bending=stored["bending"],
             gravity=g * np.sum(weight * height, axis=-1),
             dissipated=dissipated,
+            plastic=plastic,
         )
 
     def scales(self, x0, u0, g):

@@ -34,7 +34,9 @@ class EnergyBudget:
     ``gravity`` is measured from the initial configuration.  Without dashpots,
     ``dissipated`` is zero and ``total`` is conserved; with them, ``total`` (which
     includes the dissipated energy) is conserved and the mechanical energy
-    ``total - dissipated`` only decreases.
+    ``total - dissipated`` only decreases.  ``plastic`` is the work done on contacts that
+    yield (:class:`~ringchain.numerics.laws.Thornton`), counted from virgin contacts and
+    part of ``total``.
     """
 
     kinetic: np.ndarray
@@ -42,6 +44,7 @@ class EnergyBudget:
     bending: np.ndarray
     gravity: np.ndarray
     dissipated: np.ndarray
+    plastic: np.ndarray | float = 0.0
 
     @property
     def mechanical(self) -> np.ndarray:
@@ -49,7 +52,7 @@ class EnergyBudget:
 
     @property
     def total(self) -> np.ndarray:
-        return self.mechanical + self.dissipated
+        return self.mechanical + self.dissipated + self.plastic
 
 
 @dataclass(frozen=True, eq=False)
@@ -70,6 +73,9 @@ class NetworkSimulation:
         What the integrator reports (method, right-hand-side evaluations, step).
     sites : ndarray or None
         The sites recorded, sorted (None: every site).
+    memory : ndarray or None
+        Laws with memory: the memory of every link at each sample, m, shape (..., T, n_links) (the
+        largest approach of a :class:`~ringchain.numerics.laws.Thornton` contact); None otherwise.
     """
 
     t: np.ndarray
@@ -80,6 +86,7 @@ class NetworkSimulation:
     network: object = None
     stats: dict = field(default_factory=dict, repr=False)
     sites: np.ndarray | None = None
+    memory: np.ndarray | None = None
 
     @functools.cached_property
     def links(self) -> np.ndarray:
@@ -93,7 +100,7 @@ class NetworkSimulation:
     @functools.cached_property
     def link_force(self) -> np.ndarray:
         """Force of each link (:attr:`links`), N, positive in tension; shape (..., T, n_links)."""
-        return self.network.link_forces(self.x, self.u, self.links, self.sites)
+        return self.network.link_forces(self.x, self.u, self.links, self.sites, memory=self.memory)
 
     def _require_all(self, what: str) -> None:
         if self.sites is not None:
@@ -113,7 +120,8 @@ class NetworkSimulation:
     def energy(self) -> EnergyBudget:
         """Kinetic, contact, bending, gravity and dissipated energy, J (see :class:`EnergyBudget`)."""
         self._require_all("energy")
-        return self.network.energy(self.x, self.u, self.x[..., :1, :], self.g, self.dissipated)
+        memory = {} if self.memory is None else {"memory": self.memory}
+        return self.network.energy(self.x, self.u, self.x[..., :1, :], self.g, self.dissipated, **memory)
 
 
 @dataclass(frozen=True, eq=False)
@@ -127,7 +135,8 @@ class NetworkBatch(NetworkSimulation):
         b = range(len(self))[b]
         net = self.network.member(b) if self.network.batch_shape else self.network
         return NetworkSimulation(t=self.t, x=self.x[b], u=self.u[b], dissipated=self.dissipated[b], g=self.g,
-                                 network=net, stats=self.stats, sites=self.sites)  # fmt: skip
+                                 network=net, stats=self.stats, sites=self.sites,
+                                 memory=None if self.memory is None else self.memory[b])  # fmt: skip
 
 
 @dataclass(frozen=True, eq=False)
@@ -172,7 +181,7 @@ class Simulation(NetworkSimulation):
 
     def _link_force_of(self, links) -> np.ndarray:
         """Forces of the chain's ``links`` (1-d array), N, shape (..., T, len(links)), from the recorded sites."""
-        return self.network.link_forces(self.x, self.u, links, self.sites)
+        return self.network.link_forces(self.x, self.u, links, self.sites, memory=self.memory)
 
     def _sensor(self, rings) -> np.ndarray:
         """Sensor forces of ``rings`` (1-d array), N, shape (..., T, len(rings)); see :attr:`sensor_force`."""
@@ -305,6 +314,7 @@ class BatchSimulation(Simulation):
             t=self.t, x=self.x[i], u=self.u[i], dissipated=self.dissipated[i], g=self.g, network=self.network,
             stats=self.stats, sites=self.sites, chain=self.chain, impact_velocity=float(self.impact_velocity[i]),
             drop_height=None if self.drop_height is None else float(self.drop_height[i]), rings=self.rings,
+            memory=None if self.memory is None else self.memory[i],
         )  # fmt: skip
 
     def __iter__(self):
