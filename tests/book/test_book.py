@@ -59,6 +59,7 @@ def test_every_chapter_is_in_the_table_of_contents_and_back():
         "theory_vs_lattice",
         "linear_waves",
         "rings_that_bend",
+        "energy",
         "designing",
         "fitting",
         "paper_notes",
