@@ -3,7 +3,8 @@ r"""Where the energy of an impact goes: the jobs of a chain whose contacts yield
 - :func:`energy_shares` -- the energy budget of a run as shares of the impact energy: kinetic, stored
   (contacts and ring bodies), gravity, plastic work and viscous loss, closing to the impact energy;
 - :func:`second_impact` -- the chain after a run, its contacts flattened by it and hanging again at rest
-  (shakedown: a contact reloaded below its largest approach is elastic);
+  (a contact reloaded below its largest approach is elastic; past it, Thornton's law, without work
+  hardening, yields again on the same line: no shakedown);
 - :func:`equivalent_contact_dashpot` -- the constant contact dashpot gamma_c of the elastic chain whose pulse
   at a sensor ring is as high as the yielding chain's: what the paper's fitted dashpot (Sec. III.B, Eqs. (5)-(6))
   stands for when the loss is plastic.
@@ -43,11 +44,12 @@ def energy_shares(sim) -> dict:
     impact = float(budget.kinetic[0])
     if not impact > 0:
         raise ValueError("the run has no kinetic energy at its start: it is not an impact")
+    plastic = np.broadcast_to(np.asarray(budget.plastic, dtype=float), budget.kinetic.shape)
     shares = {
         "kinetic": budget.kinetic / impact,
         "stored": (budget.contact + budget.bending - budget.contact[0] - budget.bending[0]) / impact,
         "gravity": budget.gravity / impact,
-        "plastic": (np.asarray(budget.plastic) - np.asarray(budget.plastic)[0]) / impact,
+        "plastic": (plastic - plastic[0]) / impact,
         "viscous": np.asarray(budget.dissipated) / impact,
     }
     shares["closure"] = sum(shares.values()) - 1.0

@@ -12,7 +12,9 @@ ever, with the disk cache) and not once per chain:
 
 - a network: per link its two sites (``-1`` for the support), its law's kind and parameters (a row of
   ``PARAMETERS`` numbers: K, n, gamma for :class:`~ringchain.numerics.laws.PowerLaw`; K, gamma for
-  :class:`~ringchain.numerics.laws.LinearSpring`; gamma for :class:`~ringchain.numerics.laws.Dashpot`),
+  :class:`~ringchain.numerics.laws.LinearSpring`; gamma for :class:`~ringchain.numerics.laws.Dashpot`; K, delta_y,
+  gamma, initial memory for :class:`~ringchain.numerics.laws.Thornton`; K, n, alpha for
+  :class:`~ringchain.numerics.laws.HuntCrossley`),
   per site its inverse mass and the acceleration of gravity; in two or three dimensions the rest
   positions, the anchors and the rest lengths;
 - the ring-resolved chain: one ring's coupling matrix -M^-1 K, the columns of M^-1 at its two contact
@@ -197,7 +199,7 @@ def pack_ring_chain(chain) -> Packed:
 
 
 # -- the laws --------------------------------------------------------------------------------------------------
-@_jit(inline="always")
+@_jit()  # not inlined: its 24 inlined copies in the Runge-Kutta loop doubled the compile time and lost the cache
 def _law(kind, p0, p1, p2, e, rate, memory):
     """(force, elastic force) of one link: the :mod:`ringchain.numerics.laws` of kind ``kind``, parameters p0-p2."""
     if kind == 0:  # PowerLaw: [K delta^n + gamma delta_dot]_+ where engaged (K, n, gamma)

@@ -165,8 +165,9 @@ def test_paper_chain_pulse_is_lower_with_yielding_contacts(paper_runs):
     assert plastic < 0.9 * elastic  # the loss is tens of per cent (reported above), 10 % leaves room
 
 
-def test_second_impact_shakes_down(paper_runs):
-    """Struck again, the contacts flattened by the first impact stay nearly elastic: far less plastic work."""
+def test_second_impact_flattens_the_contacts_again(paper_runs):
+    """Struck again, the flattened chain yields again: Thornton's law has no work hardening and keeps Hertz's
+    contact radius, so a contact driven past its memory follows the same loading line (no shakedown)."""
     from ringchain.numerics import energy_shares, second_impact
 
     chain = paper_chain("dual-spring", yield_strength=Y)
@@ -175,9 +176,11 @@ def test_second_impact_shakes_down(paper_runs):
     plastic_first, plastic_again = (energy_shares(s)["plastic"][-1] for s in (first, again))
     print(f"plastic work: first impact {plastic_first:.3f}, second {plastic_again:.3f} of the impact energy; "
           f"ring 12: {first.peak_force(12):.2f} N then {again.peak_force(12):.2f} N")  # fmt: skip
-    assert plastic_again < 0.5 * plastic_first  # shakedown: the measured ratio is printed; half leaves room
+    contacts = np.append(chain.contact_links, chain.support_link)
+    assert again.memory[0, contacts] == pytest.approx(np.max(first.memory[:, contacts], axis=0), rel=1e-12)
+    assert again.memory[-1, 0] > again.memory[0, 0]  # the struck contact flattens further
+    assert plastic_again > 0.5 * plastic_first  # the measured ratio is printed (near 1): most is lost again
     assert abs(energy_shares(again)["closure"][-1]) < 1e-5  # the budget closes as for the first impact
-    assert again.peak_force(12) > first.peak_force(12)  # less loss on the way up the chain
 
 
 def test_from_rings_takes_a_yield_strength_per_ring():
