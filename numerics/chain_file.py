@@ -38,6 +38,7 @@ from ringchain.theory import Ring, get_material
 from ringchain.theory import _validate as v
 
 from .chain import GRADING_PROFILES, SUPPORTS, Chain
+from .traces import read_text
 
 try:  # Python 3.11+
     import tomllib
@@ -212,9 +213,9 @@ def parse_chain(text: str, source: str = "chain description") -> ChainFile:
 
 
 def read_chain_file(path) -> ChainFile:
-    """A :class:`ChainFile` read from a TOML file (see the module)."""
-    with open(path, encoding="utf-8") as handle:
-        return parse_chain(handle.read(), source=f"chain file {path}")
+    """A :class:`ChainFile` read from a TOML file (see the module): UTF-8, with or without a byte-order mark, or
+    UTF-16 with one (:func:`~ringchain.numerics.traces.read_text`); another encoding is refused naming the file."""
+    return parse_chain(read_text(path), source=f"chain file {path}")
 
 
 def vary(description: ChainFile, spec: str, value: float) -> ChainFile:

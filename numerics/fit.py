@@ -397,6 +397,10 @@ def fit_static(displacement, force, model="power-law", *, offset=False, start=No
     F = as_data("force", force, "N")
     if delta.shape != F.shape:
         raise ValueError(f"displacement and force must have the same length, got {delta.size} and {F.size}")
+    for name, array, unit in (("displacement", delta, "m"), ("force", F, "N")):
+        if np.ptp(array) == 0:
+            raise ValueError(f"{name} takes one value, {array[0]:g} {unit}, at every sample: a static test needs a "
+                             "range of loads")  # fmt: skip
     guess = _static_start(delta, F, model)
     guess.update(start or {})
     params = lmfit.Parameters()

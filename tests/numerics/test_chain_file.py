@@ -117,11 +117,29 @@ def test_sweep_varies_a_grading_parameter(capsys, tmp_path):
     assert all(float(r["support_peak_N"]) > 0 and math.isfinite(float(r["wave_speed_m_s"])) for r in rows)
 
 
+@pytest.mark.parametrize("encoding", ["utf-8-sig", "utf-16"])
+def test_a_chain_file_with_a_byte_order_mark_is_read(tmp_path, encoding):
+    # Issue 24, item 15: an editor's byte-order mark gave "Invalid statement (at line 1, column 1)".
+    path = tmp_path / "chain.toml"
+    path.write_text("# R in m, angle in \u00b0\n" + TWO_SEGMENTS, encoding=encoding)
+    assert read_chain_file(path).segments == parse_chain(TWO_SEGMENTS).segments
+
+
+def test_a_chain_file_that_is_not_utf8_is_refused_by_name(capsys, tmp_path):
+    # Issue 24, item 15: "'utf-8' codec can't decode byte 0xb0", without the file's name.
+    path = tmp_path / "latin.toml"
+    path.write_bytes(("# angle in \u00b0\n" + TWO_SEGMENTS).encode("latin-1"))
+    code, out, err = run(capsys, "simulate", "--chain", str(path), "--drop-height", "0.05", "--out",
+                         str(tmp_path / "x.csv"))  # fmt: skip
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert f"argument --chain: {path}, line 1: byte 12 (0xb0) is not UTF-8 text" in err
+
+
 @pytest.mark.parametrize(
     ("argv", "message"),
     [
         (["simulate", "--chain", "/nonexistent/chain.toml", "--drop-height", "0.05", "--out", "x.csv"],
-         "argument --chain: cannot read /nonexistent/chain.toml"),
+         "argument --chain: /nonexistent/chain.toml: cannot read the file (No such file or directory)"),
         (["simulate", "--chain", "{bad}", "--drop-height", "0.05", "--out", "x.csv"],
          "segment 2, field 'profile': must be one of"),
         (["simulate", "--chain", "{good}", "--drop-height", "0.05", "--R", "0.03", "--out", "x.csv"],
