@@ -85,17 +85,21 @@ class Segment:
         return spaced(value[0], value[1], self.rings)
 
     def ring_list(self) -> list[Ring]:
+        if all(np.ndim(getattr(self, name)) == 0 for name in _GRADED):  # rings of one kind: one (immutable) Ring
+            return [Ring(R=self.R, r=self.r, material=self.material, angle=math.radians(self.angle))] * self.rings
         R, r, angle = (self.values(name) for name in _GRADED)
         return [Ring(R=R[i], r=r[i], material=self.material, angle=math.radians(angle[i])) for i in range(self.rings)]
 
 
 @dataclass(frozen=True)
 class ChainFile:
-    """A parsed chain description: its segments, impact end first, and the far end's support."""
+    """A parsed chain description: its segments, impact end first, and the far end's support; ``path``: the file
+    it was read from (None for text)."""
 
     segments: tuple
     support: str = "fixed"
     source: str = "chain description"
+    path: str | None = dataclasses.field(default=None, compare=False)
 
     @property
     def n_rings(self) -> int:
@@ -215,7 +219,7 @@ def parse_chain(text: str, source: str = "chain description") -> ChainFile:
 def read_chain_file(path) -> ChainFile:
     """A :class:`ChainFile` read from a TOML file (see the module): UTF-8, with or without a byte-order mark, or
     UTF-16 with one (:func:`~ringchain.numerics.traces.read_text`); another encoding is refused naming the file."""
-    return parse_chain(read_text(path), source=f"chain file {path}")
+    return dataclasses.replace(parse_chain(read_text(path), source=f"chain file {path}"), path=str(path))
 
 
 def vary(description: ChainFile, spec: str, value: float) -> ChainFile:

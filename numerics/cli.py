@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
 import sys
 import warnings
 from pathlib import Path
@@ -85,14 +86,16 @@ def _simulate(args) -> int:
 
     if args.plot is not None and Path(args.plot).resolve() == Path(args.out).resolve():
         raise ValueError(f"arguments --out and --plot: both name {args.out}; give two files")
+    opt.check_outputs([args.chain and args.chain.path], [("--out", args.out), ("--plot", args.plot)])
     chain, described = opt.simulated_chain(args)
     impact = {"drop_height": args.drop_height} if args.drop_height is not None else {
         "impact_velocity": args.impact_velocity}  # fmt: skip
     solver = {
         name: value for name, value in (("method", args.method), ("n_samples", args.samples)) if value is not None
     }
-    run = run_experiment(chain, **impact, sensors=tuple(args.sensors), t_end=args.t_end, out=args.out, plot=args.plot,
-                         **solver)  # fmt: skip
+    with opt.naming_size(args):
+        run = run_experiment(chain, **impact, sensors=tuple(args.sensors), t_end=args.t_end, out=args.out,
+                             plot=args.plot, gravity=args.gravity, **solver)  # fmt: skip
     try:
         lines = run.summary(described)
     except ValueError as exc:
@@ -111,9 +114,10 @@ def _sweep(args) -> int:
     from .executors import dask_client
     from .sweep import sweep, write_csv
 
+    opt.check_outputs([args.chain and args.chain.path], [("--out", args.out)])
     points = opt.sweep_points(args)
     options = dict(batch_size=args.batch_size, max_workers=args.workers, progress=sys.stderr.isatty(),
-                   t_end=args.t_end)  # fmt: skip
+                   t_end=args.t_end, gravity=args.gravity)  # fmt: skip
     if args.samples is not None:
         options["n_samples"] = args.samples
     if args.dask:
@@ -123,10 +127,10 @@ def _sweep(args) -> int:
             raise ValueError("--dask needs the dask extra: pip install 'ringchain[dask]'") from None
         except (ConnectionError, ValueError) as exc:
             raise ValueError(f"argument --dask: {opt.one_line(exc)}") from None
-        with client, opt.naming_t_end(args):
+        with client, opt.naming_t_end(args), opt.naming_size(args):
             rows = sweep(points, client.get_executor(), **options)
     else:
-        with opt.naming_t_end(args):
+        with opt.naming_t_end(args), opt.naming_size(args):
             rows = sweep(points, **options)
     if args.out == "-":
         write_csv(rows, sys.stdout)
@@ -153,6 +157,9 @@ def _cache_info(args) -> int:
         print("location  none: the disk cache is disabled (RINGCHAIN_CACHE_DIR is set and empty)")
         print(f"key       {info.key}")
         return 0
+    if info.path.exists() and not info.exists:
+        raise ValueError(f"the cache folder {info.path} ({info.origin}) is a file, not a folder: each process derives "
+                         "the theory again; point RINGCHAIN_CACHE_DIR at a folder")  # fmt: skip
     origin = {"RINGCHAIN_CACHE_DIR": "from RINGCHAIN_CACHE_DIR", "XDG_CACHE_HOME": "from XDG_CACHE_HOME",
               "default": "the default; RINGCHAIN_CACHE_DIR moves it"}[info.origin]  # fmt: skip
     entries = (f"{info.current} for this key, {info.stale} stale (other keys), {info.temporary} temporary files"
@@ -174,8 +181,11 @@ def _cache_clear(args) -> int:
     if directory is None:
         print("nothing to clear: the disk cache is disabled (RINGCHAIN_CACHE_DIR is set and empty)")
         return 0
+    if directory.exists() and not directory.is_dir():
+        raise ValueError(f"the cache folder {directory} is a file, not a folder: nothing to clear (the file is left "
+                         "as it is)")  # fmt: skip
     removed, nbytes = clear_cache()
-    print(f"removed {removed} files ({_size(nbytes)}) from {directory}")
+    print(f"removed {removed} {'file' if removed == 1 else 'files'} ({_size(nbytes)}) from {directory}")
     return 0
 
 
@@ -265,6 +275,10 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+#: Exit codes of a command its reader stopped (128 + SIGPIPE, as a shell reports ``yes | head``) and of one
+#: interrupted by Ctrl-C (128 + SIGINT).
+BROKEN_PIPE, INTERRUPTED = 141, 130
+
 #: Floating-point trouble in NumPy (the theory's generated code, the solvers) stops the command with a
 #: message instead of printing numbers made of inf and nan.
 _FLOATING_POINT = r"(overflow|invalid value|divide by zero) encountered"
@@ -277,11 +291,17 @@ def main(argv=None) -> int:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # --help (0) or a usage error (2), already printed
         return int(exc.code or 0)
-    command = " ".join(filter(None, (args.command, getattr(args, "action", None))))
+    command = " ".join(filter(None, (args.command, getattr(args, "action", None), getattr(args, "fit_command", None))))
     try:
         with warnings.catch_warnings():
             warnings.filterwarnings("error", message=_FLOATING_POINT, category=RuntimeWarning)
             return args.func(args)
+    except BrokenPipeError:  # the reader of the standard output stopped (| head): end quietly, as cat does
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # the interpreter's last flush must not fail
+        return BROKEN_PIPE
+    except KeyboardInterrupt:
+        print(f"\nringchain {command}: interrupted", file=sys.stderr)
+        return INTERRUPTED
     except (ValueError, TypeError, OSError, ArithmeticError, RuntimeWarning) as exc:
         message = opt.one_line(exc)
     except MemoryError:

@@ -20,13 +20,19 @@ import numpy as np
 from ringchain.theory import STANDARD_GRAVITY, paper_data
 from ringchain.theory import _validate as v
 
+from . import signals
 from .chain import Chain, sensor_pair
 from .integrate import simulate
 from .plots import plot_sensor_traces
 from .results import Simulation
 from .traces import write_traces
 
-__all__ = ["Experiment", "run_experiment", "default_t_end"]
+__all__ = ["Experiment", "run_experiment", "default_t_end", "MAX_DOUBLINGS"]
+
+#: Times a default duration (:func:`default_t_end`) is doubled while the leading pulse has not passed the far
+#: sensor by the end (:func:`run_experiment`, :func:`ringchain.numerics.sweep.run_points`): the estimate is a
+#: long-wave one, and a chain of two rings, or of rings metres across (R typed in mm), outruns it.
+MAX_DOUBLINGS = 4
 
 
 def default_t_end(chain: Chain, speeds, sensors) -> float:
@@ -190,7 +196,8 @@ def run_experiment(chain: Chain, *, drop_height=None, impact_velocity=None, sens
     sensors : (int, int), optional
         Near and far sensor rings (default the paper's 6 and 12).
     t_end : float, optional
-        Duration, s; default :func:`default_t_end`.
+        Duration, s; default :func:`default_t_end`, doubled (up to :data:`MAX_DOUBLINGS` times) while the
+        leading pulse has not passed the far sensor by the end.
     out : str or path, optional
         Write the sensor traces there (:func:`~ringchain.numerics.write_traces`), before any reading.
     plot : str or path, optional
@@ -222,16 +229,31 @@ def run_experiment(chain: Chain, *, drop_height=None, impact_velocity=None, sens
     impact = {"drop_height": value} if drop_height is not None else {"impact_velocity": value}
     g = options.get("g", STANDARD_GRAVITY)
     speed = float(impact_speed_of(impact, g))
+    retries = MAX_DOUBLINGS if t_end is None else 0
     if t_end is None:
         t_end = default_t_end(chain, [speed], sensors)
     rings = options.pop("rings", [*sensors, chain.n_rings - 1])
-    sim = simulate(chain, t_end, rings=rings, **impact, **options)
+    while True:
+        sim = simulate(chain, t_end, rings=rings, **impact, **options)
+        if retries == 0 or _passed(sim, sensors[1]):
+            break
+        retries -= 1
+        t_end *= 2.0
     if out is not None:
         write_traces(out, sim, sensors)
     if plot is not None:
         plot_sensor_traces(plot, sim, sensors, f"{chain.model}, {chain.n_rings} rings, impact {speed:.3g} m/s")
     return Experiment(chain=chain, sensors=sensors, impact_velocity=speed, drop_height=impact.get("drop_height"),
                       t_end=float(t_end), simulation=sim)  # fmt: skip
+
+
+def _passed(sim: Simulation, ring: int) -> bool:
+    """Whether the leading pulse has passed the sensor of ``ring`` (fallen to half its peak) within the run."""
+    try:
+        signals.leading_pulse(sim.t, sim.sensor(ring))
+    except (signals.TruncatedPulseError, signals.NoPulseError):
+        return False
+    return True
 
 
 def impact_speed_of(impact: dict, g: float) -> float:

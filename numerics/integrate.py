@@ -144,6 +144,11 @@ CHUNK_BYTES = 256 * 2**20
 _SECONDS_PER_STEP = 1.5e-5
 _SECONDS_PER_SITE_STEP = 2e-8
 
+# Bytes per site of a chain's network, dynamics and initial state, built before a run can be estimated (measured:
+# 153 per site for a dual-spring chain of 1e6 rings); a chain that needs more than the memory available is refused
+# before they are built (issue 24, item 11: 1e8 rings took 15.7 GB and 34 s before the estimate refused them).
+_SETUP_BYTES_PER_SITE = 160
+
 # Most LSODA steps between two samples (odeint's mxstep); a run that needs more fails.
 _MAX_STEPS_PER_SAMPLE = 1_000_000
 
@@ -493,6 +498,14 @@ def _prepare(model, t_end, impact_velocities, drop_heights, gravity, t_eval, n_s
     gravity = v.flag("gravity", gravity)
     if not isinstance(method, str) or method not in METHODS:
         raise ValueError(f"method must be one of {METHODS}, got {method!r}")
+    # A layout (a Chain) builds its network only now: refuse one that cannot fit before building it.
+    sites = getattr(model, "n_sites", None) if callable(getattr(model, "network", None)) else None
+    available = None if sites is None else _available_memory()
+    if available is not None and _SETUP_BYTES_PER_SITE * sites > available:
+        raise RunTooLargeError(
+            f"a model of {sites} sites needs about {format_bytes(_SETUP_BYTES_PER_SITE * sites)} for its network and "
+            f"initial state alone, more than the {format_bytes(available)} available; take fewer rings"
+        )
     dyn = model.dynamics()
     if initial is None:
         speeds, dropped = impact_speeds(impact_velocities, drop_heights, g)

@@ -47,7 +47,7 @@ from . import signals
 from .chain import MODELS, Chain, sensor_pair
 from .chain_file import ChainFile, vary
 from .executors import InlineExecutor, default_executor
-from .experiment import default_t_end
+from .experiment import MAX_DOUBLINGS, default_t_end
 from .integrate import DEFAULT_MAX_SECONDS, RunTooLargeError, estimate_run, format_duration, simulate_batch
 
 __all__ = [
@@ -80,9 +80,6 @@ DEFAULT_SAMPLES = 1001
 #: adaptive method shares one step size across the batch, and the contact openings of
 #: every run shrink it (benchmarks/bench_batch.py).
 SWEEP_METHOD = "verlet"
-
-#: Times :func:`run_points` may double a default duration that ends inside the pulse.
-_MAX_DOUBLINGS = 4
 
 
 @dataclass(frozen=True)
@@ -391,7 +388,7 @@ def run_points(points, *, t_end=None, n_samples=DEFAULT_SAMPLES, method=SWEEP_ME
     first = points[0]
     if not first.dynamic:
         return rows
-    retries = 0 if t_end is not None else _MAX_DOUBLINGS
+    retries = 0 if t_end is not None else MAX_DOUBLINGS
     chain, t_end, arguments = _batch(points, t_end, n_samples, method, solver)
     while True:
         batch = simulate_batch(chain, t_end, **arguments)
