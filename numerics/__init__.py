@@ -43,7 +43,7 @@ What each module owns:
   simulate``); :mod:`.paper` -- :func:`paper_chain`, :func:`paper_experiment`, the paper's tables
   and figures (``ringchain paper``); :mod:`.sweep` -- :func:`sweep` over grids and chain files through
   any executor; :mod:`.fit`, :mod:`.fit_dynamic` -- :func:`fit_static`, :func:`fit_speed_amplitude`,
-  :func:`fit_traces`; :mod:`.contact_bem` -- :func:`contact_curve`, :func:`angle_power_law`;
+  :func:`fit_speed_rings`, :func:`fit_traces`; :mod:`.contact_bem` -- :func:`contact_curve`, :func:`angle_power_law`;
   :mod:`.effective_mass` -- :func:`predict_effective_mass`; :mod:`.junction` -- the small pulse at a
   junction; :mod:`.signals` -- peaks, arrivals, time of flight, widths, spectra.
 """
@@ -55,7 +55,7 @@ from .chain import MODELS, STRIKERS, SUPPORTS, Chain, initial_state
 from .contact_angle import AngleContact, AnglePowerLaw, angle_power_law, contact_at_angle
 from .contact_bem import HALF_SPACE_LIMIT, ContactCurve, HalfSpaceWarning, PressureMaps, contact_curve
 from .effective_mass import fit_effective_mass, predict_effective_mass
-from .fit import FitError, FitResult, fit_speed_amplitude, fit_static
+from .fit import FitError, FitResult, fit_speed_amplitude, fit_speed_rings, fit_static
 from .fit_dynamic import TraceRecord, fit_traces
 from .integrate import (
     ADAPTIVE_METHODS,
@@ -137,6 +137,7 @@ __all__ = [
     "read_speed_amplitude",
     "fit_static",
     "fit_speed_amplitude",
+    "fit_speed_rings",
     "fit_traces",
     "FitResult",
     "FitError",

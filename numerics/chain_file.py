@@ -2,7 +2,7 @@ r"""Chain descriptions in TOML: the rings of a chain that changes along its leng
 
 A file lists segments from the impact end (ring 0) up to the support::
 
-    support = "fixed"          # optional: "fixed" (default) or "free"
+    support = "fixed"          # optional: "fixed" (default) or "free" (no gravity: --no-gravity)
 
     [[segment]]
     rings = 10                 # ring count
@@ -21,7 +21,8 @@ R, r and angle are one number, or a pair [first, last] graded over the segment's
 Each ring's angle is the contact angle to the ring above it (the last ring's, to the
 support); see :meth:`ringchain.numerics.Chain.from_rings`.  Angles are in degrees, as on
 the command line; lengths in m.  A malformed file is refused with a message naming the
-segment (counted from 1) and the field.
+segment (counted from 1) and the field.  The file is UTF-8, with or without a byte-order mark, or
+UTF-16 (:func:`~ringchain.numerics.traces.read_text`).
 
 A sweep varies one field of one segment (:func:`vary`): ``"2.R"`` replaces segment 2's R,
 ``"2.R.last"`` only the last end of its grading (the grading parameter), ``"2.R.first"`` the first.

@@ -14,7 +14,9 @@
 Inputs are SI (m, m/s, N) except contact angles, given in degrees.  Every input and every
 output path is checked before any work (:mod:`ringchain.numerics._cli_options`); a bad one
 gives a one-line error naming the option, in the units it was given, and exit code 2;
-success exits 0.  This module only parses, calls and prints: one function per subcommand.
+success exits 0, a result beyond its model's validity 1, Ctrl-C 130 (one line), a reader that
+closed the pipe 141 (quietly).  This module only parses, calls and prints: one function per
+subcommand.
 """
 
 from __future__ import annotations
