@@ -37,9 +37,10 @@ the inertial mass (the paper's m_eff) and ``m_gravity`` the mass gravity acts on
 static pre-stretch of the hanging chain right (each contact carries the true weight
 below it) but means the model rings do not fall like real ones: a ring with slack
 contacts accelerates at g m_gravity/m (about 2.7 g for m/m0 = 0.37), and an impact
-speed v carries momentum m v, not m0 v.  This is why a drop is started at the instant
-the slack is taken up, with the free-fall speed sqrt(2 g h) of the real ring
-(:func:`ringchain.numerics.simulate`), rather than integrated through the fall.
+speed v carries momentum m v, not m0 v (unless the striker is given its own mass, below).
+This is why a drop is started at the instant the slack is taken up, with the free-fall
+speed sqrt(2 g h) of the real ring (:func:`ringchain.numerics.simulate`), rather than
+integrated through the fall.
 
 Initial conditions (paper Sec. III.A)
 -------------------------------------
@@ -61,7 +62,13 @@ The striker
 Ring 0, the struck ring, has the inertial mass of every lattice ring (the paper's
 convention, the default) or its own ``striker_mass``: a ring in free fall moves as a rigid
 body, so a rigid striker brings the momentum m0 v0 and the energy m0 v0^2/2 of the real ring
-(``striker_mass="m0"``), however the inertia is shared inside the wave that follows.
+(``striker_mass="m0"``), however the inertia is shared inside the wave that follows.  With
+m_eff = 0.37 m0 the paper's convention brings 37 % of both, and by the impact law
+(:func:`ringchain.theory.impact_amplitude`) a wave (m0/m_eff)^(n/(n+1)) times weaker.
+``striker_mass`` is stored in kg (None for the paper's convention); ring 0's sites get that
+inertia (halves of striker_mass/2 in the dual-spring model), gravity still acts on
+``m_gravity``.  A copy with other parameters (``dataclasses.replace``, the trace fits) keeps
+a striker given in kg, a rigid ring of known mass; the paper's convention follows ``m``.
 """
 
 from __future__ import annotations
@@ -78,7 +85,8 @@ from .laws import LinearSpring, PowerLaw
 from .network import ANCHOR, Links, Network
 from .results import BatchSimulation
 
-__all__ = ["Chain", "MODELS", "SUPPORTS", "GRADING_PROFILES", "STRIKERS", "initial_state", "sensor_pair", "ring_index"]
+__all__ = ["Chain", "MODELS", "SUPPORTS", "GRADING_PROFILES", "STRIKERS", "initial_state", "sensor_pair", "ring_index",
+           "striker_convention"]  # fmt: skip
 
 #: What each parameter of a :class:`Chain` is given per, when it varies along the chain.
 _PROFILES = {"K": "contact", "n": "contact", "gamma": "contact", "m": "ring", "m_gravity": "ring", "K_b": "ring",
@@ -96,6 +104,17 @@ GRADING_PROFILES = ("linear", "geometric")
 #: The struck ring's inertia: the lattice's (``"m_eff"``, the paper's convention) or the real
 #: ring's mass m0 (``"m0"``, a rigid ring in free fall); a number in kg is taken as it is.
 STRIKERS = ("m_eff", "m0")
+
+
+def striker_convention(value) -> str | float:
+    """``value`` as a striker: ``"m_eff"`` (also for None), ``"m0"`` or a mass in kg (ValueError otherwise)."""
+    if value is None:
+        return "m_eff"
+    if isinstance(value, str):
+        return v.choice("striker_mass", value, STRIKERS)
+    if isinstance(value, bool | np.bool_) or np.ndim(value) != 0:
+        raise ValueError(f"striker_mass must be one mass (in kg) or one of {STRIKERS}, got {value!r}")
+    return float(v.positive("striker_mass", value, "kg"))
 
 
 def _parameter(name: str, value, length: int, check, unit: str, what: str):
@@ -174,9 +193,8 @@ class Chain:
         "fixed": the top ring (the far end) hangs from a fixed support through one more
         contact of the chain's contact law; "free": the far end is free.
     striker_mass : float or None
-        Inertial mass of ring 0, the struck ring, kg; None: ``m`` of ring 0 (the paper's
-        convention).  The constructors take ``"m0"`` for the ring's own mass (``m_gravity``
-        of ring 0: a rigid striker) and ``"m_eff"`` for None (module notes).
+        Inertial mass of the struck ring 0, kg, or None: ``m``, the paper's convention (also
+        ``"m_eff"``; ``"m0"``: ``m_gravity`` of ring 0, a rigid striker; :attr:`striker_inertia`).
     """
 
     model: str
@@ -218,10 +236,8 @@ class Chain:
             set_("gamma_b", _parameter("gamma_b", self.gamma_b, rings, v.nonnegative, "N s/m", "ring"))
         elif self.K_b is not None or np.any(self.gamma_b):
             raise ValueError("K_b and gamma_b belong to the dual-spring model, not the power-law one")
-        striker = self.striker_mass
-        if isinstance(striker, str):
-            striker = None if v.choice("striker_mass", striker, STRIKERS) == "m_eff" else self.profile("m_gravity")[0]
-        set_("striker_mass", None if striker is None else float(v.positive("striker_mass", striker, "kg")))
+        striker = striker_convention(self.striker_mass)
+        set_("striker_mass", {"m_eff": None, "m0": float(self.profile("m_gravity")[0])}.get(striker, striker))
 
     def _key(self) -> tuple:
         return tuple(
@@ -349,8 +365,7 @@ class Chain:
             Dual-spring contact and bending dashpots, N s/m.
         support : {"fixed", "free"}, optional
         striker_mass : float or {"m_eff", "m0"}, optional
-            Inertial mass of ring 0, kg: default the lattice's m_eff (the paper's convention);
-            "m0" the ring's mass (a rigid ring in free fall; module notes).
+            Inertial mass of ring 0, kg: default m_eff (the paper's); "m0" the ring's (module notes).
 
         Examples
         --------
@@ -508,7 +523,7 @@ class Chain:
             Values spaced evenly ("linear") or by a constant ratio ("geometric").
         model : {"dual-spring", "power-law"}
         **options
-            Passed to :meth:`from_rings` (``m_eff_ratio``, dashpots, ``support``).
+            Passed to :meth:`from_rings` (``m_eff_ratio``, dashpots, ``support``, ``striker_mass``).
 
         Examples
         --------
@@ -547,7 +562,7 @@ class Chain:
             As in :meth:`from_rings`; e.g. ``[pi/2, pi/3] * k`` for alternating angles.
         model : {"dual-spring", "power-law"}
         **options
-            Passed to :meth:`from_rings`.
+            Passed to :meth:`from_rings` (``m_eff_ratio``, dashpots, ``support``, ``striker_mass``).
 
         Examples
         --------
@@ -565,7 +580,9 @@ class Chain:
         Parameters
         ----------
         chain_a, chain_b : Chain
-            Chains of the same model.  The joined chain takes ``chain_b``'s support.
+            Chains of the same model.  The joined chain takes ``chain_b``'s support and
+            ``chain_a``'s striker (its ring 0 is struck); ``chain_b``'s ring 0, inside the
+            joined chain, has the inertia ``m`` of its ring whatever ``chain_b``'s striker.
         junction : dict, optional
             The contact between the last ring of ``chain_a`` and the first of ``chain_b``: K (and
             for the power-law model n), gamma and the centre distance a, SI units.  Default:
@@ -655,6 +672,11 @@ class Chain:
             raise ValueError(f"the {self.model} chain has no {name}")
         length = {"ring": self.n_rings, "contact": self.n_contacts, "pair": self.n_rings - 1}[_PROFILES[name]]
         return np.broadcast_to(np.asarray(value, dtype=float), (length,))
+
+    @property
+    def striker_inertia(self) -> float:
+        """Inertial mass of ring 0, the striker, kg: ``striker_mass``, or ``m`` of ring 0 (the paper's convention)."""
+        return float(self.profile("m")[0]) if self.striker_mass is None else self.striker_mass
 
     @property
     def damped(self) -> bool:

@@ -225,6 +225,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("simulate", help="one drop or impact; sensor traces to CSV", allow_abbrev=False)
     opt.geometry_options(p)
+    opt.striker_option(p)
     opt.impact_options(p, required=True)
     opt.chain_options(p)
     p.add_argument("--method", choices=METHODS, default=None,
@@ -239,6 +240,7 @@ def build_parser() -> argparse.ArgumentParser:
                        description="Values: numbers, or start:stop:count for evenly spaced ones (start > stop "
                                    f"counts down; at most {opt.MAX_GRID_POINTS} points in all).")  # fmt: skip
     opt.geometry_options(p, many=True)
+    opt.striker_option(p, many=True)
     opt.impact_options(p, many=True)
     opt.chain_options(p, many=True)
     p.add_argument("--batch-size", type=opt.Checked(int, opt.batch_size), default=64,

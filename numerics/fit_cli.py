@@ -93,6 +93,9 @@ def add_parser(sub, *, geometry) -> None:
                    help=f"free parameters, a comma list (default {DEFAULT_FREE}; also K, n, K_b, gamma_b, v0, "
                         "h0)")  # fmt: skip
     p.add_argument("--no-offsets", action="store_true", help="do not fit a DC offset per channel")
+    from ._cli_options import striker_option
+
+    striker_option(p)  # as ringchain simulate takes it
     common(p)
     fit.set_defaults(func=run)
 
@@ -216,11 +219,13 @@ def _traces(args) -> int:
                                                                            "gamma_b": args.gamma_b}  # fmt: skip
     if args.model == "power-law":
         K, n, _ = _power_law(args, ring)
-        chain = Chain.from_ring(ring, args.rings, "power-law", m_eff_ratio=args.m_eff_ratio, K=K, n=n, **dashpots)
+        chain = Chain.from_ring(ring, args.rings, "power-law", m_eff_ratio=args.m_eff_ratio, K=K, n=n,
+                                striker_mass=args.striker_mass, **dashpots)  # fmt: skip
     else:
         if args.K is not None or args.n is not None:
             raise ValueError("--K and --n give a power law: use them with --model power-law")
-        chain = Chain.from_ring(ring, args.rings, "dual-spring", m_eff_ratio=args.m_eff_ratio, **dashpots)
+        chain = Chain.from_ring(ring, args.rings, "dual-spring", m_eff_ratio=args.m_eff_ratio,
+                                striker_mass=args.striker_mass, **dashpots)  # fmt: skip
     data = [read_traces(path) for path in args.files]
     if args.drop_height is not None:
         records = [(t, traces, h) for (t, traces), h in zip(data, impacts, strict=True)]
@@ -238,7 +243,10 @@ def _traces(args) -> int:
     _print(args, {"traces": result})
     if not args.json and "m" in result.names:
         ratio, sd = result.values["m"] / ring.mass, result.stderr["m"] / ring.mass
-        print(f"m/m0 = {ratio:.6g} +/- {sd:.2g} (m0 = {ring.mass:.6g} kg, the ring's mass)")
+        from ._cli_options import striker_words
+
+        striker = striker_words(args.striker_mass, ring.mass)
+        print(f"m/m0 = {ratio:.6g} +/- {sd:.2g} (m0 = {ring.mass:.6g} kg, the ring's mass; {striker})")
     if args.plot:
         _plot_traces(result, args.plot, [Path(p).name for p in args.files])
         print(f"plot written to {args.plot}")

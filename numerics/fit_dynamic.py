@@ -533,6 +533,8 @@ def fit_traces(
     chain : Chain
         The model (power-law or dual-spring), with the starting values of the free
         parameters and the values of the fixed ones; gravity acts on ``chain.m_gravity``.
+        Its striker (``striker_mass``) follows the fitted m in the paper's convention, and
+        keeps its mass when given in kg (``"m0"``: a rigid ring of known mass).
     drop_height : float, optional
         Free-fall height of ring 0, m (impact speed sqrt(2 g h)).
     impact_velocity : float or sequence, optional
@@ -593,6 +595,11 @@ def fit_traces(
     - "h0" free, one offset of all the heights: one drop cannot separate m and K, but
       several drops from different heights can (sqrt(h_i + h0) cannot follow one common
       factor alpha).
+
+    The symmetry scales the striker with the rings, as the paper's convention does (the
+    striker is a ring of mass m).  A striker of known mass (``striker_mass`` in kg, "m0")
+    does not scale, so it breaks the symmetry too; and the values a known impact gives are
+    those of the striker assumed: the impact's energy m_s v0^2/2 sets the amplitude.
 
     The book's chapter "From measurements to parameters" shows the three cases.
     """
@@ -681,6 +688,8 @@ def fit_traces(
     model_fields = CHAIN_PARAMETERS if chain.model == "dual-spring" else ("m", "gamma", "K", "n")
     fixed = {k: float(getattr(chain, k)) for k in model_fields if k not in problem.chain_free}
     fixed["m_gravity"] = chain.m_gravity
+    if chain.striker_mass is not None:  # a striker given in kg (a rigid ring) keeps its mass while m is fitted
+        fixed["striker_mass"] = chain.striker_mass
     for r in range(R):
         if not problem.free_t0:
             fixed[problem.name("t0", r)] = problem.fixed_t0[r]

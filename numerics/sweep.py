@@ -44,7 +44,7 @@ from ringchain.theory import PAPER_TUBE_RADIUS, Ring, impact_speed, paper_data
 from ringchain.theory import _validate as v
 
 from . import signals
-from .chain import MODELS, Chain, sensor_pair
+from .chain import MODELS, Chain, sensor_pair, striker_convention
 from .chain_file import ChainFile, vary
 from .executors import InlineExecutor, default_executor
 from .experiment import default_t_end
@@ -114,6 +114,11 @@ class Point:
         for the static theory only.
     sensors : tuple of int
         Two sensor rings counted from the impact, near first (default rings 6 and 12).
+    striker_mass : {"m_eff", "m0"} or float
+        Inertial mass of the struck ring 0 (:class:`~ringchain.numerics.Chain`): the lattice's
+        m_eff (default, the paper's convention), the ring's mass m0 (a rigid ring in free
+        fall), or a mass in kg.  The row says which (``striker_mass``) and how much
+        (``striker_mass_kg``).
 
     Examples
     --------
@@ -132,9 +137,11 @@ class Point:
     drop_height: float | None = None
     impact_velocity: float | None = None
     sensors: tuple = paper_data.SENSOR_RINGS
+    striker_mass: str | float = "m_eff"
 
     def __post_init__(self):
         set_ = functools.partial(object.__setattr__, self)
+        set_("striker_mass", striker_convention(self.striker_mass))
         set_("R_over_r", float(v.positive("R/r", self.R_over_r)))
         set_("r", float(v.positive("r", self.r, "m")))
         set_("angle", float(v.as_float("angle", self.angle)))
@@ -167,7 +174,8 @@ class Point:
 
     def chain(self) -> Chain:
         """The hanging chain of this point (:meth:`Chain.from_ring`)."""
-        return Chain.from_ring(self.ring, self.n_rings, self.model, m_eff_ratio=self.m_eff_ratio)
+        return Chain.from_ring(self.ring, self.n_rings, self.model, m_eff_ratio=self.m_eff_ratio,
+                               striker_mass=self.striker_mass)  # fmt: skip
 
     @property
     def speed(self) -> float | None:
@@ -196,6 +204,7 @@ class Point:
             "model": self.model,
             "n_rings": self.n_rings,
             "m_eff_ratio": self.m_eff_ratio,
+            **_striker_columns(self.striker_mass, self.m_eff_ratio * ring.mass, ring.mass),
             "drop_height_m": self.drop_height,
             "impact_velocity_m_s": self.speed,
             "ring_mass_kg": ring.mass,
@@ -225,6 +234,8 @@ class FilePoint:
     drop_height, impact_velocity : float, optional
         The impact (m, or m/s).
     sensors : (int, int)
+    striker_mass : {"m_eff", "m0"} or float
+        As in :class:`Point` (``"m0"``: the mass of ring 0 of the chain).
     """
 
     description: ChainFile
@@ -235,15 +246,19 @@ class FilePoint:
     drop_height: float | None = None
     impact_velocity: float | None = None
     sensors: tuple = paper_data.SENSOR_RINGS
+    striker_mass: str | float = "m_eff"
 
     dynamic = True
+
+    def __post_init__(self):
+        object.__setattr__(self, "striker_mass", striker_convention(self.striker_mass))
 
     @functools.cached_property
     def varied(self) -> ChainFile:
         return self.description if self.field is None else vary(self.description, self.field, self.value)
 
     def chain(self) -> Chain:
-        chain = self.varied.chain(self.model, self.m_eff_ratio)
+        chain = self.varied.chain(self.model, self.m_eff_ratio, striker_mass=self.striker_mass)
         sensor_pair(self.sensors, chain.n_rings)
         return chain
 
@@ -254,14 +269,24 @@ class FilePoint:
     @property
     def chain_key(self) -> tuple:
         kind = "drop" if self.drop_height is not None else "velocity"
-        return (self.description, self.field, self.value, self.model, self.m_eff_ratio, self.sensors, kind)
+        return (self.description, self.field, self.value, self.model, self.m_eff_ratio, self.sensors,
+                self.striker_mass, kind)  # fmt: skip
 
     def columns(self) -> dict:
         row = {} if self.field is None else {self.field: self.value}
-        row |= {"n_rings": self.varied.n_rings, "model": self.model, "impact_velocity_m_s": self.speed}
+        m0 = self.varied.rings()[0].mass  # ring 0, the struck ring
+        row |= {"n_rings": self.varied.n_rings, "model": self.model, "m_eff_ratio": self.m_eff_ratio,
+                **_striker_columns(self.striker_mass, self.m_eff_ratio * m0, m0),
+                "impact_velocity_m_s": self.speed}  # fmt: skip
         if self.drop_height is not None:
             row["drop_height_m"] = self.drop_height
         return row
+
+
+def _striker_columns(striker, m_eff: float, m0: float) -> dict:
+    """The striker's columns of a row: its convention ("m_eff", "m0", or "kg" for a given mass) and its mass, kg."""
+    mass = {"m_eff": m_eff, "m0": m0}.get(striker, striker)
+    return {"striker_mass": striker if isinstance(striker, str) else "kg", "striker_mass_kg": mass}
 
 
 _IMPACT = ("drop_height", "impact_velocity")
@@ -591,7 +616,7 @@ def _cell(value) -> str:
 
 def sweep_chain_file(description: ChainFile, field=None, values=(None,), *, model="dual-spring", m_eff_ratio=1.0,
                      drop_heights=None, impact_velocities=None, sensors=paper_data.SENSOR_RINGS, executor=None,
-                     **options) -> list[dict]:  # fmt: skip
+                     striker_mass="m_eff", **options) -> list[dict]:  # fmt: skip
     """One row per value of ``field`` (:func:`~ringchain.numerics.chain_file.vary`) and impact, through :func:`sweep`.
 
     Parameters
@@ -601,7 +626,7 @@ def sweep_chain_file(description: ChainFile, field=None, values=(None,), *, mode
         The varied field (``"2.R.last"``...); None runs ``description`` as it is.
     values : sequence
         Its values (m, degrees or ring counts).
-    model, m_eff_ratio
+    model, m_eff_ratio, striker_mass
         As in :meth:`~ringchain.numerics.chain_file.ChainFile.chain`.
     drop_heights, impact_velocities : sequence of float
         The impacts (m, or m/s), integrated together as one batch per chain.
@@ -615,14 +640,15 @@ def sweep_chain_file(description: ChainFile, field=None, values=(None,), *, mode
     Returns
     -------
     list of dict
-        Columns: the varied field's value, the chain's length and model, the impact, and the
+        Columns: the varied field's value, the chain's length, model, m_eff/m0 and striker, the impact, and the
         :data:`DYNAMIC_COLUMNS` (Eq. (8) only for a chain that does not change along its length).
     """
     if (drop_heights is None) == (impact_velocities is None):
         raise ValueError("give drop_heights or impact_velocities")
     impacts = [{"drop_height": h} for h in drop_heights] if drop_heights is not None else [
         {"impact_velocity": u} for u in impact_velocities]  # fmt: skip
-    points = [FilePoint(description, field, value, model, m_eff_ratio, sensors=tuple(sensors), **impact)
+    points = [FilePoint(description, field, value, model, m_eff_ratio, sensors=tuple(sensors),
+                        striker_mass=striker_mass, **impact)
               for value in values for impact in impacts]  # fmt: skip
     return sweep(points, executor, **options)
 
