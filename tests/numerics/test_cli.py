@@ -240,9 +240,11 @@ def test_paper_refuses_a_negative_drop_height(capsys, tmp_path):
 # -- the parser and the console script ------------------------------------------------------------------
 def test_help_exits_0_and_no_subcommand_exits_2(capsys):
     code, out, _ = run(capsys, "--help")
-    assert code == 0 and all(name in out for name in ("paper", "ring", "simulate", "sweep", "cache"))
+    assert code == 0 and all(name in out for name in ("paper", "ring", "simulate", "sweep", "ensemble", "cache"))
     code, out, err = run(capsys)
-    assert_one_line_error(code, out, err, "the following arguments are required: {paper,ring,simulate,sweep,cache,fit}")
+    assert_one_line_error(
+        code, out, err, "the following arguments are required: {paper,ring,simulate,sweep,ensemble,cache,fit}"
+    )
 
 
 def test_console_script_exit_codes():
