@@ -58,6 +58,16 @@ COLOURS = {
     "R/r = 4": "#7f7f7f",
     "R/r = 8": "#bcbd22",
     "R/r = 10": "#17becf",
+    # disorder (chapter "Disorder"): the ordered chain, the ensembles by the size of their spread, the two
+    # estimates of the mean speed, and the chain without gravity beside the hanging one
+    "ordered": "black",
+    "spread 1": "#fdae6b",
+    "spread 2": "#f16913",
+    "spread 3": "#a63603",
+    "effective-medium": "#3182bd",
+    "harmonic-mean": "#31a354",
+    "hanging": "#756bb1",
+    "no gravity": "#a63603",
 }
 
 #: Drop heights used by every chapter, m; the paper does not give its own.  ``LOW_DROP`` and ``HIGH_DROP``
