@@ -72,7 +72,9 @@ __all__ = [
 
 #: Members integrated together in one task (one stacked network, one :func:`simulate_batch` call).
 #: Part of an ensemble's definition: it fixes the batches, and so the last digits of adaptive runs.
-#: benchmarks/bench_ensemble.py measures the cost per member against it.
+#: benchmarks/bench_ensemble.py measures the cost per member against it: with SciPy's adaptive
+#: methods a batch shares one step size, and a batch of 16 costs about 1.3 times a single run per
+#: member (40-ring chains); a method that steps each member on its own (issue 20) makes batches pay.
 DEFAULT_BATCH_SIZE = 16
 
 #: Quantiles of the summary per ring: the median, the quartiles, and 90 % of the members between the ends.
