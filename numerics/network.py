@@ -85,11 +85,11 @@ class Links:
         For a periodic network (two or three dimensions): the far end of each link is the
         periodic image of site j, displaced by ``shift`` (m; a lattice period), so that its rest
         position is ``positions[j] + shift``; default 0 (site j itself).
-    rest_length : float or array_like, shape (n_links,), optional
-        Length of each link when it carries no load, m (two or three dimensions); default the
-        distance between its ends' rest positions.  Shorter than that distance, the link is
-        stretched when every site is at its rest position: a pretensioned lattice whose rest
-        positions are its static state.
+    prestretch : float or array_like, shape (n_links,), optional
+        Extension of each link with both its ends at their rest positions, m (two or three
+        dimensions; default 0: the rest positions are the unloaded lattice).  A pretensioned
+        lattice whose rest positions are its static state gives each link its static extension
+        here: its unloaded length is the distance of its ends less the prestretch.
     """
 
     i: np.ndarray
@@ -98,7 +98,7 @@ class Links:
     anchor: np.ndarray | None = None
     index: np.ndarray | None = None
     shift: np.ndarray | None = None
-    rest_length: np.ndarray | None = None
+    prestretch: np.ndarray | None = None
 
     def __post_init__(self):
         i = np.atleast_1d(np.asarray(self.i))
@@ -209,20 +209,20 @@ class Network:
                 raise ValueError(f"link site {name} out of range: sites are 0..{S - 1} (j = ANCHOR for the support)")
         if np.any(self.i == self.j):
             raise ValueError("a link joins two different sites")
-        anchors, shifts, lengths = np.zeros((L, dim)), np.zeros((L, dim)), np.full(L, np.nan)
+        anchors, shifts, stretch = np.zeros((L, dim)), np.zeros((L, dim)), np.zeros(L)
         start = 0
         for s in sets:
             where = position[start : start + s.size]
             for given, into in ((s.anchor, anchors), (s.shift, shifts)):
                 if given is not None:
                     into[where] = np.broadcast_to(np.asarray(given, dtype=float), (s.size, dim))
-            if s.rest_length is not None:
-                lengths[where] = np.broadcast_to(v.positive("rest_length", s.rest_length, "m"), (s.size,))
+            if s.prestretch is not None:
+                stretch[where] = np.broadcast_to(v.as_float("prestretch", s.prestretch), (s.size,))
             start += s.size
-        if (np.any(shifts) or not np.all(np.isnan(lengths))) and (positions is None or dim == 1):
-            raise ValueError("links to periodic images (shift) and given rest lengths are for networks in two or "
+        if (np.any(shifts) or np.any(stretch)) and (positions is None or dim == 1):
+            raise ValueError("links to periodic images (shift) and prestretched links are for networks in two or "
                              "three dimensions, with the sites' rest positions")  # fmt: skip
-        self.anchor_positions, self.shifts, self._given_lengths = anchors, shifts, lengths
+        self.anchor_positions, self.shifts, self.prestretch = anchors, shifts, stretch
         # One set per law class, in the order the classes first appear, its links in the network's order.
         groups: dict[type, list] = {}
         start = 0
@@ -314,18 +314,9 @@ class Network:
 
     @functools.cached_property
     def rest_lengths(self) -> np.ndarray | None:
-        """Unloaded length of each link, m: :attr:`spans` unless given (``Links.rest_length``); None in one
+        """Unloaded length of each link, m: :attr:`spans` less the ``prestretch`` (:class:`Links`); None in one
         dimension without positions."""
-        if self.positions is None:
-            return None
-        return np.where(np.isnan(self._given_lengths), self.spans, self._given_lengths)
-
-    @functools.cached_property
-    def prestretch(self) -> np.ndarray | None:
-        """Extension of each link with every site at its rest position, m (:attr:`spans` - :attr:`rest_lengths`)."""
-        if self.positions is None:
-            return None
-        return np.where(np.isnan(self._given_lengths), 0.0, self.spans - self.rest_lengths)
+        return None if self.positions is None else self.spans - self.prestretch
 
     @functools.cached_property
     def length_scale(self) -> float | None:
@@ -483,7 +474,7 @@ class Network:
         # The extension from the rest vector b and the relative displacement w of the ends:
         # |b + w| - |b| = (2 b.w + w.w)/(|b + w| + |b|), without the cancellation of two lengths of order
         # |b| (the extension keeps its own relative precision, as x_j - x_i does in one dimension), plus the
-        # prestretch |b| - L0 of a link whose rest length L0 was given.
+        # prestretch (the extension at the rest positions, given exactly).
         X = x.reshape(*x.shape[:-1], -1, d)
         b = self.rest_vectors[links]
         w = np.where(anchored[:, None], 0.0, X[..., cj, :]) - X[..., ci, :]
@@ -856,7 +847,7 @@ class Network:
 
 
 #: The attributes of a network that a :meth:`Network.stack` shares with its first network.
-_LAYOUT = ("dim", "positions", "rings", "i", "j", "anchor_positions", "shifts", "_given_lengths")
+_LAYOUT = ("dim", "positions", "rings", "i", "j", "anchor_positions", "shifts", "prestretch")
 
 
 def as_links(items: Sequence) -> list[Links]:

@@ -185,18 +185,19 @@ def test_periodic_images_close_a_ring_of_sites():
     x[:, 0] = np.arange(N) * 1e-6
     e = net.extension(x.ravel())
     assert np.allclose(e, [1e-6, 1e-6, 1e-6, -3e-6], rtol=1e-9)  # the image does not move with the stretch
-    # The same ring pretensioned: rest positions at the stretched lattice, rest lengths a - e0, the image one
-    # stretched period on.  At rest every link carries its prestretch e0; a uniform displacement changes nothing.
+    # The same ring pretensioned: rest positions at the stretched lattice, each link prestretched by e0, the
+    # image one stretched period on.  At rest every link carries e0; a uniform displacement changes nothing.
     e0, stretched = 1e-6, positions * (1 + 1e-6 / a)
-    links = [Links(np.arange(N - 1), np.arange(1, N), LAW, rest_length=a),
-             Links([N - 1], [0], LAW, shift=[N * (a + e0), 0.0], rest_length=a)]  # fmt: skip
+    links = [Links(np.arange(N - 1), np.arange(1, N), LAW, prestretch=e0),
+             Links([N - 1], [0], LAW, shift=[N * (a + e0), 0.0], prestretch=e0)]  # fmt: skip
     taut = Network(np.full(N, 1e-3), links, dim=2, positions=stretched)
-    assert np.allclose(taut.prestretch, e0, rtol=1e-9) and np.allclose(taut.extension(np.zeros(2 * N)), e0, rtol=1e-9)
-    assert np.allclose(taut.extension(np.tile([3e-6, -2e-6], N)), e0, rtol=1e-9)
-    # Tension pulls equally both ways on every site: at rest, no acceleration.  The prestretch is a difference
-    # of lengths (span - rest length), exact to eps a/e0 ~ 1e-11 of itself: 1e-9 of the link's pull.
-    assert np.allclose(taut.accelerations(np.zeros(2 * N), g=0.0), 0.0, atol=1e-9 * LAW.force(e0) / 1e-3)
-
+    assert np.allclose(taut.rest_lengths, a, rtol=1e-12)  # spans less the prestretch: the unloaded length
+    assert np.array_equal(taut.extension(np.zeros(2 * N)), np.full(N, e0))  # exactly the prestretch
+    # A uniform displacement: w = 0 exactly, so the extensions stay exactly e0 and the pulls cancel.
+    assert np.array_equal(taut.extension(np.tile([3e-6, -2e-6], N)), np.full(N, e0))
+    assert np.all(taut.accelerations(np.zeros(2 * N), g=0.0) == 0.0)
+    with pytest.raises(ValueError, match="two or three dimensions"):
+        Network([1e-3, 1e-3], [Links([0], [1], LAW, prestretch=1e-6)], positions=[0.0, 0.04])
 
 def test_a_stack_of_planar_networks_steps_each_on_its_own():
     nets = [triangle(), triangle(law=PowerLaw(K=2.0e6, n=1.5))]
