@@ -75,6 +75,7 @@ from .paper import STIFFNESS_SOURCES, PaperExperiment, paper_chain, paper_experi
 from .results import BatchSimulation, EnergyBudget, NetworkBatch, NetworkSimulation, Simulation
 from .ring_beam import ReducedRing, RingModel
 from .ring_chain import RingChain, RingSimulation, simulate_rings
+from .sheet import Sheet, SheetBatch, SheetSimulation, read_sheet_run
 from .signals import NoPulseError, PulseError, TruncatedPulseError, UnresolvedPulseError
 from .sweep import Point, sweep, write_csv
 from .traces import DataError, read_speed_amplitude, read_static, read_traces, write_traces
@@ -144,4 +145,8 @@ __all__ = [
     "simulate_rings",
     "predict_effective_mass",
     "fit_effective_mass",
+    "Sheet",
+    "SheetSimulation",
+    "SheetBatch",
+    "read_sheet_run",
 ]

@@ -199,6 +199,7 @@ def test_periodic_images_close_a_ring_of_sites():
     with pytest.raises(ValueError, match="two or three dimensions"):
         Network([1e-3, 1e-3], [Links([0], [1], LAW, prestretch=1e-6)], positions=[0.0, 0.04])
 
+
 def test_a_stack_of_planar_networks_steps_each_on_its_own():
     nets = [triangle(), triangle(law=PowerLaw(K=2.0e6, n=1.5))]
     stack = Network.stack(nets)
