@@ -4,8 +4,8 @@ hanging sheet against the hanging chain column by column, energy, records and Ne
 import numpy as np
 import pytest
 import ringchain.numerics
-from ringchain.numerics import Chain, Sheet, simulate
-from ringchain.numerics.sheet import contact_law, read_sheet_run
+from ringchain.numerics import Chain, Sheet, read_sheet_run, simulate
+from ringchain.numerics.sheet import contact_law
 from ringchain.theory import Ring, sheet_dispersion
 
 RING = Ring.from_aspect_ratio(9.0)
