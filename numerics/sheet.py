@@ -33,7 +33,10 @@ compliance (the ring's in-plane bending couples every pair of contacts), not wit
 and two half-masses have no place to sit.  The sheet is therefore the power-law model (one site per
 ring, Eq. (7)), each link's law the series law of Eq. (3) through its fitted power law: exact for a ring
 pulled along one line (a row of the sheet taut, its neighbours slack), an approximation where a ring is
-pulled along several lines at once (theory/sheet.py's notes).
+pulled along several lines at once (theory/sheet.py's notes).  The series law itself (a contact in series
+with a massless ring body per link) is well defined link by link, but it gives the extension from the force
+(Eq. (3)), not the force from the extension the engine needs at every step; over the force window its fitted
+power law stands in for it, as in the paper's power-law chain (Eq. (4)).
 
 Loads
 -----
