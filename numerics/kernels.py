@@ -186,7 +186,7 @@ def pack_ring_chain(chain) -> Packed:
 
 
 # -- the laws --------------------------------------------------------------------------------------------------
-@_jit(inline="always")
+@_jit()
 def _law(kind, p0, p1, p2, e, rate):
     """(force, elastic force) of one link: the :mod:`ringchain.numerics.laws` of kind ``kind``, parameters p0-p2."""
     if kind == 0:  # PowerLaw: [K delta^n + gamma delta_dot]_+ where engaged (K, n, gamma)
@@ -202,7 +202,7 @@ def _law(kind, p0, p1, p2, e, rate):
 
 
 # -- right-hand sides ----------------------------------------------------------------------------------------
-@_jit(inline="always")
+@_jit()
 def _network_accelerations(m, b, g, x, u, out):
     """Accelerations of member ``b`` of a packed network under gravity ``g`` into ``out``; returns the power its
     dashpots take out."""
@@ -276,7 +276,7 @@ def _network_accelerations(m, b, g, x, u, out):
     return power
 
 
-@_jit(inline="always")
+@_jit()
 def _ring_accelerations(m, x, out):
     """Accelerations of the ring-resolved chain without gravity (:meth:`~ringchain.numerics.RingChain.stepper`)."""
     N, n, fixed = m.ints[6], m.ints[7], m.ints[8]
@@ -303,7 +303,7 @@ def _ring_accelerations(m, x, out):
                 out[(r + 1) * n + a] -= force * m.inv_bottom[a]  # the ring above pulled down at its bottom
 
 
-@_jit(inline="always")
+@_jit()
 def _accelerations(m, b, g, x, u, out):
     """Accelerations of member ``b`` of either kind of model (the packed kind says which)."""
     if m.ints[0] == 0:
@@ -317,7 +317,7 @@ def _accelerations(m, b, g, x, u, out):
     return 0.0
 
 
-@_jit(inline="always")
+@_jit()
 def _derivative(m, b, g, y, dy, N):
     """dy/dt of the state y = [x (N), u (N), W (dissipated energy, if damped)]."""
     power = _accelerations(m, b, g, y[:N], y[N : 2 * N], dy[N : 2 * N])
@@ -348,7 +348,7 @@ def _error_norm(err, y, y_new, atol, rtol):
     return worst
 
 
-@_jit(inline="always")
+@_jit()
 def _group_derivative(m, members, g, y, dy, N, n):
     """dy/dt of a group of members stepped together: their states one after the other in ``y``."""
     if members.size == 1:
