@@ -57,7 +57,8 @@ from ringchain.theory import STANDARD_GRAVITY
 
 from . import laws, signals
 from .chain import MODELS, STRIKERS, SUPPORTS, Chain, initial_state
-from .contact_bem import AnglePowerLaw, ContactCurve, HalfSpaceWarning, PressureMaps, angle_power_law, contact_curve
+from .contact_angle import AngleContact, AnglePowerLaw, angle_power_law, contact_at_angle
+from .contact_bem import HALF_SPACE_LIMIT, ContactCurve, HalfSpaceWarning, PressureMaps, contact_curve
 from .effective_mass import fit_effective_mass, predict_effective_mass
 from .fit import FitError, FitResult, fit_speed_amplitude, fit_static
 from .fit_dynamic import TraceRecord, fit_traces
@@ -133,6 +134,9 @@ __all__ = [
     "HalfSpaceWarning",
     "angle_power_law",
     "AnglePowerLaw",
+    "contact_at_angle",
+    "AngleContact",
+    "HALF_SPACE_LIMIT",
     "read_traces",
     "write_traces",
     "TraceRecord",

@@ -146,7 +146,7 @@ def contact_law(ring_a: Ring, ring_b: Ring | None = None, angle=None, window=DEF
     angle = ring_a.angle if angle is None else float(v.in_range("angle", angle, 0.0, np.pi / 2))
     same = dataclasses.replace(ring_b, angle=ring_a.angle) == ring_a
     if same and angle <= float(minimum_contact_angle(ring_a.R, ring_a.r)):
-        from .contact_bem import angle_power_law
+        from .contact_angle import angle_power_law
 
         mat = ring_a.material
         law = angle_power_law(ring_a.R, ring_a.r, mat.E, mat.nu, angle, ring_a.K_b, tuple(window))
@@ -156,7 +156,7 @@ def contact_law(ring_a: Ring, ring_b: Ring | None = None, angle=None, window=DEF
     a, b = ring_a.material, ring_b.material
     K_c = hertz_stiffness_pair(ring_a.R, ring_a.r, a.E, a.nu, ring_b.R, ring_b.r, b.E, b.nu, angle)
     K_b = 2.0 / (1.0 / ring_a.K_b + 1.0 / ring_b.K_b)
-    K, n = fit_power_law(K_c, K_b, *window)
+    K, n = fit_power_law(K_c=K_c, K_b=K_b, F_min=window[0], F_max=window[1])
     return float(K), float(n)
 
 
