@@ -137,7 +137,10 @@ def main(argv=None):
     candidates = {
         "recipe": dict(rhs=paper_rhs(chain, g)),
         "recipe, vectorised rhs": dict(rhs=vectorised_rhs(chain, g)),
-        "ringchain odeint rtol=1e-9 (default)": dict(method="odeint"),
+        "ringchain dopri5 rtol=1e-9": dict(method="dopri5", rtol=1e-9),
+        "ringchain dopri5 rtol=1e-8": dict(method="dopri5", rtol=1e-8),
+        "ringchain dopri5 rtol=1e-7": dict(method="dopri5", rtol=1e-7),
+        "ringchain odeint rtol=1e-9": dict(method="odeint"),
         "ringchain odeint rtol=3e-9": dict(method="odeint", rtol=3e-9),
         "ringchain odeint rtol=1e-8": dict(method="odeint", rtol=1e-8),
         "ringchain solve_ivp LSODA rtol=1e-9": dict(method="LSODA"),

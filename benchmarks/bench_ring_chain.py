@@ -102,7 +102,7 @@ def prediction(heights):
                   f"{np.abs(fit.residuals).max():17.3f} {p.paper_ratio:6.2f}")  # fmt: skip
         K_mm, n, _ = paper_data.TABLE_I[aspect]
         ring = Ring.from_aspect_ratio(aspect)
-        table = fit_effective_mass(p.runs, ring, K=float(n_per_mm_to_si(K_mm, n)), n=n)
+        table = fit_effective_mass(p.runs, ring, K=float(n_per_mm_to_si(K_mm, n=n)), n=n)
         print(f"     power law with Table I's K, n: m_eff/m0 = {table.ratio:.3f}+-{table.standard_error:.3f}, "
               f"largest residual {np.abs(table.residuals).max():.3f}")  # fmt: skip
         if aspect == 9.0:

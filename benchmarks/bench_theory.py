@@ -100,15 +100,17 @@ def main():
 
     F_m = rng.uniform(1.0, 100.0, size)  # N: the paper's range of peak forces
     times, results = best_pair(
-        repeat, lambda: solitary_wave_speed(F_m, K, N, SPACING, MASS), lambda: speed_by_hand(F_m, K, N, SPACING, MASS)
+        repeat,
+        lambda: solitary_wave_speed(F_m, K=K, n=N, m=MASS, a=SPACING),
+        lambda: speed_by_hand(F_m, K, N, SPACING, MASS),
     )
     report("solitary_wave_speed / Eq. (8) by hand", "<= 1.5", times, results)
 
     F_0 = F_m * rng.uniform(0.0, 1.0, size)
     times, _ = best_pair(
         repeat,
-        lambda: solitary_wave_speed_prestressed(F_m, F_0, K, N, SPACING, MASS),
-        lambda: solitary_wave_speed(F_m, K, N, SPACING, MASS),
+        lambda: solitary_wave_speed_prestressed(F_m, F_0=F_0, K=K, n=N, m=MASS, a=SPACING),
+        lambda: solitary_wave_speed(F_m, K=K, n=N, m=MASS, a=SPACING),
     )
     print(
         f"{'solitary_wave_speed_prestressed / solitary_wave_speed':<58s} {times[0] * 1e3:8.3f} ms  vs "

@@ -4,7 +4,8 @@
 
 serves the built site (default ``book/_build/html``) on 127.0.0.1, opens every page in headless Chromium
 at a desktop width (1280 px) and a phone width (390 px), waits for MathJax, saves a full-page screenshot of
-each (``DIR/<page>-<width>.png``, default DIR ``book/_build/screenshots``) and checks what the page shows:
+each (``DIR/<page>-<width>.png``, default DIR ``book/_build/screenshots``; taken in a window as tall as the
+page, so that it shows the page as it is) and checks what the page shows:
 
 - **overflow**: no element of the article reaches past its column, and nothing scrolls sideways (a display
   equation, a code cell, an output or a table wider than the column), except tables and code at the phone
@@ -27,6 +28,7 @@ import base64
 import functools
 import http.server
 import json
+import math
 import shutil
 import subprocess
 import sys
@@ -56,6 +58,9 @@ CHROMIUM_FLAGS = [
 
 # Runs in the page once it has loaded; resolves to a JSON list of [kind, where, detail].
 CHECK_SCRIPT = (BOOK / "browser_check.js").read_text()
+
+# Resolves once the page has been laid out and painted at its current window size.
+_TWO_FRAMES = "new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done)))"
 
 
 def chromium() -> str | None:
@@ -100,7 +105,32 @@ class _DevTools:
             self.events.append(await self._read())
 
 
-async def _inspect(port: int, pages: list[str], out: Path, timeout: float) -> list[dict]:
+async def _full_page(tools: _DevTools, width: int) -> bytes:
+    """PNG of the whole page as it is laid out at ``width``: the window made as tall as the page, one capture.
+
+    Chromium's own full-page capture (``captureBeyondViewport``) lays some pages out anew for the capture:
+    the book's chapters came out with the navigation column gone and the text cut at the left edge,
+    although the page showed correctly.  A window as tall as the page (at most
+    :data:`MAX_SCREENSHOT_HEIGHT`) shows it as a reader scrolling through it sees it; only what depends
+    on the window's height, such as the entry the contents column highlights, may differ.
+    """
+    height = VIEWPORT_HEIGHT
+    for _ in range(3):  # boxes sized by the window (100vh) may change the page's height once it is taller
+        metrics = await tools.call("Page.getLayoutMetrics")
+        wanted = min(math.ceil(metrics["cssContentSize"]["height"]), MAX_SCREENSHOT_HEIGHT)
+        if wanted == height:
+            break
+        height = wanted
+        await tools.call("Emulation.setDeviceMetricsOverride", width=width, height=height, deviceScaleFactor=1,
+                         mobile=False)  # fmt: skip
+        await tools.call("Runtime.evaluate", expression=_TWO_FRAMES, awaitPromise=True)
+    shot = await tools.call("Page.captureScreenshot", format="png")
+    await tools.call("Emulation.setDeviceMetricsOverride", width=width, height=VIEWPORT_HEIGHT, deviceScaleFactor=1,
+                     mobile=False)  # fmt: skip
+    return base64.b64decode(shot["data"])
+
+
+async def _inspect(port: int, pages: list[str], out: Path, timeout: float, windows: Path | None) -> list[dict]:
     from tornado.websocket import websocket_connect
 
     profile = tempfile.mkdtemp(prefix="ringchain-chromium-")
@@ -139,15 +169,10 @@ async def _inspect(port: int, pages: list[str], out: Path, timeout: float) -> li
                     raise RuntimeError(f"{page}: the check script failed: {result['exceptionDetails']}")
                 for kind, where, detail in json.loads(result["result"]["value"]):
                     findings.append({"page": page, "width": width, "kind": kind, "where": where, "detail": detail})
-                metrics = await tools.call("Page.getLayoutMetrics")
-                height = min(int(metrics["cssContentSize"]["height"]) + 1, MAX_SCREENSHOT_HEIGHT)
-                shot = await tools.call(
-                    "Page.captureScreenshot",
-                    format="png",
-                    captureBeyondViewport=True,
-                    clip={"x": 0, "y": 0, "width": width, "height": height, "scale": 1},
-                )
-                (out / f"{page}-{width}.png").write_bytes(base64.b64decode(shot["data"]))
+                if windows is not None:  # what the window shows, for comparison with the top of the full page
+                    shot = await tools.call("Page.captureScreenshot", format="png")
+                    (windows / f"{page}-{width}.png").write_bytes(base64.b64decode(shot["data"]))
+                (out / f"{page}-{width}.png").write_bytes(await _full_page(tools, width))
         tools.connection.close()
         await asyncio.wait_for(tools.connection.read_message(), 10)  # None once the socket is closed
     finally:
@@ -160,8 +185,13 @@ async def _inspect(port: int, pages: list[str], out: Path, timeout: float) -> li
     return findings
 
 
-def check(site: Path, out: Path, pages: list[str] | None = None, timeout: float = 120.0) -> list[dict]:
-    """Screenshots of ``pages`` (default: every page of the site) at both widths into ``out``, and the findings."""
+def check(site: Path, out: Path, pages: list[str] | None = None, timeout: float = 120.0, *,
+          windows: Path | None = None) -> list[dict]:  # fmt: skip
+    """Screenshots of ``pages`` (default: every page of the site) at both widths into ``out``, and the findings.
+
+    ``windows``: a folder for a second capture of each page, of the window alone (its first 900 px), as
+    the reader sees the page on opening it; the top of each full-page screenshot should show the same.
+    """
     if chromium() is None:
         raise FileNotFoundError("no chromium on PATH (apt-get install chromium)")
     site, out = Path(site).resolve(), Path(out)
@@ -172,7 +202,9 @@ def check(site: Path, out: Path, pages: list[str] | None = None, timeout: float 
     thread = threading.Thread(target=server.serve_forever, daemon=True)
     thread.start()
     try:
-        findings = asyncio.run(_inspect(server.server_address[1], pages, out, timeout))
+        if windows is not None:
+            Path(windows).mkdir(parents=True, exist_ok=True)
+        findings = asyncio.run(_inspect(server.server_address[1], pages, out, timeout, windows and Path(windows)))
     finally:
         server.shutdown()
         server.server_close()

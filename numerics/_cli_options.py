@@ -206,15 +206,6 @@ def output_folder(text: str) -> str:
 
 
 # -- checks across options, before any work ------------------------------------------------------------
-def distinct(x: float, limit: float) -> str:
-    """``x`` with the fewest significant digits (at least 4) that do not print it as ``limit``."""
-    for digits in range(4, 18):
-        text = f"{x:.{digits}g}"
-        if x == limit or text != f"{limit:.{digits}g}":
-            return text
-    return repr(x)
-
-
 def aspect_ratio(R: float, r: float) -> float:
     """R/r to 12 significant digits: 3, not 2.9999999999999996 for R = 0.3, r = 0.1."""
     return float(f"{R / r:.12g}")
@@ -230,10 +221,10 @@ def check_geometry(aspect: float, angles, *, chain: bool, given: str, two_patche
 
     if not aspect > 2:
         raise ValueError(f"{given}: R must exceed 2 r for the Hertz contact of two tori, got R/r = "
-                         f"{distinct(aspect, 2)}")  # fmt: skip
+                         f"{v.distinct(aspect, 2)}")  # fmt: skip
     if chain and aspect < MIN_CHAIN_ASPECT_RATIO:
         raise ValueError(
-            f"{given}: R/r = {distinct(aspect, MIN_CHAIN_ASPECT_RATIO)} < {MIN_CHAIN_ASPECT_RATIO:g}, so the hole of "
+            f"{given}: R/r = {v.distinct(aspect, MIN_CHAIN_ASPECT_RATIO)} < {MIN_CHAIN_ASPECT_RATIO:g}, so the hole of "
             "a ring, 2(R - r) across, cannot pass the wires of its two neighbours (4 r): rings this thick cannot "
             "form a chain"
         )
@@ -243,15 +234,15 @@ def check_geometry(aspect: float, angles, *, chain: bool, given: str, two_patche
         floor = math.degrees(float(smallest_patch_angle(aspect, 1.0)))
         if angle <= floor:
             raise ValueError(
-                f"argument --angle: a contact angle of {distinct(angle, floor)} deg is at or below "
-                f"2 arcsin(r/R) = {distinct(floor, angle)} deg for R/r = {aspect:.6g}: the contact points reach the "
+                f"argument --angle: a contact angle of {v.distinct(angle, floor)} deg is at or below "
+                f"2 arcsin(r/R) = {v.distinct(floor, angle)} deg for R/r = {aspect:.6g}: the contact points reach the "
                 "sides of the tubes there and the rings no longer pull each other along the chain"
             )
         return
     if angle <= lowest:
         raise ValueError(
-            f"argument --angle: a contact angle of {distinct(angle, lowest)} deg is at or below "
-            f"arccos(1 - 2r/R) = {distinct(lowest, angle)} deg for R/r = {aspect:.6g}: the tori touch along a line "
+            f"argument --angle: a contact angle of {v.distinct(angle, lowest)} deg is at or below "
+            f"arccos(1 - 2r/R) = {v.distinct(lowest, angle)} deg for R/r = {aspect:.6g}: the tori touch along a line "
             "or at two patches there, and a single elliptical Hertz contact does not apply"
         )
 

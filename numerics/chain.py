@@ -477,7 +477,7 @@ class Chain:
             raise ValueError("gamma_c and gamma_b belong to the dual-spring model; use gamma")
         # Each period of the chain is a contact in series with the body of the ring below it (Eq. 3).
         below_K_b = np.append(K_b, K_b[-1])[: len(pairs)]
-        fits = _per_distinct(lambda kc, kb: tuple(float(x) for x in fit_power_law(kc, kb)),
+        fits = _per_distinct(lambda kc, kb: tuple(float(x) for x in fit_power_law(K_c=kc, K_b=kb)),
                              list(zip(K_c.tolist(), below_K_b.tolist(), strict=True)), "contact {i}")  # fmt: skip
         return cls.power_law(n_rings, fits[:, 0], fits[:, 1], ratio * m0, a, gamma, m0, support=support,
                              striker_mass=striker_mass)  # fmt: skip

@@ -9,8 +9,9 @@
 - ``ringchain simulate --chain FILE`` / ``ringchain sweep --chain FILE --vary 2.R.last 0.01:0.02:5`` -- a
   chain that changes along its length, described segment by segment in TOML (:mod:`.chain_file`);
 - ``ringchain cache info`` / ``ringchain cache clear`` -- the disk cache of generated code.
-- ``ringchain fit static|speed|traces FILE`` -- parameters from measurements (:mod:`.fit_cli`).
-- ``ringchain ensemble --count 1000 --spread R=0.05`` -- disordered chains, read at every ring (:mod:`.ensemble_cli`).
+- ``ringchain fit static|speed|traces FILE`` -- parameters from measurements (:mod:`.fit_cli`);
+- ``ringchain ensemble --count 1000 --spread R=0.05`` -- disordered chains, read at every ring (:mod:`.ensemble_cli`);
+- ``ringchain sheet --pattern square --size 40x40`` -- an impact on a sheet of rings (:mod:`.sheet_cli`).
 
 Inputs are SI (m, m/s, N) except contact angles, given in degrees.  Every input and every
 output path is checked before any work (:mod:`ringchain.numerics._cli_options`); a bad one
@@ -27,6 +28,7 @@ import warnings
 from pathlib import Path
 
 from . import _cli_options as opt
+from . import sheet_cli
 from .ensemble_cli import add_parser as add_ensemble_parser
 from .paper import PAPER_DROP_HEIGHT, PAPER_FIGURES, STIFFNESS_SOURCES
 
@@ -55,79 +57,30 @@ def _paper_checked(args) -> int:
 
 # -- ringchain ring ------------------------------------------------------------------------------
 def _ring(args) -> int:
-    from ringchain.theory import (
-        MIN_CHAIN_ASPECT_RATIO,
-        crossover_force,
-        local_exponent,
-        minimum_contact_angle,
-        series_displacement,
-        si_to_n_per_mm,
-        solitary_wave_speed,
-        solitary_wave_width,
-    )
+    from .contact_angle import contact_report
 
-    aspect = args.R / args.r
-    opt.check_geometry(aspect, [args.angle], chain=False, given="arguments --R and --r", two_patches=True)
+    opt.check_geometry(args.R / args.r, [args.angle], chain=False, given="arguments --R and --r", two_patches=True)
     F_lo, F_hi = args.window
     if not F_lo < F_hi:
         raise ValueError(f"argument --window: the force window needs F_min < F_max, got {F_lo:g} {F_hi:g} N")
     given = f"the ring of --R {args.R:g} m and --r {args.r:g} m"
-    F, ratio = args.force, args.m_eff_ratio
-    angle = math.radians(args.angle)
-    bem = None  # below theta_min: the numerical contact (two patches), fitted over the window
-    if angle <= float(minimum_contact_angle(args.R, args.r)):
-        from .contact_bem import angle_power_law
-
-        if not F_lo <= F <= F_hi:
-            raise ValueError(f"argument --force: below arccos(1 - 2r/R) the force must lie within the --window "
-                             f"{F_lo:g} {F_hi:g} N, got {F:g} N")  # fmt: skip
-        # Mass, spacing and K_b do not depend on the angle; the contact is the numerical one.
-        ring = opt.ring_of(args.R, args.r, args.material, 90.0, given, thin=args.thin)
-        with opt.computing(f"the numerical contact of {given} at --angle {args.angle:g} deg"):
-            bem = angle_power_law(ring.R, ring.r, ring.material.E, ring.material.nu, angle, ring.K_b, (F_lo, F_hi))
-        K, n, K_c = bem.K, bem.n, bem.K_c
-    else:
-        ring = opt.ring_of(args.R, args.r, args.material, args.angle, given, thin=args.thin, window=args.window)
-        K, n = ring.power_law(F_lo, F_hi)
-        K_c = ring.K_c
-    mat = ring.material
-    m = ratio * ring.mass
-    lowest = math.degrees(float(minimum_contact_angle(ring.R, ring.r)))
-    chain_note = "yes" if ring.can_form_chain else (
-        f"no: R/r < {MIN_CHAIN_ASPECT_RATIO:g}, two rings interlock but a chain cannot form")  # fmt: skip
-    with opt.computing(f"{given} at --force {F:g} N"):
-        F_star = float(crossover_force(K_c, ring.K_b))
-        n_star = float(local_exponent(F_star, K_c, ring.K_b))
-        V_s = float(solitary_wave_speed(F, K, n, ring.spacing, m))
-        width = float(solitary_wave_width(n, ring.spacing))
-        extension = float(series_displacement(F, K_c, ring.K_b) if bem is None else bem.extension(F))
-        n_F = float(ring.local_exponent(F) if bem is None else bem.local_exponent(F))
-    contact_line = ("K_c, Hertz contact (Eq. 1)", f"{K_c:.4e} N/m^1.5")
-    if bem is not None:
-        contact_line = (f"K_c, two patches (BEM, tilt {math.degrees(bem.curve.tilt):.1f} deg)",
-                        f"{K_c:.4e} N/m^1.5 (F = K_c delta^1.5 fitted over {F_lo:g}-{F_hi:g} N; contact up to "
-                        f"{bem.max_extent_over_r:.2f} r)")  # fmt: skip
-    lines = [
-        ("geometry", f"R = {ring.R * 1e3:g} mm, r = {ring.r * 1e3:g} mm, "
-                     f"R/r = {opt.distinct(ring.aspect_ratio, MIN_CHAIN_ASPECT_RATIO)}"),
-        ("material", f"{mat.name}: E = {mat.E / 1e9:g} GPa, nu = {mat.nu:g}, rho = {mat.rho:g} kg/m^3"),
-        ("contact angle", f"{args.angle:g} deg (single Hertz contact above {lowest:.2f} deg)"),
-        ("forms a chain", chain_note),
-        ("ring mass m0", f"{ring.mass * 1e3:.4g} g"),
-        ("spacing a = 2(R - r)", f"{ring.spacing * 1e3:.4g} mm"),
-        contact_line,
-        ("K_b, ring bending (Eq. 2)", f"{ring.K_b:.4e} N/m" + (" (thin ring)" if args.thin else "")),
-        ("crossover F* = K_b^3/K_c^2", f"{F_star:.4g} N (local exponent there {n_star:.4f})"),
-        (f"power law over {F_lo:g}-{F_hi:g} N (Eq. 4)",
-         f"K = {float(si_to_n_per_mm(K, n)):.5g} N/mm^n = {K:.5g} N/m^n, n = {n:.4f}"),
-        (f"at F = {F:g} N (Eq. 3)", f"extension {extension * 1e6:.4g} um, local exponent {n_F:.4f}"),
-        (f"solitary wave at F_m = {F:g} N", f"V_s = {V_s:.4g} m/s (Eq. (8), m = {ratio:g} m0 = {m * 1e3:.4g} g), "
-         f"width {width * 1e3:.4g} mm = {width / ring.spacing:.3g} a"),
-    ]  # fmt: skip
-    pad = max(len(k) for k, _ in lines)
-    for key, value in lines:
+    ring = opt.ring_of(args.R, args.r, args.material, 90.0, given, thin=args.thin)
+    where = f"{given} at --angle {args.angle:g} deg, --force {args.force:g} N and --window {F_lo:g} {F_hi:g} N"
+    with opt.computing(f"the contact of {where}"):
+        try:
+            report = contact_report(ring, math.radians(args.angle), args.force, window=(F_lo, F_hi),
+                                    m_eff_ratio=args.m_eff_ratio)  # fmt: skip
+        except RuntimeError as exc:  # the contact solver's own failure, in one line like every other
+            raise ValueError(opt.one_line(exc)) from None
+    rows = report.rows()
+    pad = max(len(k) for k, _ in rows)
+    for key, value in rows:
         print(f"{key.ljust(pad)}  {value}")
-    return 0
+    if report.warning is None:
+        return 0
+    print(f"ringchain ring: warning: {report.warning}: keep --window's F_MAX and --force below about "
+          f"{report.contact.limit_force:.3g} N", file=sys.stderr)  # fmt: skip
+    return 1
 
 
 # -- ringchain simulate ------------------------------------------------------------------------------
@@ -227,11 +180,24 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
 
 
+def _version() -> str:
+    """The installed package's version (importlib.metadata), as ``ringchain --version`` prints it."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("ringchain")
+    except PackageNotFoundError:  # pragma: no cover - run from a source tree that was never installed
+        return "(not installed)"
+
+
 def build_parser() -> argparse.ArgumentParser:
     from .integrate import METHODS
 
     parser = _Parser(prog="ringchain", description=__doc__.split("\n\n")[0], allow_abbrev=False)
-    sub = parser.add_subparsers(dest="command", required=True, metavar="{paper,ring,simulate,sweep,ensemble,cache,fit}")
+    parser.add_argument("--version", action="version", version=f"ringchain {_version()}")
+    sub = parser.add_subparsers(
+        dest="command", required=True, metavar="{paper,ring,simulate,sweep,ensemble,cache,fit,sheet}"
+    )
 
     p = sub.add_parser("paper", help="derive the theory, print the paper's key numbers, write the figures",
                        allow_abbrev=False)  # fmt: skip
@@ -286,6 +252,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     add_fit_parser(sub, geometry=opt.geometry_options)  # sets its own func (fit_cli.run)
     add_ensemble_parser(sub)  # ringchain ensemble: sets its own func (ensemble_cli.run)
+    sheet_cli.add_parser(sub)  # ringchain sheet: sets its own func (sheet_cli.run)
     return parser
 
 

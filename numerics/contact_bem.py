@@ -54,6 +54,7 @@ where we warn (:class:`HalfSpaceWarning`); the half-lengths are in
 from __future__ import annotations
 
 import dataclasses
+import math
 import warnings
 from dataclasses import dataclass
 
@@ -65,8 +66,6 @@ __all__ = [
     "ContactCurve",
     "PressureMaps",
     "contact_curve",
-    "angle_power_law",
-    "AnglePowerLaw",
     "HalfSpaceWarning",
     "ResolutionWarning",
     "HALF_SPACE_LIMIT",
@@ -90,6 +89,8 @@ FRAMES = ("tangent", "axial")
 _COARSENING = 1.5  # spacing ratio of the resolution check and of each refinement
 _MAX_PASSES = 4  # window/spacing adjustments before giving up
 _JOINT_SEPARATION = 2.0  # one grid for both patches if their windows are closer than this many window lengths
+_GAP_ROUNDING = 16  # the gap's rounding, in units of eps (R - r) (measured: 7e-18 m rms, 3e-17 m at most, R = 22.5 mm)
+_GAP_DIGITS = 100  # the smallest approach admitted, in units of the gap's rounding
 
 
 class HalfSpaceWarning(UserWarning):
@@ -98,6 +99,10 @@ class HalfSpaceWarning(UserWarning):
 
 class ResolutionWarning(UserWarning):
     """The force did not converge to :data:`RESOLUTION_TOLERANCE` within the allowed refinements."""
+
+
+class _OffTheTube(RuntimeError):
+    """A ray from the plane of the maps misses a torus: the grid reaches round the side of the tube."""
 
 
 @dataclass(frozen=True)
@@ -201,10 +206,10 @@ class ContactCurve:
         if self.K_b is not None:
             raise ValueError("this curve already includes a bending spring")
         K_b = float(v.positive("K_b", K_b, "N/m"))
-        return dataclasses.replace(self, delta=series_extension(self.delta, self.force, K_b), K_b=K_b)
+        return dataclasses.replace(self, delta=series_extension(self.force, delta_c=self.delta, K_b=K_b), K_b=K_b)
 
 
-def _contact_mechanics():
+def load_contact_mechanics():
     """ContactMechanics and SurfaceTopography, imported on first use (NuMPI warns once that it runs without MPI)."""
     with warnings.catch_warnings():
         warnings.filterwarnings("ignore", message="Could not import mpi4py", category=ImportWarning)
@@ -219,7 +224,7 @@ def _half_turn(vector):
     return np.array([-vector[0], -vector[1], vector[2]])
 
 
-class _Tori:
+class Tori:
     """The two tori at first contact and the frames in which their gap is measured."""
 
     def __init__(self, R, r, angle, frame):
@@ -274,7 +279,7 @@ class _Tori:
             s = s - update
             if np.all(np.abs(update) < tolerance):
                 return s
-        raise RuntimeError("ray casting onto the torus did not converge: the window reaches too far round the tube")
+        raise _OffTheTube("ray casting onto the torus did not converge: the window reaches too far round the tube")
 
     def gap(self, x, y):
         """Gap (m) along the contact normal at points (x, y) of the plane of the maps.
@@ -353,7 +358,7 @@ class _Solver:
         self.gap = tori.gap(X, Y)
         size = (grid.nx * grid.hx, grid.ny * grid.hy)
         self.size = size
-        self.substrate = _contact_mechanics()[0].FreeFFTElasticHalfSpace((grid.nx, grid.ny), E_star, size)
+        self.substrate = load_contact_mechanics()[0].FreeFFTElasticHalfSpace((grid.nx, grid.ny), E_star, size)
         separate = tori.n_patches == 2 and not grid.joint
         self.patches_on_grid = 2 if tori.n_patches == 2 and grid.joint else 1
         # The other patch (at -c) seen from this one's grid: Boussinesq's point-load displacement per newton.
@@ -364,7 +369,7 @@ class _Solver:
         starting guess, or (``force_control=False``) the approach imposed, ``load`` setting the
         interaction and tolerances.  Returns ContactMechanics' result and system."""
         total = load * self.patches_on_grid
-        contact_mechanics, topography = _contact_mechanics()
+        contact_mechanics, topography = load_contact_mechanics()
         gap = self.gap + load * self.interaction
         surface = topography.Topography(-gap, self.size)
         system = contact_mechanics.make_system(surface=surface, substrate=self.substrate)
@@ -409,15 +414,16 @@ def _curvatures(tori, step):
     return max(A, 1e-3 * B), B
 
 
-def _overlap_box(tori, depth, *, limit):
+def overlap_box(tori, depth, *, limit):
     """Extent of {gap < depth} along the lines through the contact point at +c: (x_lo, x_hi, y_half), m.
 
-    Marches outward in steps of limit/400 and stops at the first point past ``depth`` (or at
-    ``limit``, or, for two patches, at the chain axis).
+    Marches outward in steps that grow geometrically from 1e-9 limit to ``limit`` (2.6 % each: a
+    contact of any size, down to nanometres on a millimetre tube, is found to that precision) and
+    stops at the first point past ``depth`` (or at ``limit``, or, for two patches, at the chain axis).
     """
 
     def reach(direction, start):
-        steps = limit / 400 * np.arange(1, 401)
+        steps = np.geomspace(1e-9 * limit, limit, 800)
         for chunk in np.split(steps, 16):
             points = start[:, None] + direction[:, None] * chunk[None, :]
             if tori.n_patches == 2 and direction[0] < 0:
@@ -526,18 +532,43 @@ def contact_curve(R, r, E, nu, angle, forces, *, frame="tangent", points_across=
     contact_patches(R, r, angle)  # validates R > 2 r and the angle, with errors that say why
     E_star = float(contact_modulus(E, nu))
     forces = np.unique(v.positive("forces", forces, "N").ravel())
+    if not forces.size:
+        raise ValueError("forces must hold at least one force (N), got none")
     if frame not in FRAMES:
         raise ValueError(f"frame must be one of {FRAMES}, got {frame!r}")
     points_across = int(points_across)
     if points_across < 4:
         raise ValueError(f"points_across must be at least 4, got {points_across}")
-    tori = _Tori(R, r, angle, frame)
+    tori = Tori(R, r, angle, frame)
     loads = tori.normal_force_per_patch(forces)
     A, B = _curvatures(tori, 1e-3 * r)
+    _check_isolated(tori, B)
+    _check_resolvable(tori, E_star, (A, B), forces, loads)
+    with np.errstate(over="ignore"):  # a force so large that the estimate overflows is round the tube too
+        estimate = np.sqrt(_hertz_sphere_approach(loads[-1], E_star, (A, B)) / (2 * np.sqrt(A * B)))
+    if not estimate < r:  # the contact radius of the Hertz sphere of the local curvatures
+        raise _round_the_tube(forces[-1])
+    try:
+        return _curve(tori, E_star, forces, loads, (A, B), points_across)
+    except _OffTheTube:
+        raise _round_the_tube(forces[-1]) from None
+
+
+def _round_the_tube(force):
+    return ValueError(
+        f"the contact reaches round the tube at {force:.3g} N: the window that holds it takes in the sides of the "
+        f"tubes, where no half-space describes the surfaces (limit {HALF_SPACE_LIMIT:g} r); ask for smaller forces"
+    )
+
+
+def _curve(tori, E_star, forces, loads, curvatures, points_across):
+    """:func:`contact_curve` of checked inputs."""
+    R, r, angle, frame = tori.R, tori.r, tori.angle, tori.frame
+    A, B = curvatures
 
     # Pilot: window from the rigid overlap at twice a Hertz-sphere estimate of the approach, coarse grid.
-    x_lo, x_hi, y_half = _overlap_box(tori, 2 * _hertz_sphere_approach(loads[-1], E_star, (A, B)), limit=0.9 * r)
-    small = _overlap_box(tori, 2 * _hertz_sphere_approach(loads[0], E_star, (A, B)), limit=0.9 * r)
+    x_lo, x_hi, y_half = overlap_box(tori, 2 * _hertz_sphere_approach(loads[-1], E_star, (A, B)), limit=0.9 * r)
+    small = overlap_box(tori, 2 * _hertz_sphere_approach(loads[0], E_star, (A, B)), limit=0.9 * r)
     hx = (small[1] - small[0]) / (points_across / 2)
     hy = 2 * small[2] / (points_across / 2)
     spacing_factor = 1.0
@@ -578,7 +609,7 @@ def contact_curve(R, r, E, nu, angle, forces, *, frame="tangent", points_across=
             f"the contact force changed by {error:.2%} between grids after {_MAX_PASSES} refinements "
             f"(tolerance {RESOLUTION_TOLERANCE:.0%})",
             ResolutionWarning,
-            stacklevel=2,
+            stacklevel=3,
         )
     extent = solution["extent"]
     if np.any(extent > HALF_SPACE_LIMIT * r):
@@ -588,7 +619,7 @@ def contact_curve(R, r, E, nu, angle, forces, *, frame="tangent", points_across=
             f"(up to {extent.max() / r:.2f} r at {forces[-1]:.3g} N); the half-space model assumes it small "
             f"compared with the tube radius r (limit {HALF_SPACE_LIMIT:g} r)",
             HalfSpaceWarning,
-            stacklevel=2,
+            stacklevel=3,
         )
     mirrored = tori.n_patches == 2 and not grid.joint
     return ContactCurve(
@@ -606,6 +637,54 @@ def contact_curve(R, r, E, nu, angle, forces, *, frame="tangent", points_across=
         tilt=tori.tilt,
         resolution_error=error,
         grid=(grid.nx, grid.ny, grid.hx, grid.hy),
+    )
+
+
+def _check_isolated(tori, B):
+    """Refuse angles at which the gap curves away from the contact points across the bisector (B <= 0).
+
+    Just above 2 arcsin(r/R) the two contact points sit on the flanks of the tubes, and the gap across
+    them falls away instead of rising: the tori touch along lines, not at two points, and no
+    half-space contact of a point describes them.  The message names the angle where B = 0.
+    """
+    if B > 0:
+        return
+    from ringchain.theory import minimum_contact_angle, smallest_patch_angle
+    from scipy.optimize import brentq
+
+    def across(angle):
+        return _curvatures(Tori(tori.R, tori.r, angle, tori.frame), 1e-3 * tori.r)[1]
+
+    lo, hi = tori.angle, float(minimum_contact_angle(tori.R, tori.r))
+    floor = float(smallest_patch_angle(tori.R, tori.r))
+    lowest = brentq(across, max(lo, floor), hi, xtol=1e-9) if across(hi) > 0 else hi
+    raise ValueError(
+        f"at {math.degrees(tori.angle):.6g} deg the gap between the tubes curves away from the contact points "
+        f"across the bisector (curvature {B:.3g} 1/m): the tori touch along lines there, not at two points, and "
+        f"the numerical contact does not apply; for R/r = {tori.R / tori.r:.6g} it needs the contact angle above "
+        f"about {math.degrees(lowest):.4g} deg"
+    )
+
+
+def _check_resolvable(tori, E_star, curvatures, forces, loads):
+    """Refuse forces whose approach comes near the rounding of the gap, where no grid resolves the contact.
+
+    The gap is a difference of two distances of order R - r, so it is known to a few units of
+    eps (R - r), about 1e-17 m on the paper's rings (measured: 7e-18 rms at 90 deg).  The
+    smallest approach admitted is :data:`_GAP_DIGITS` times that rounding (the force is then
+    within 0.3 % of Hertz's; at the rounding itself the "contact" is rounding noise).
+    """
+    rounding = _GAP_ROUNDING * np.finfo(float).eps * (tori.R - tori.r)
+    smallest = _GAP_DIGITS * rounding
+    if _hertz_sphere_approach(loads[0], E_star, curvatures) >= smallest:
+        return
+    A, B = curvatures
+    R_e = 1.0 / (2 * np.sqrt(A * B))
+    floor = 4 / 3 * E_star * np.sqrt(R_e) * smallest**1.5 * forces[0] / loads[0]  # the sphere's load, axial
+    raise ValueError(
+        f"forces must be at least {floor:.2g} N for these rings, got {forces[0]:.3g} N: below, the approach is "
+        f"within {_GAP_DIGITS:g} times the rounding of the gap between the tori ({rounding:.1g} m) and the boundary "
+        "elements cannot resolve the contact (at such loads each patch is a Hertz contact of the gap's curvatures)"
     )
 
 
@@ -661,298 +740,3 @@ def _resolution_error(tori, E_star, grid, loads, solution, curvatures):
         _, system = coarse.solve(loads[k], solution["approach"][k], force_control=False)
         errors.append(abs(system.compute_normal_force() / (loads[k] * coarse.patches_on_grid) - 1))
     return float(max(errors))
-
-
-# -- what the angle table needs ------------------------------------------------------------------------
-@dataclass(frozen=True)
-class AnglePowerLaw:
-    """One contact angle's row of the paper's Table II from the numerical contact (:func:`angle_power_law`).
-
-    Attributes: ``angle`` (rad), ``K_c`` (effective Hertz constant of the contact alone,
-    N/m^1.5, F = K_c delta^1.5 fitted over the window), ``K`` (N/m^n) and ``n`` of the
-    contact in series with bending (Eqs. (3)-(4)), ``n_patches`` (at the window's lower
-    end), ``max_extent_over_r`` (largest contact half-length over r), ``curve`` (the
-    :class:`ContactCurve` of the contact alone).
-    """
-
-    angle: float
-    K_c: float
-    K: float
-    n: float
-    n_patches: int
-    max_extent_over_r: float
-    curve: ContactCurve
-    K_b: float
-
-    def _at(self, F, values):
-        F = v.positive("F", F, "N")
-        series = self.curve.series(self.K_b)
-        if np.any(F < series.force[0]) or np.any(F > series.force[-1]):
-            raise ValueError(f"F must lie within the computed forces [{series.force[0]:g}, {series.force[-1]:g}] N")
-        return np.exp(np.interp(np.log(F), np.log(series.force), np.log(values(series))))
-
-    def extension(self, F):
-        """Extension (m) of contact and bending in series at force F (N), interpolated in log-log."""
-        return self._at(F, lambda series: series.delta)
-
-    def local_exponent(self, F):
-        """Local exponent d ln F/d ln delta of contact and bending in series at force F (N)."""
-        return self._at(F, lambda series: series.local_exponent)
-
-
-def angle_power_law(R, r, E, nu, angle, K_b, window=DEFAULT_FORCE_WINDOW, n_forces=15) -> AnglePowerLaw:
-    """Table II's K and n at any contact angle from the numerical contact in series with bending.
-
-    Parameters
-    ----------
-    R, r, E, nu, angle : float
-        As :func:`contact_curve` (m, Pa, rad).
-    K_b : float
-        Bending stiffness of one ring, N/m (:func:`ringchain.theory.bending_stiffness`).
-    window : (float, float), optional
-        Force window of the fit, N (default 1 N to 100 N, as :func:`ringchain.theory.fit_power_law`).
-    n_forces : int, optional
-        Forces of the curve, log-spaced over the window (default 15).
-
-    Returns
-    -------
-    AnglePowerLaw
-        The row; the half-space warning of :func:`contact_curve` is recorded in
-        ``max_extent_over_r`` rather than raised.
-    """
-    F_min, F_max = (float(f) for f in window)
-    forces = np.geomspace(F_min, F_max, int(n_forces))
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", HalfSpaceWarning)
-        curve = contact_curve(R, r, E, nu, angle, forces)
-    K_c, _ = curve.fit(window, n=1.5)
-    K, n = curve.series(K_b).fit(window)
-    return AnglePowerLaw(
-        angle=float(angle),
-        K_c=K_c,
-        K=K,
-        n=n,
-        n_patches=int(curve.n_patches[0]),
-        max_extent_over_r=float(curve.extent.max() / curve.r),
-        curve=curve,
-        K_b=float(K_b),
-    )
-
-
-# -- issue 22: the contact with its pressure capped at the first-yield pressure ------------------------
-# Appended (the code above is unchanged): a numerical check of Thornton's elastic-perfectly plastic
-# loading curve (ringchain.theory.plastic) with ContactMechanics' plastic boundary elements.
-
-__all__ += ["CappedContactCurve", "capped_contact_curve", "CAPPED_SHAPES", "CAPPED_KKT_TOLERANCE"]
-
-#: Geometries of :func:`capped_contact_curve`: the exact gap of the two tori, or Thornton's equivalent sphere.
-CAPPED_SHAPES = ("torus", "sphere")
-
-#: Largest violation of the contact conditions accepted in a capped solution, relative to the approach.
-CAPPED_KKT_TOLERANCE = 1e-3
-
-_CAPPED_WINDOW = 1.25  # window half-width over the half-width of the rigid overlap {gap < delta}
-_CAPPED_MAXITER = 1000
-_CAPPED_RETRIES = (0, 4, 8, -4, 12)  # pixels added to the requested count when a solution is refused
-
-
-@dataclass(frozen=True)
-class CappedContactCurve:
-    """Loading curve of the contact with the pressure capped at p_y, from :func:`capped_contact_curve`.
-
-    Attributes
-    ----------
-    delta : ndarray
-        Approach, m.
-    force : ndarray
-        Contact force of the capped boundary-element solution, N.
-    thornton : ndarray
-        Thornton's loading force at the same approach, N
-        (:func:`ringchain.theory.thornton_loading_force`).
-    area, plastic_area : ndarray
-        Contact area, and the part of it at the pressure cap, m^2.
-    delta_y, F_y, p_y : float
-        Approach (m) and force (N) at first yield, and the pressure cap (Pa).
-    shape : str
-        ``"torus"`` (the exact gap of the two tori) or ``"sphere"`` (the equivalent sphere of radius R_e).
-    kkt_error : ndarray
-        Largest violation of the contact conditions of each solution, relative to its approach.
-    pixels : ndarray
-        Pixels across the grid (along its shorter side) of each solution.
-    """
-
-    delta: np.ndarray
-    force: np.ndarray
-    thornton: np.ndarray
-    area: np.ndarray
-    plastic_area: np.ndarray
-    delta_y: float
-    F_y: float
-    p_y: float
-    shape: str
-    kkt_error: np.ndarray
-    pixels: np.ndarray
-
-    @property
-    def ratio(self) -> np.ndarray:
-        """Capped boundary-element force over Thornton's at the same approach."""
-        return self.force / self.thornton
-
-
-def _capped_gap(shape, tori, R_e, delta, pixels):
-    """(gap on the grid (m), pixel sizes (hx, hy), physical size) of a window holding {gap < delta}."""
-    if shape == "sphere":
-        x_lo, x_hi, y_half = -np.sqrt(2 * R_e * delta), np.sqrt(2 * R_e * delta), np.sqrt(2 * R_e * delta)
-    else:
-        x_lo, x_hi, y_half = _overlap_box(tori, delta, limit=0.9 * tori.r)
-    x_half = _CAPPED_WINDOW * max(abs(x_lo), abs(x_hi))
-    y_half = _CAPPED_WINDOW * y_half
-    short = min(x_half, y_half)
-    nx = int(np.ceil(pixels * x_half / short))
-    ny = int(np.ceil(pixels * y_half / short))
-    hx, hy = 2 * x_half / nx, 2 * y_half / ny
-    x = -x_half + (np.arange(nx) + 0.5) * hx
-    y = -y_half + (np.arange(ny) + 0.5) * hy
-    X, Y = np.meshgrid(x, y, indexing="ij")
-    gap = (X**2 + Y**2) / (2 * R_e) if shape == "sphere" else tori.gap(X, Y)
-    return gap, (hx, hy), (2 * x_half, 2 * y_half)
-
-
-def _capped_solve(gap, pixel, size, E_star, p_y, delta, R_e):
-    """One capped solution at imposed approach delta: (forces per pixel, flowing pixels, relative KKT violation)."""
-    contact_mechanics, topography = _contact_mechanics()
-    nx, ny = gap.shape
-    hardness = p_y * pixel[0] * pixel[1]  # ContactMechanics caps the force per pixel
-    substrate = contact_mechanics.FreeFFTElasticHalfSpace((nx, ny), E_star, size)
-    system = contact_mechanics.make_system(surface=topography.Topography(-gap, size), substrate=substrate)
-    # Start from the Hertz pressure of the sphere R_e, capped: p = (2 E*/pi) sqrt(2 (delta/2 - gap)/R_e).
-    guess = 2 * E_star / np.pi * np.sqrt(2 * np.maximum(0.0, delta / 2 - gap) / R_e) * pixel[0] * pixel[1]
-    guess = np.minimum(guess, hardness)
-    if not guess.any():
-        guess[np.unravel_index(np.argmin(gap), gap.shape)] = hardness
-    with np.errstate(all="ignore"):
-        result = system.minimize_proxy(
-            offset=delta, hardness=hardness, initial_forces=-np.pad(guess, ((0, nx), (0, ny))),
-            pentol=1e-4 * delta, forcetol=1e-6 * hardness * gap.size, maxiter=_CAPPED_MAXITER,
-        )  # fmt: skip
-    forces = np.asarray(result.jac)[:nx, :ny]
-    # The contact conditions of the capped problem, checked here: ContactMechanics' own stopping test in
-    # its plastic (mixing) iteration stops at wrong states on some grids and runs past right ones on others.
-    deformed = np.asarray(result.x)[:nx, :ny] + gap - delta  # gap after deformation; < 0 where it flows
-    tiny = 1e-9 * hardness
-    free, flowing = forces <= tiny, forces >= hardness - tiny
-    elastic = ~free & ~flowing
-    violation = max(
-        np.max(np.abs(deformed[elastic]), initial=0.0),
-        np.max(-deformed[free], initial=0.0),
-        np.max(deformed[flowing], initial=0.0),
-    )
-    return forces, flowing, violation / delta
-
-
-def capped_contact_curve(R, r, E, nu, Y, delta_over_delta_y, *, angle=np.pi / 2, shape="torus", pixels=48):
-    """Loading curve of the two tori's contact with the pressure capped at the first-yield pressure.
-
-    Parameters
-    ----------
-    R, r : float
-        Major and tube radius of both tori, m (R > 2 r).
-    E, nu : float
-        Young's modulus (Pa) and Poisson's ratio.
-    Y : float
-        Yield strength, Pa (:func:`ringchain.theory.first_yield`).
-    delta_over_delta_y : array_like
-        Approaches in units of the approach at first yield, > 0.
-    angle : float, optional
-        Contact angle between the ring planes, rad, above theta_min (one elliptical contact); default pi/2.
-    shape : {"torus", "sphere"}, optional
-        Solve on the exact gap of the tori (:func:`ringchain.theory.torus_gap`, capped at the first-yield
-        peak pressure of their elliptical contact) or on Thornton's equivalent sphere (radius R_e of
-        :func:`ringchain.theory.equivalent_radius`, capped at its p_y, which gives the same K_c and delta_y).
-    pixels : int, optional
-        Pixels across the shorter side of each window (default 48; the window is 1.25 times the rigid
-        overlap {gap < delta}).
-
-    Returns
-    -------
-    CappedContactCurve
-        Force against approach, Thornton's force at the same approach, areas, the check of each solution.
-
-    Raises
-    ------
-    RuntimeError
-        If no grid of the retries (:data:`_CAPPED_RETRIES`) gives a solution within
-        :data:`CAPPED_KKT_TOLERANCE`.
-
-    Notes
-    -----
-    Elastic half-spaces in frictionless contact whose pressure may not exceed p_y: where it would, the
-    surfaces interpenetrate (the material flows).  ContactMechanics' constrained conjugate gradients with
-    a hardness (Almqvist et al. 2007; Weber et al. 2018), ``make_system(...).minimize_proxy(offset=delta,
-    hardness=p_y * pixel area)``, on FFT boundary elements.  Each solution is accepted only if the contact
-    conditions hold to :data:`CAPPED_KKT_TOLERANCE` delta (gap zero where 0 < p < p_y, open where p = 0,
-    closed or penetrating where p = p_y); otherwise the grid is changed by a few pixels and the problem
-    solved again.  Resolution, measured on the paper's ring with 32, 48 and 96 pixels: the ratio to
-    Thornton's force changes by 0.1 % at 2 delta_y and by up to 2 % at 10-300 delta_y, where the few pixels
-    at the edge of the flowing region set it.
-
-    The capped half-space carries more force than Thornton's model at the same approach, 1.09 times at
-    2 delta_y, 1.44 at 10 and 1.8-1.9 at a few hundred: Thornton keeps Hertz's contact radius
-    a^2 = R_e delta, and so a plastic slope pi p_y R_e, while the capped contact spreads towards the
-    rigid truncation radius a^2 = 2 R_e delta (slope 2 pi p_y R_e) as the plastic zone takes over.
-    """
-    from ringchain.theory import contact_modulus, equivalent_radius, first_yield, hertz_stiffness
-    from ringchain.theory import thornton_loading_force as thornton
-
-    if shape not in CAPPED_SHAPES:
-        raise ValueError(f"shape must be one of {CAPPED_SHAPES}, got {shape!r}")
-    R = float(v.positive("R", R, "m"))
-    r = float(v.positive("r", r, "m"))
-    angle = float(v.as_float("angle", angle))
-    pixels = int(pixels)
-    if pixels < 8:
-        raise ValueError(f"pixels must be at least 8, got {pixels}")
-    ratios = np.atleast_1d(v.positive("delta_over_delta_y", delta_over_delta_y)).astype(float).ravel()
-    yielding = first_yield(R, r, E, nu, Y, angle)  # validates the rest, with errors that say why
-    K_c = float(hertz_stiffness(R, r, E, nu, angle))
-    E_star = float(contact_modulus(E, nu))
-    R_e = float(equivalent_radius(R, r, angle))
-    delta_y, F_y = float(yielding.indentation), float(yielding.force)
-    if shape == "sphere":
-        # The sphere that yields at F_y: F_y = pi^3 R_e^2 p_y^3/(6 E*^2) (the circular case of first_yield).
-        p_y = float(np.cbrt(6 * E_star**2 * F_y / (np.pi**3 * R_e**2)))
-        tori = None
-    else:
-        p_y = float(yielding.pressure)
-        tori = _Tori(R, r, angle, "axial")
-        if tori.n_patches != 1:
-            raise ValueError("the capped contact is computed for one elliptical contact (angle above theta_min)")
-    deltas = ratios * delta_y
-    force, area, plastic, errors, used = (np.empty(ratios.size) for _ in range(5))
-    for k, delta in enumerate(deltas):
-        for extra in _CAPPED_RETRIES:
-            gap, pixel, size = _capped_gap(shape, tori, R_e, delta, pixels + extra)
-            forces, flowing, error = _capped_solve(gap, pixel, size, E_star, p_y, delta, R_e)
-            if error <= CAPPED_KKT_TOLERANCE:
-                break
-        else:
-            raise RuntimeError(
-                f"the capped contact at delta = {ratios[k]:g} delta_y did not satisfy the contact conditions "
-                f"to {CAPPED_KKT_TOLERANCE:g} delta on any grid (last: {error:.2g})"
-            )
-        cell = pixel[0] * pixel[1]
-        force[k], area[k] = forces.sum(), np.count_nonzero(forces > 0) * cell
-        plastic[k], errors[k], used[k] = np.count_nonzero(flowing) * cell, error, pixels + extra
-    return CappedContactCurve(
-        delta=deltas,
-        force=force,
-        thornton=np.asarray(thornton(deltas, K_c, delta_y), dtype=float),
-        area=area,
-        plastic_area=plastic,
-        delta_y=delta_y,
-        F_y=F_y,
-        p_y=p_y,
-        shape=shape,
-        kkt_error=errors,
-        pixels=used.astype(int),
-    )

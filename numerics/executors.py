@@ -30,9 +30,7 @@ import multiprocessing
 import numbers
 import os
 import socket
-import struct
 import sys
-import time
 from pathlib import Path
 
 __all__ = [
@@ -51,9 +49,6 @@ DASK_TIMEOUT = 5.0
 
 #: Port of a Dask scheduler when the address gives none (Dask's default; 8787 is its dashboard).
 DASK_PORT = 8786
-
-#: Largest first message taken for a Dask handshake, bytes (a scheduler's is under 100).
-_MAX_HANDSHAKE = 1 << 16
 
 
 class InlineExecutor(cf.Executor):
@@ -268,13 +263,13 @@ def dask_client(address: str, timeout: float = DASK_TIMEOUT):
 def check_dask_scheduler(address: str, timeout: float = DASK_TIMEOUT) -> None:
     """Raise ``ConnectionError`` unless a Dask scheduler answers at the TCP ``address`` within ``timeout`` s.
 
-    A Dask scheduler greets every new connection first, with a handshake message (an
-    8-byte length, then frames holding a msgpack map).  This connects a plain socket,
-    sends nothing, and reads at most 64 KiB of that greeting: a closed port, a silent
-    listener (an HTTP server waits for a request), or one that speaks first in another
-    protocol (an SSH banner) is reported in one line instead of the Dask client's
-    30-second wait or its attempt to allocate whatever the first 8 bytes say.  Addresses
-    of other schemes (``tls://``, ``ucx://``, ``inproc://``) are not checked.
+    A Dask scheduler greets every new connection first, with its handshake.  This opens one
+    connection with ``distributed``'s own TCP comm (no retries), sends nothing, and reads the
+    first message through that comm: a closed port, a silent listener (an HTTP server waits for
+    a request), or one that speaks first in another protocol (an SSH banner) is reported in one
+    line instead of the Dask client's 30-second wait.  The message must be a handshake as
+    ``distributed`` writes it: a map holding at least the fields of this side's own handshake.
+    Addresses of other schemes (``tls://``, ``ucx://``, ``inproc://``) are not checked.
     """
     timeout = float(timeout)
     if not (math.isfinite(timeout) and timeout > 0):
@@ -282,36 +277,82 @@ def check_dask_scheduler(address: str, timeout: float = DASK_TIMEOUT) -> None:
     host, port = _tcp_host_port(address)
     if host is None:
         return
-    where = f"{host}:{port}"
-    deadline = time.monotonic() + timeout
     try:
-        sock = socket.create_connection((host, port), timeout=timeout)
-    except socket.gaierror:
-        raise ConnectionError(f"no Dask scheduler at {address}: cannot resolve the host name {host!r}") from None
-    except ConnectionRefusedError:
-        raise ConnectionError(f"no Dask scheduler at {address}: connection refused (nothing listens on {where})"
-                              ) from None  # fmt: skip
-    except TimeoutError:
-        raise ConnectionError(f"no Dask scheduler at {address}: no answer from {where} within {timeout:g} s"
-                              ) from None  # fmt: skip
-    except OSError as exc:
-        raise ConnectionError(f"no Dask scheduler at {address}: {_reason(exc)}") from None
-    with sock:
-        head, ended = _receive(sock, 8, deadline)
-        if ended == "timeout":
-            problem = f"it sent nothing within {timeout:g} s, while a Dask scheduler greets at once"
-        elif ended == "closed":
-            problem = f"it closed the connection after sending {head!r}" if head else "it closed the connection"
-        else:
-            (size,) = struct.unpack("Q", head)  # the frame header of distributed.comm.tcp: native uint64
-            if not 16 <= size <= _MAX_HANDSHAKE:
-                problem = f"it speaks another protocol (it sent {head!r}...)"
-            elif _is_handshake(_receive(sock, size, deadline)[0]):
-                return
-            else:
-                problem = "its first message is not a Dask handshake"
+        import distributed.comm  # noqa: F401 - the comm layer the check reads through
+    except ImportError:
+        raise ImportError("a Dask cluster needs the dask extra: pip install 'ringchain[dask]'") from None
+    where = f"[{host}]:{port}" if ":" in host else f"{host}:{port}"
+    problem = _in_a_loop_of_its_own(lambda: _greeting(address, where, timeout))
+    if problem is None:
+        return
     hint = f"; a scheduler listens on port {DASK_PORT} unless told otherwise" if port != DASK_PORT else ""
     raise ConnectionError(f"no Dask scheduler at {address}: {where} accepts connections, but {problem}{hint}")
+
+
+async def _greeting(address: str, where: str, timeout: float) -> str | None:
+    """None if a Dask handshake arrives at ``where`` within ``timeout`` s, else what came instead.
+
+    Raises ConnectionError when no connection opens.  A listener that answers in another protocol
+    makes the comm read a length it cannot allocate (an ASCII banner's first 8 bytes say 2e18
+    bytes), or a message it cannot decode; both say "another protocol".
+    """
+    import asyncio
+
+    from distributed.comm.core import CommClosedError
+    from distributed.comm.registry import get_backend
+    from tornado.iostream import StreamClosedError
+
+    loop = asyncio.get_running_loop()
+    deadline = loop.time() + timeout
+    try:
+        comm = await asyncio.wait_for(get_backend("tcp").get_connector().connect(where), timeout)
+    except (asyncio.TimeoutError, TimeoutError):
+        raise ConnectionError(f"no Dask scheduler at {address}: no answer from {where} within {timeout:g} s") from None
+    except socket.gaierror:
+        host = where.rpartition(":")[0].strip("[]")
+        raise ConnectionError(f"no Dask scheduler at {address}: cannot resolve the host name {host!r}") from None
+    except OSError as exc:
+        cause = exc.__cause__ or exc  # the comm layer's CommClosedError carries the socket's error
+        if isinstance(cause, ConnectionRefusedError):
+            raise ConnectionError(f"no Dask scheduler at {address}: connection refused (nothing listens on {where})"
+                                  ) from None  # fmt: skip
+        if isinstance(cause, (StreamClosedError, CommClosedError, ConnectionResetError)):  # accepted, then closed
+            return "it closed the connection without a Dask handshake"
+        raise ConnectionError(f"no Dask scheduler at {address}: {_reason(cause)}") from None
+    try:
+        message = await asyncio.wait_for(comm.read(), max(deadline - loop.time(), 0.0))
+    except (asyncio.TimeoutError, TimeoutError):
+        return f"it sent nothing within {timeout:g} s, while a Dask scheduler greets at once"
+    except CommClosedError:
+        return "it closed the connection without a Dask handshake"
+    except (MemoryError, OverflowError, ValueError, TypeError, EOFError):  # an impossible length, or not msgpack
+        return "it speaks another protocol (its first message is not one distributed can read)"
+    finally:
+        comm.abort()
+    if isinstance(message, dict) and set(comm.handshake_info()) <= set(message):
+        return None
+    return "its first message is not a Dask handshake"
+
+
+def _in_a_loop_of_its_own(coroutine):
+    """Run ``coroutine()`` to its end on a new event loop in a thread of its own (callers may have a loop running)."""
+    import asyncio
+    import threading
+
+    outcome = {}
+
+    def run():
+        try:
+            outcome["value"] = asyncio.run(coroutine())
+        except BaseException as exc:  # handed to the caller's thread
+            outcome["error"] = exc
+
+    thread = threading.Thread(target=run, name="ringchain-dask-check", daemon=True)
+    thread.start()
+    thread.join()
+    if "error" in outcome:
+        raise outcome["error"]
+    return outcome["value"]
 
 
 def _tcp_host_port(address: str) -> tuple[str | None, int]:
@@ -341,37 +382,5 @@ def _tcp_host_port(address: str) -> tuple[str | None, int]:
     return host, port
 
 
-def _receive(sock: socket.socket, size: int, deadline: float) -> tuple[bytes, str]:
-    """Up to ``size`` bytes from ``sock`` and how the reading ended: "complete", "closed" or "timeout"."""
-    data = b""
-    while len(data) < size:
-        left = deadline - time.monotonic()
-        if left <= 0:
-            return data, "timeout"
-        sock.settimeout(left)
-        try:
-            chunk = sock.recv(size - len(data))
-        except TimeoutError:
-            return data, "timeout"
-        except OSError:
-            return data, "closed"
-        if not chunk:
-            return data, "closed"
-        data += chunk
-    return data, "complete"
-
-
-def _is_handshake(message: bytes) -> bool:
-    """Whether ``message`` is framed as distributed frames it: frame count, frame lengths, a msgpack map first."""
-    if len(message) < 16:
-        return False
-    (count,) = struct.unpack_from("Q", message)
-    if not 1 <= count <= 64 or len(message) < 8 * (count + 1):
-        return False
-    lengths = struct.unpack_from(f"{count}Q", message, 8)
-    first = message[8 * (count + 1) :][:1]
-    return 0 < sum(lengths) and first != b"" and (0x80 <= first[0] <= 0x8F or first[0] in (0xDE, 0xDF))
-
-
 def _reason(exc: BaseException) -> str:
-    return " ".join(str(getattr(exc, "strerror", None) or exc or type(exc).__name__).split())
+    return " ".join(str(getattr(exc, "strerror", None) or exc).split()) or type(exc).__name__

@@ -58,15 +58,15 @@ def default_t_end(chain: Chain, speeds, sensors) -> float:
     if not chain.uniform:
         return _varying_t_end(chain, speeds, far)
     if chain.model == "dual-spring":
-        K, n = (float(x) for x in fit_power_law(chain.K_c, chain.K_b))
+        K, n = (float(x) for x in fit_power_law(K_c=chain.K_c, K_b=chain.K_b))
     else:
         K, n = chain.K, chain.n
     speed = float(np.min(speeds))
     # Two rings of mass m colliding at relative speed v store m v^2/4 at the peak of K delta^n.
     delta = ((n + 1.0) * 0.25 * chain.m * speed**2 / K) ** (1.0 / (n + 1.0))
     force = max(0.25 * K * delta**n, chain.m_gravity * STANDARD_GRAVITY)
-    V = float(solitary_wave_speed(force, K, n, chain.a, chain.m))
-    width = min(float(solitary_wave_width(n, chain.a)), chain.n_rings * chain.a)
+    V = float(solitary_wave_speed(force, K=K, n=n, a=chain.a, m=chain.m))
+    width = min(float(solitary_wave_width(n=n, a=chain.a)), chain.n_rings * chain.a)
     return (1.5 * far * chain.a + 0.5 * width) / V
 
 
@@ -78,14 +78,14 @@ def _varying_t_end(chain: Chain, speeds, far: int) -> float:
 
     pairs = slice(0, chain.n_rings - 1)
     if chain.model == "dual-spring":
-        K, n = fit_power_law(chain.profile("K")[pairs], chain.profile("K_b")[: chain.n_rings - 1])
+        K, n = fit_power_law(K_c=chain.profile("K")[pairs], K_b=chain.profile("K_b")[: chain.n_rings - 1])
     else:
         K, n = chain.profile("K")[pairs], chain.profile("n")[pairs]
     m, a, speed = float(np.max(chain.m)), chain.profile("a"), float(np.min(speeds))
     delta = ((n + 1.0) * 0.25 * m * speed**2 / K) ** (1.0 / (n + 1.0))
     force = np.maximum(0.25 * K * delta**n, float(np.min(chain.m_gravity)) * STANDARD_GRAVITY)
-    V = solitary_wave_speed(force, K, n, a, m)
-    width = min(float(np.max(solitary_wave_width(n, a))), float(np.sum(a)))
+    V = solitary_wave_speed(force, K=K, n=n, a=a, m=m)
+    width = min(float(np.max(solitary_wave_width(n=n, a=a))), float(np.sum(a)))
     return float(1.5 * np.sum(a[:far] / V[:far]) + 0.5 * width / np.min(V))
 
 
@@ -149,9 +149,9 @@ class Experiment:
         K, n = (
             (chain.K, chain.n)
             if chain.model == "power-law"
-            else (float(x) for x in fit_power_law(chain.K_c, chain.K_b))
+            else (float(x) for x in fit_power_law(K_c=chain.K_c, K_b=chain.K_b))
         )
-        return float(solitary_wave_speed(self.peak_forces[0], K, n, chain.a, chain.m))
+        return float(solitary_wave_speed(self.peak_forces[0], K=K, n=n, a=chain.a, m=chain.m))
 
     @property
     def support_peak(self) -> float | None:

@@ -317,8 +317,8 @@ def _series_force(delta, K_c, K_b):
     d = delta[positive]
     F = np.minimum(K_c * (0.5 * d) ** 1.5, 0.5 * K_b * d)
     for _ in range(60):
-        dd = series_displacement(F, K_c, K_b)
-        step = (d - dd) * F * local_exponent(F, K_c, K_b) / dd
+        dd = series_displacement(F, K_c=K_c, K_b=K_b)
+        step = (d - dd) * F * local_exponent(F, K_c=K_c, K_b=K_b) / dd
         F = F + step
         if np.all(np.abs(step) <= 1e-13 * F):
             break
@@ -463,7 +463,7 @@ def fit_speed_amplitude(F_m, V_s, *, K, n, a, m0, free_n=False, start=1.0, max_n
     --------
     >>> from ringchain.theory import solitary_wave_speed
     >>> F = np.geomspace(2.0, 80.0, 12)
-    >>> V = solitary_wave_speed(F, 4.9e6, 1.11, 0.04, 0.37 * 8.2e-3)
+    >>> V = solitary_wave_speed(F, K=4.9e6, n=1.11, m=0.37 * 8.2e-3, a=0.04)
     >>> fit = fit_speed_amplitude(F, V, K=4.9e6, n=1.11, a=0.04, m0=8.2e-3, start=0.5)
     >>> round(fit.values["m_eff_ratio"], 6)
     0.37
@@ -486,7 +486,7 @@ def fit_speed_amplitude(F_m, V_s, *, K, n, a, m0, free_n=False, start=1.0, max_n
     params.add("n", value=n, min=1.0 + 1e-9, vary=bool(free_n))
 
     def speeds(p):
-        return solitary_wave_speed(F_m, K, p["n"].value, a, p["m_eff_ratio"].value * m0)
+        return solitary_wave_speed(F_m, K=K, n=p["n"].value, m=p["m_eff_ratio"].value * m0, a=a)
 
     out = minimize(lambda p: speeds(p) - V_s, params, max_nfev=max_nfev)
     names = ["m_eff_ratio", "n"] if free_n else ["m_eff_ratio"]

@@ -133,7 +133,9 @@ def _static(args) -> int:
         aic = {model: r.aic for model, r in results.items()}
         best = min(aic, key=aic.get)
         other = max(aic, key=aic.get)
-        print(f"\nthe data support the {best} law: AIC lower by {aic[other] - aic[best]:.3g} than the {other} law's")
+        law = {"power-law": "power law (Eq. 4)", "series": "series law (Eq. 3)"}
+        print(f"\nthe data support the {law[best]}: its AIC is lower by {aic[other] - aic[best]:.3g} than that of the "
+              f"{law[other]}")  # fmt: skip
     if args.plot:
         from .plots import new_figure
 

@@ -2,7 +2,7 @@
 
 The experiment behind :func:`ringchain.theory.junction_coefficients`: two chains of one model
 joined end to end (contact stiffness and ring mass changing at one contact), held at a static
-force F0 in every contact, and a long Gaussian pulse of small force travelling from the first
+force F_0 in every contact, and a long Gaussian pulse of small force travelling from the first
 into the second.  The sensors read the incident, reflected and transmitted pulses.
 """
 
@@ -45,7 +45,7 @@ class JunctionReading:
     Z2: float
 
 
-def junction_pulse(model, K, m, *, n=1.5, K_b=3.3e6, a=0.04, F0=5.0, amplitude=0.02, rings=(50, 40), width=4.0,
+def junction_pulse(model, *, K, m, n=1.5, K_b=3.3e6, a=0.04, F_0=5.0, amplitude=0.02, rings=(50, 40), width=4.0,
                    rtol=1e-10) -> JunctionReading:  # fmt: skip
     """Send a small long pulse from one chain into another and read its reflection and transmission.
 
@@ -62,11 +62,11 @@ def junction_pulse(model, K, m, *, n=1.5, K_b=3.3e6, a=0.04, F0=5.0, amplitude=0
         Bending stiffness of every ring, N/m (dual-spring model).
     a : float, optional
         Distance between ring centres, m.
-    F0 : float, optional
+    F_0 : float, optional
         Static force in every contact, N: the weight of ring 0 alone (the other rings weigh
         1e-9 kg), so that the chain is uniformly stretched.
     amplitude : float, optional
-        Peak force of the pulse over F0.
+        Peak force of the pulse over F_0.
     rings : (int, int), optional
         Rings of each chain; the pulse starts centred on ring 20 of the first.  The second is
         lengthened if need be, so that nothing the support reflects comes back during the run.
@@ -95,10 +95,10 @@ def junction_pulse(model, K, m, *, n=1.5, K_b=3.3e6, a=0.04, F0=5.0, amplitude=0
         n = 1.5
     else:
         K_b = None
-    sides = [dict(model=model, F0=F0, K=k, n=n, m=mass, a=a, K_b=K_b) for k, mass in ((K1, m1), (K2, m2))]
+    sides = [dict(model=model, F_0=F_0, K=k, n=n, m=mass, a=a, K_b=K_b) for k, mass in ((K1, m1), (K2, m2))]
     c1, c2 = (float(sound_speed(**side)) for side in sides)
     Z1, Z2 = (float(impedance(**side)) for side in sides)
-    X0, w, dF = 20 * a, width * a, amplitude * F0
+    X0, w, dF = 20 * a, width * a, amplitude * F_0
     near, far = N1 - 15, N1 + 15  # contacts in chain 1 and in chain 2
     t_end = ((N1 - 20) + 15) * a / c1 + 15 * a / c2 + 6 * w / min(c1, c2)
     # Chain 2 long enough that nothing reflected by the support comes back within t_end.
@@ -108,7 +108,7 @@ def junction_pulse(model, K, m, *, n=1.5, K_b=3.3e6, a=0.04, F0=5.0, amplitude=0
     # Contact N1 - 1, between the last ring of chain 1 and the first of chain 2, is the junction.
     K_contacts, masses = np.r_[np.full(N1, K1), np.full(N2, K2)], np.r_[np.full(N1, m1), np.full(N2, m2)]
     m_gravity = np.full(n_rings, 1e-9)
-    m_gravity[0] = F0 / STANDARD_GRAVITY
+    m_gravity[0] = F_0 / STANDARD_GRAVITY
     if model == "power-law":
         chain = Chain.power_law(n_rings, K=K_contacts, n=n, m=masses, a=a, m_gravity=m_gravity)
     else:
@@ -121,7 +121,7 @@ def junction_pulse(model, K, m, *, n=1.5, K_b=3.3e6, a=0.04, F0=5.0, amplitude=0
     x = x0[0] + U - U[-1]
     u = -c1 * strain * np.exp(-((X - X0) ** 2) / (2 * w**2))
     sim = simulate(chain, t_end, initial=(x, u), n_samples=3001, rtol=rtol)
-    f = sim.contact_force - (F0 + STANDARD_GRAVITY * 1e-9 * np.arange(n_rings - 1))
+    f = sim.contact_force - (F_0 + STANDARD_GRAVITY * 1e-9 * np.arange(n_rings - 1))
     passed = sim.t > ((near - 20) * a + 4 * w) / c1  # the incident pulse has gone by the near sensor
 
     def extreme(values):

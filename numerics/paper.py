@@ -125,13 +125,13 @@ def paper_chain(model="power-law", aspect_ratio=9.0, n_rings=paper_data.CHAIN_RI
     ring = Ring.from_aspect_ratio(aspect_ratio, r=paper_data.TUBE_RADIUS)
     if stiffness == "theory":
         return Chain.from_ring(ring, n_rings, model, m_eff_ratio=ratio, striker_mass=striker_mass, **dashpots)
-    K_si = float(n_per_mm_to_si(K_mm, n))
+    K_si = float(n_per_mm_to_si(K_mm, n=n))
     if model == "power-law":
         return Chain.from_ring(ring, n_rings, model, m_eff_ratio=ratio, K=K_si, n=n, striker_mass=striker_mass,
                                **dashpots)  # fmt: skip
     if "gamma" in dashpots:
         raise ValueError("K, n and gamma belong to the power-law model; use gamma_c and gamma_b")
-    K_c, K_b = series_stiffness_for_power_law(K_si, n)
+    K_c, K_b = series_stiffness_for_power_law(K=K_si, n=n)
     m0 = ring.mass
     return Chain.dual_spring(n_rings, K_c, K_b, ratio * m0, ring.spacing, m_gravity=m0, striker_mass=striker_mass,
                              **dashpots)  # fmt: skip
@@ -300,7 +300,7 @@ def static_table() -> Table:
             source = "Table I"
         rows.append([
             f"{aspect:.1f}", f"{ring.K_c:.4e}", f"{ring.K_b:.4e}", _g(ring.crossover_force),
-            _g(si_to_n_per_mm(K, n)), f"{n:.3f}", _as_printed(K_paper), _as_printed(n_paper), source,
+            _g(si_to_n_per_mm(K, n=n)), f"{n:.3f}", _as_printed(K_paper), _as_printed(n_paper), source,
         ])  # fmt: skip
     return _table(
         "Static theory of one contact against R/r (paper Sec. II and IV.A, Eqs. 1-4); stainless steel, "
@@ -312,50 +312,50 @@ def static_table() -> Table:
     )  # fmt: skip
 
 
-def _single_contact_ring(aspect, angle):
-    """The ring of aspect ratio ``aspect`` at contact ``angle`` (rad), or None below the single-contact angle."""
-    from ringchain.theory import Ring, minimum_contact_angle
-
-    ring_r = paper_data.TUBE_RADIUS
-    if angle <= float(minimum_contact_angle(aspect * ring_r, ring_r)):
-        return None
-    return Ring.from_aspect_ratio(aspect, r=ring_r, angle=angle)
-
-
 def angle_table() -> Table:
     """Exponent against contact angle beside Table II (Sec. IV.B, App. A).
 
-    The closed-form Hertz contact (elliptical, App. A) where one contact exists, and at every
-    angle the numerical contact of the exact torus gap (:func:`~ringchain.numerics.contact_curve`,
-    two patches below arccos(1 - 2r/R), each in its tangent plane) in series with bending.
+    Each angle's contact from :func:`~ringchain.numerics.contact_at_angle`, the choice ``ringchain ring``
+    makes too: the closed-form Hertz ellipse (App. A) where it stays within the half-space limit over
+    the fit's window, the numerical contact of the exact torus gap (:func:`~ringchain.numerics.contact_curve`,
+    two patches below arccos(1 - 2r/R), each in its tangent plane) elsewhere; in series with bending.
     """
     from ringchain.theory import STAINLESS_STEEL_304, Ring, minimum_contact_angle, si_to_n_per_mm
 
-    from .contact_bem import angle_power_law
+    from .contact_angle import HERTZ, contact_at_angle
+    from .contact_bem import HALF_SPACE_LIMIT
 
     aspect = paper_data.TABLE_II_ASPECT_RATIO
     lowest = math.degrees(float(minimum_contact_angle(aspect, 1.0)))
     ring90 = Ring.from_aspect_ratio(aspect, r=paper_data.TUBE_RADIUS)
-    rows, notes = [], []
+    steel = STAINLESS_STEEL_304
+    rows, notes, handover = [], [], None
     for angle_deg, (K_paper, n_paper, _) in paper_data.TABLE_II.items():
-        theory = _single_contact_ring(aspect, math.radians(angle_deg))
-        if theory is None:
-            cells = ["n/a"] * 4
-            notes.append(f"{angle_deg:g} deg: no single Hertz contact below {lowest:.1f} deg = arccos(1 - 2r/R); "
-                         "the tori touch at two patches (the paper's Abaqus regime, Sec. IV.B): BEM only")  # fmt: skip
-        else:
-            K, n = theory.power_law()
-            cells = [f"{theory.K_c:.4e}", _g(theory.crossover_force), _g(si_to_n_per_mm(K, n)), f"{n:.3f}"]
-        bem = angle_power_law(ring90.R, ring90.r, STAINLESS_STEEL_304.E, STAINLESS_STEEL_304.nu,
-                              math.radians(angle_deg), ring90.K_b)  # fmt: skip
-        cells += [_g(si_to_n_per_mm(bem.K, bem.n)), f"{bem.n:.3f}"]
-        rows.append([f"{angle_deg:.0f}", *cells, _as_printed(K_paper), _as_printed(n_paper)])
+        contact = contact_at_angle(ring90.R, ring90.r, steel.E, steel.nu, math.radians(angle_deg), K_b=ring90.K_b)
+        handover = contact.handover
+        crossover = ring90.K_b**3 / contact.K_c**2
+        method = "Hertz" if contact.method == HERTZ else f"BEM, {contact.n_patches} patch" + (
+            "es" if contact.n_patches > 1 else "")  # fmt: skip
+        rows.append([
+            f"{angle_deg:.0f}", method, f"{contact.K_c:.4e}", _g(crossover), _g(si_to_n_per_mm(contact.K, n=contact.n)),
+            f"{contact.n:.3f}", f"{contact.extent_over_r:.3f}", _as_printed(K_paper), _as_printed(n_paper),
+        ])  # fmt: skip
+        if not contact.within_half_space:
+            reach = f"the contact reaches {contact.extent_over_r:.2f} r at 100 N"
+            within = f"within it up to {contact.limit_force:.3g} N"
+            notes.append(f"{angle_deg:g} deg: {reach}, beyond the half-space limit {HALF_SPACE_LIMIT:g} r ({within})")
+    above = "at no angle" if handover is None else f"above {math.degrees(handover):.2f} deg"
     return _table(
         f"Exponent against contact angle (paper Sec. IV.B, App. A), R/r = {aspect:g}",
-        ["angle (deg)", "K_c (N/m^1.5)", "F* (N)", "K (N/mm^n)", "n", "K BEM", "n BEM", "K Table II", "n Table II"],
+        ["angle (deg)", "contact", "K_c (N/m^1.5)", "F* (N)", "K (N/mm^n)", "n", "contact/r", "K Table II",
+         "n Table II"],
         rows,
-        [*notes, "BEM: numerical contact of the exact torus gap (ringchain.numerics.contact_curve, each patch in its "
-         "tangent plane) in series with bending, fitted over 1-100 N",
+        [*notes,
+         f"contact: Hertz's ellipse (Eq. 1, App. A) where it stays within {HALF_SPACE_LIMIT:g} r up to 100 N ({above}; "
+         f"a single contact exists above {lowest:.2f} deg = arccos(1 - 2r/R)), else the numerical contact of the exact "
+         "torus gap (BEM, ringchain.numerics.contact_at_angle; two patches below arccos(1 - 2r/R), the paper's "
+         "Abaqus regime); in series with bending, fitted over 1-100 N",
+         "contact/r: largest half-length of the contact at 100 N over the tube radius",
          f"Table II's rings: R/r = {aspect:g} (paper_data.TABLE_II_ASPECT_RATIO; Sec. IV.B says R = 20 mm)"],
     )  # fmt: skip
 
@@ -379,7 +379,7 @@ def speed_table(forces=PAPER_FORCES) -> Table:
     rows = []
     for label, ring, (K_mm, n, ratio) in table_parameters():
         m = ratio * ring.mass
-        V = solitary_wave_speed(forces, float(n_per_mm_to_si(K_mm, n)), n, ring.spacing, m)
+        V = solitary_wave_speed(forces, K=float(n_per_mm_to_si(K_mm, n=n)), n=n, m=m, a=ring.spacing)
         rows.append([
             label, _as_printed(K_mm), _as_printed(n), f"{m * 1e3:.2f}", f"{ring.spacing * 1e3:.1f}",
             *(_g(x) for x in V),
@@ -407,7 +407,9 @@ def experiment_table(runs) -> Table:
     rows, sources = [], []
     for model, run in runs.items():
         chain = run.simulation.chain
-        V_s = float(solitary_wave_speed(run.peak_forces[0], float(n_per_mm_to_si(K_mm, n)), n, chain.a, chain.m))
+        V_s = float(
+            solitary_wave_speed(run.peak_forces[0], K=float(n_per_mm_to_si(K_mm, n=n)), n=n, m=chain.m, a=chain.a)
+        )
         rows.append([
             model, _g(run.peak_forces[0]), _g(run.peak_forces[1]), _g(run.arrival_times[0] * 1e3),
             _g(run.arrival_times[1] * 1e3), _g(run.time_of_flight * 1e3), _g(run.wave_speed), _g(V_s), run.stiffness,
@@ -458,7 +460,7 @@ def write_figures(out, runs) -> list[Path]:
     aspect = np.linspace(3.02, 12.0, 200)
     K_c = hertz_stiffness(aspect * r, r, steel.E, steel.nu)
     K_b = bending_stiffness(aspect * r, r, steel.E, steel.nu)
-    _, n = fit_power_law(K_c, K_b)
+    _, n = fit_power_law(K_c=K_c, K_b=K_b)
     fig = new_figure(figsize=(5, 3.6))
     ax = fig.add_subplot()
     ax.plot(aspect, n, label="theory (Eqs. 1-4), fit over 1-100 N")
@@ -473,7 +475,7 @@ def write_figures(out, runs) -> list[Path]:
     lowest = float(minimum_contact_angle(R, r))
     angle = np.linspace(lowest + 1e-3, np.pi / 2, 150)
     K_c = hertz_stiffness(R, r, steel.E, steel.nu, angle)
-    _, n = fit_power_law(K_c, bending_stiffness(R, r, steel.E, steel.nu))
+    _, n = fit_power_law(K_c=K_c, K_b=bending_stiffness(R, r, steel.E, steel.nu))
     fig = new_figure(figsize=(5, 3.6))
     ax = fig.add_subplot()
     ax.plot(np.degrees(angle), n, label="theory, elliptical Hertz contact")
@@ -491,9 +493,9 @@ def write_figures(out, runs) -> list[Path]:
     for k, a_r in enumerate(PAPER_ASPECT_RATIOS):
         R = a_r * r
         K_c, K_b = hertz_stiffness(R, r, steel.E, steel.nu), bending_stiffness(R, r, steel.E, steel.nu)
-        K, n = fit_power_law(K_c, K_b)
+        K, n = fit_power_law(K_c=K_c, K_b=K_b)
         color = f"C{k}"
-        ax.plot(series_displacement(F, K_c, K_b) * 1e6, F, color=color, label=f"R/r = {a_r:g}")
+        ax.plot(series_displacement(F, K_c=K_c, K_b=K_b) * 1e6, F, color=color, label=f"R/r = {a_r:g}")
         ax.plot((F / K) ** (1.0 / n) * 1e6, F, "--", color=color)
     ax.set(xscale="log", yscale="log", xlabel="extension delta (um)", ylabel="force F (N)",
            title="Series law (solid) and fitted power law (dashed)")  # fmt: skip
@@ -506,7 +508,7 @@ def write_figures(out, runs) -> list[Path]:
     axes = fig.subplots(1, 2, sharey=True)
     for label, ring, (K_mm, n, ratio) in table_parameters():
         ax = axes[0] if label.startswith("Table I ") else axes[1]
-        V = solitary_wave_speed(F_m, float(n_per_mm_to_si(K_mm, n)), n, ring.spacing, ratio * ring.mass)
+        V = solitary_wave_speed(F_m, K=float(n_per_mm_to_si(K_mm, n=n)), n=n, m=ratio * ring.mass, a=ring.spacing)
         ax.plot(F_m, V, label=label.split(" ", 2)[2])
     for ax, title in zip(axes, ("Table I: aspect ratio", "Table II: contact angle"), strict=True):
         ax.set(xscale="log", xlabel="peak force F_m (N)", title=title)

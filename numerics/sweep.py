@@ -348,9 +348,9 @@ def _dynamics(sensors, run) -> dict:
         K, n = (
             (chain.K, chain.n)
             if chain.model == "power-law"
-            else (float(x) for x in fit_power_law(chain.K_c, chain.K_b))
+            else (float(x) for x in fit_power_law(K_c=chain.K_c, K_b=chain.K_b))
         )
-        V_s = float(solitary_wave_speed(F_near, K, n, chain.a, chain.m))
+        V_s = float(solitary_wave_speed(F_near, K=K, n=n, a=chain.a, m=chain.m))
     support = run.support_force
     values = (near, far, F_near, run.peak_force(far), run.arrival_time(near), run.arrival_time(far),
               run.time_of_flight(near, far), run.wave_speed(near, far), V_s,

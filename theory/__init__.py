@@ -8,6 +8,7 @@ Static theory of one contact (paper Sec. II, Eqs. 1-4, App. A):
 
 - :func:`hertz_stiffness` -- K_c of two tori, circular or elliptical contact (Eq. 1);
 - :func:`hertz_stiffness_pair` -- K_c of two different tori (radii, materials), for chains that vary;
+- :func:`contact_semi_axes` -- the semi-axes of the contact ellipse under a force (where it outgrows the tube);
 - :func:`torus_gap`, :func:`contact_patches` -- the exact gap of two tori beyond its quadratic
   (Hertz) part, and the two contact points it has below theta_min (:mod:`.contact`, Sec. 4);
 - :func:`bending_stiffness` -- K_b of one ring by Castigliano (Eq. 2);
@@ -71,6 +72,26 @@ Contacts that yield (beyond the paper; modules :mod:`.subsurface` and :mod:`.pla
 - :data:`STAINLESS_STEEL_304_ANNEALED`, :data:`STAINLESS_STEEL_304_COLD_WORKED` -- materials with a yield strength.
 
 The paper's reported numbers (Tables I-II, FE exponents) are data in :mod:`.paper_data`.
+
+One convention for every signature: the quantity a function is evaluated at comes first and may be
+given by position (a force ``F``, ``F_m`` or ``F_0``, a speed ``v0``, a wavenumber ``q``, a position
+``x``); the geometry and material of a contact (``R, r, E, nu, angle``) follow by position, since
+every swap among them is refused; the parameters of the chain and of its contact law are
+keyword-only, in the one order ``F_0, K, n, m, a, K_c, K_b``::
+
+    F_m = impact_amplitude(v0, K=K, n=n, m=m, a=a)
+    V_s = solitary_wave_speed(F_m, K=K, n=n, m=m, a=a)
+    c_0 = sound_speed(F_0, model="power-law", K=K, n=n, m=m, a=a)
+
+A static contact force is spelled ``F_0`` everywhere.  Parameters outside that order are keyword-only
+too, placed by what they are (each module's docstring says where): Thornton's memory ``delta_max`` and
+constant ``delta_y`` after ``K_c``; the yield strength ``Y`` after the contact's ``angle``; a sheet's link
+tension ``T`` where ``F_0`` stands and its stiffness ``k`` where ``K`` stands; the spreads of a disordered
+chain (``sigma_K``, ``sigma_m``, ``correlation``, ``sigma_Z``) after the chain's parameters::
+
+    F_y = first_yield(R, r, E, nu, angle, Y=Y).force
+    F = thornton_unloading_force(delta, delta_max=delta_max, K_c=K_c, delta_y=delta_y)
+    c = effective_medium_speed(k=k, m=m, a=a)
 """
 
 from . import curved_beam, paper_data
@@ -78,6 +99,7 @@ from .contact import (
     contact_ellipse,
     contact_modulus,
     contact_patches,
+    contact_semi_axes,
     hertz_stiffness,
     hertz_stiffness_pair,
     minimum_contact_angle,
@@ -157,6 +179,7 @@ __all__ = [
     "hertz_stiffness",
     "hertz_stiffness_pair",
     "contact_ellipse",
+    "contact_semi_axes",
     "minimum_contact_angle",
     "contact_patches",
     "smallest_patch_angle",

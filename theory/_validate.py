@@ -28,6 +28,9 @@ __all__ = [
     "broadcast_shape",
     "finite_result",
     "show",
+    "distinct",
+    "compact_wave_exponent",
+    "compact_wave_chain",
 ]
 
 
@@ -172,6 +175,34 @@ def finite_result(value, what: str, inputs: str):
             f"{inputs}; they lie far outside any physical range"
         )
     return value
+
+
+def distinct(x: float, limit: float) -> str:
+    """``x`` with the fewest significant digits (at least 4) that do not print it as ``limit``."""
+    for digits in range(4, 18):
+        text = f"{x:.{digits}g}"
+        if x == limit or text != f"{limit:.{digits}g}":
+            return text
+    return repr(x)
+
+
+def compact_wave_exponent(n):
+    """n as a float array, > 1: the power-law chain has a compact solitary wave (with the reason in the error)."""
+    try:
+        return in_range("n", n, 1.0, np.inf)
+    except ValueError as error:
+        raise ValueError(
+            f"{error}: the power-law chain has a compact solitary wave only for n > 1 "
+            "(its profile |sin|^(2/(n-1)) needs n > 1; n = 1 is the linear chain, where pulses disperse)"
+        ) from None
+
+
+def compact_wave_chain(K, n, a, m=None):
+    """K (N/m^n), n (> 1), a (m) and, if given, m (kg) of a power-law chain with a compact wave, checked."""
+    out = [positive("K", K, "N/m^n"), compact_wave_exponent(n), positive("a", a, "m")]
+    if m is not None:
+        out.append(positive("m", m, "kg"))
+    return out
 
 
 def show(array) -> str:

@@ -62,6 +62,7 @@ __all__ = [
     "hertz_circular",
     "hertz_elliptical",
     "hertz_elliptical_monomial",
+    "hertz_semi_axes",
     "elliptic_placeholders",
     "ellipse_shape_ratio",
     "minimum_angle",
@@ -79,6 +80,7 @@ __all__ = [
     "effective_modulus_pair",
     "minimum_angle_pair",
     "contact_ellipse",
+    "contact_semi_axes",
     "minimum_contact_angle",
     "gap_symbols",
     "torus_distance_expr",
@@ -243,6 +245,28 @@ def hertz_elliptical():
     return K_c.subs({K_m: K, D_m: (K - E) / m}), Es
 
 
+def hertz_semi_axes():
+    """(a, b, E*): the semi-axes a >= b of the contact ellipse under the load P (Johnson Sec. 4.2).
+
+    From the same relations as :func:`hertz_elliptical_monomial` (P = 2/3 pi a b p0,
+    A = p0 b D_m/(E* a^2), b = a sqrt(1 - m)), solved for a instead of the approach:
+    a^3 = 3 P D_m/(2 pi A E*) with D_m = (K(m) - E(m))/m (:func:`elliptic_placeholders`); at
+    m = 0 (D_m = pi/4, A = 1/(2 R_e)) Hertz's sphere a^3 = 3 P R_e/(4 E*).  The half-space
+    model holds while a is small against the tube (:data:`ringchain.numerics.HALF_SPACE_LIMIT`).
+    """
+    s = symbols()
+    P, A, m, a, p0 = (s[k] for k in ("P", "A", "m", "a", "p0"))
+    Es = sp.Symbol("E^*", positive=True)
+    _, D_m = elliptic_placeholders()
+    b_of_a = a * sp.sqrt(1 - m)
+    _, p0_of_a = sp.solve_linear(A - p0 * b_of_a * D_m / (Es * a**2), symbols=[p0])
+    per_cube = sp.cancel(sp.Rational(2, 3) * sp.pi * a * b_of_a * p0_of_a / a**3)
+    if a in per_cube.free_symbols:  # pragma: no cover - derivation check
+        raise RuntimeError("Johnson's load is not proportional to a^3")
+    a_of_P = (P / per_cube) ** sp.Rational(1, 3)
+    return a_of_P, a_of_P * sp.sqrt(1 - m), Es
+
+
 def ellipse_shape_ratio():
     """B/A as a function of m, from Johnson's two curvature equations (Sec. 4.2)."""
     s = symbols()
@@ -336,9 +360,17 @@ def curvature_sums_pair():
 
     The generalisation of :func:`curvature_sums` (the tests check that it reduces to it for
     equal rings): |A - B| = sqrt((k1 - k2)^2 + 4 k1 k2 cos^2 theta)/2 with k_i = 1/r_i + 1/(R_i - r_i).
+    It is kept in that form, a sum of two squares: expanded over a common denominator, the radicand
+    of two equal rings at 90 deg is a difference of large terms that rounds to a small negative
+    number, and its square root to NaN.
     """
-    total, radicand, c = _hertz_sums(*principal_radii_pair())
-    difference = sp.sqrt(sp.factor(radicand)) / 2
+    R1p, R1pp, R2p, R2pp = principal_radii_pair()
+    total, radicand, c = _hertz_sums(R1p, R1pp, R2p, R2pp)
+    k1, k2 = 1 / R1p - 1 / R1pp, 1 / R2p - 1 / R2pp
+    squares = (k1 - k2) ** 2 + 4 * k1 * k2 * c**2
+    if sp.simplify(squares - radicand) != 0:  # pragma: no cover - derivation check
+        raise RuntimeError("the sum of squares is not Hertz's (2 |A - B|)^2")
+    difference = sp.sqrt(squares) / 2
     return sp.factor(sp.together(total)), difference.subs(c, sp.cos(symbols()["theta"]))
 
 
@@ -391,6 +423,9 @@ def carlson_form(expr):
 #: largest ln(B/A) covered: 690, an ellipse with b/a about 1e-151, beyond any use (the single
 #: Hertz ellipse needs theta well above theta_min); the last interval ends where m_1 = 1 - m
 #: reaches the smallest normal double.
+#: Beyond this length (m) its square overflows a double.
+_SQUARE_LIMIT = float(np.sqrt(np.finfo(float).max))
+
 _TABLE_STEP = 0.025
 _TABLE_DEGREE = 5
 _TABLE_MAX_LOG_RATIO = 690.0
@@ -528,6 +563,18 @@ def _stiffness_of_curvature_pair():
 
 
 @derived
+def _long_semi_axis():
+    """a(P, A, m_1, E, nu) of :func:`hertz_semi_axes`, with D_m = R_D(0, m_1, 1)/3 (exact as m -> 0 and m -> 1)."""
+    s = symbols()
+    a, _, Es = hertz_semi_axes()
+    _, D_m = elliptic_placeholders()
+    a = a.subs({Es: effective_modulus(), D_m: carlson_rd(0, s["m_1"], 1) / 3})
+    if s["m"] in a.free_symbols:  # pragma: no cover - derivation check
+        raise RuntimeError("the long semi-axis depends on m other than through D_m")
+    return (s["P"], s["A"], s["m_1"], s["E"], s["nu"]), a
+
+
+@derived
 def _stiffness_elliptical():
     """:func:`elliptical_table` as generated code (a constant array: no arguments)."""
     table = elliptical_table()
@@ -640,6 +687,10 @@ def _ellipse(R, r, angle):
         bad = ~(np.broadcast_to(A, shape) > 0)
         given = np.broadcast_to(angle, shape)[bad].min()
         limit = np.broadcast_to(minimum_contact_angle(R, r), shape)[bad].max()
+        with np.errstate(over="ignore"):
+            overflowed = not np.all(np.isfinite(r * (R - r)))
+        if overflowed and given > limit:  # above theta_min, A vanished in rounding: r (R - r) overflowed
+            v.finite_result(np.inf, "the relative curvature A", "radii (r (R - r) overflows)")
         raise ValueError(
             f"angle {v.show(given)} rad ({np.degrees(given):.6g} deg) is at or below theta_min = "
             f"{v.show(limit)} rad ({np.degrees(limit):.6g} deg) = arccos(1 - 2r/R), to double precision: "
@@ -707,6 +758,50 @@ def contact_ellipse(R, r, angle=np.pi / 2):
         m = np.minimum(log_ratio * _from_table(1, np.log1p(log_ratio)), 1.0)  # 1 - m < 1e-16 rounds to 1
     reason = "radii (the curvatures 1/r overflow)"
     return v.finite_result(A, "A", reason), v.finite_result(B, "B", reason), m
+
+
+def contact_semi_axes(R, r, E, nu, angle=np.pi / 2, *, F):
+    """Semi-axes a >= b of the Hertz contact ellipse of two identical tori under the force F, m.
+
+    Parameters
+    ----------
+    R, r, E, nu, angle : array_like
+        As :func:`hertz_stiffness` (m, Pa, rad; angle in (theta_min, pi/2], default pi/2).
+    F : array_like
+        Force pressing the tori together, N, > 0 (keyword-only: it would pass silently for R).
+
+    Returns
+    -------
+    a, b : ndarray
+        Long and short semi-axis, m; a along the bisector of the ring planes (the direction of the
+        smaller relative curvature A), b = a sqrt(1 - m) across it.
+
+    Notes
+    -----
+    Johnson's elliptical solution (Contact Mechanics, Sec. 4.2; :func:`hertz_semi_axes`),
+    a^3 = 3 F (K(m) - E(m))/(2 pi m A E*), with A and m from :func:`contact_ellipse`; at
+    pi/2 the sphere of App. A, a^3 = 3 F R'/(4 E*).  The half-space solution, and with it the
+    single-ellipse K_c of Eq. (1), needs a small against the tube radius r: as theta falls to
+    theta_min the ellipse grows into a line at any force.  ``b`` rounds to 0 when b/a < 1e-8.
+
+    Examples
+    --------
+    >>> a, b = contact_semi_axes(22.5e-3, 2.5e-3, 193e9, 0.29, F=100.0)
+    >>> round(float(a) * 1e3, 4), bool(a == b)  # mm: a circle at 90 deg
+    (0.1267, True)
+    """
+    R, r = _check_geometry(R, r)
+    E, nu = _check_material(E, nu)
+    angle = _check_angle(angle)
+    F = v.positive("F", F, "N")
+    v.broadcast_shape(R=R, r=r, E=E, nu=nu, angle=angle, F=F)
+    A, _, m = contact_ellipse(R, r, angle)
+    with np.errstate(all="ignore"):
+        m_1 = 1.0 - m
+        a = np.asarray(_long_semi_axis(F, A, m_1, E, nu), dtype=float)
+        b = a * np.sqrt(m_1)
+    reason = "force, radii and elastic constants"
+    return v.finite_result(a, "the semi-axis a", reason), v.finite_result(b, "the semi-axis b", reason)
 
 
 def hertz_stiffness(R, r, E, nu, angle=np.pi / 2):
@@ -808,7 +903,14 @@ def hertz_stiffness_pair(R1, r1, E1, nu1, R2, r2, E2, nu2, angle=np.pi / 2):
     v.broadcast_shape(R1=R1, r1=r1, E1=E1, nu1=nu1, R2=R2, r2=r2, E2=E2, nu2=nu2, angle=angle)
     if np.array_equal(R1, R2) and np.array_equal(r1, r2) and np.array_equal(E1, E2) and np.array_equal(nu1, nu2):
         return hertz_stiffness(R1, r1, E1, nu1, angle)  # the pair of identical tori
-    return _pair_stiffness(R1, r1, E1, nu1, R2, r2, E2, nu2, angle)
+    K_c = _pair_stiffness(R1, r1, E1, nu1, R2, r2, E2, nu2, angle)
+    same = (R1 == R2) & (r1 == r2) & (E1 == E2) & (nu1 == nu2)
+    if np.any(same):  # identical pairs among different ones: the single-torus number, as for equal arrays
+        shape = np.broadcast_shapes(np.shape(K_c), same.shape, angle.shape)
+        K_c = np.array(np.broadcast_to(K_c, shape), dtype=float)
+        picked = np.broadcast_to(same, shape)
+        K_c[picked] = hertz_stiffness(*(np.broadcast_to(x, shape)[picked] for x in (R1, r1, E1, nu1, angle)))
+    return K_c
 
 
 def _pair_stiffness(R1, r1, E1, nu1, R2, r2, E2, nu2, angle):
@@ -1049,8 +1151,11 @@ def torus_distance(X, Y, Z, R, r):
     :func:`torus_distance_expr`.  Undefined on the axis X = Z = 0.
     """
     R, r = _check_geometry(R, r)
-    D, *gradient = _distance(*(v.as_float(name, w) for name, w in zip("XYZ", (X, Y, Z), strict=True)), R, r)
-    return D, tuple(gradient)
+    points = (v.as_float(name, w) for name, w in zip("XYZ", (X, Y, Z), strict=True))
+    with np.errstate(all="ignore"):  # overflow is reported by value
+        D, *gradient = _distance(*points, R, r)
+    reason = "points and radii (or points on the axis X = Z = 0)"
+    return v.finite_result(D, "the distance", reason), tuple(v.finite_result(g, "the normal", reason) for g in gradient)
 
 
 def smallest_patch_angle(R, r):
@@ -1094,11 +1199,13 @@ def torus_gap(x, y, R, r, angle):
     R, r = _check_geometry(R, r)
     angle = v.in_range("angle", angle, 0.0, np.pi / 2)
     x, y = v.as_float("x", x), v.as_float("y", y)
-    with np.errstate(invalid="ignore"):
+    with np.errstate(all="ignore"):
         g = np.asarray(_gap(x, y, R, r, angle), dtype=float)
     if np.any(np.isnan(g)):
+        if R.max() > _SQUARE_LIMIT:  # R^2 overflows: the gap is lost to rounding, whatever the point
+            v.finite_result(g, "the gap", "radii")
         raise ValueError("x, y must lie over both tubes (|offset across each tube| < r); some points do not")
-    return g
+    return v.finite_result(g, "the gap", "positions and radii")
 
 
 def contact_patches(R, r, angle):

@@ -441,7 +441,7 @@ def _dof_scale(R, kind):
     return np.concatenate([dof, dof])
 
 
-def element_matrices(R, r, E, nu, rho, angle, kind="in-plane") -> ElementMatrices:
+def element_matrices(R, r, E, nu, *, rho, angle, kind="in-plane") -> ElementMatrices:
     """Stiffness, consistent mass and resultants of one exact curved element (step 4).
 
     Parameters
@@ -475,7 +475,7 @@ def element_matrices(R, r, E, nu, rho, angle, kind="in-plane") -> ElementMatrice
 
     Examples
     --------
-    >>> el = element_matrices(22.5e-3, 2.5e-3, 193e9, 0.29, 8000.0, np.pi / 16)
+    >>> el = element_matrices(22.5e-3, 2.5e-3, 193e9, 0.29, rho=8000.0, angle=np.pi / 16)
     >>> el.stiffness.shape, bool(np.allclose(el.stiffness, el.stiffness.T))
     ((6, 6), True)
     """
@@ -634,12 +634,17 @@ def _ring_inputs(R, r, E, nu, rho, k):
     R, r, E, nu = _ring_and_material(R, r, E, nu)
     rho = v.positive("rho", rho, "kg/m^3")
     k = v.as_float("k", k)
-    if np.any((k != np.round(k)) | (k < 2)):
-        raise ValueError(f"k must be an integer circumferential order >= 2, got {k!r}")
+    bad = (k != np.round(k)) | (k < 2)
+    if np.any(bad):
+        raise ValueError(f"k must be an integer circumferential order >= 2, got {v.show(k[bad] if k.ndim else k)}")
     return R, r, E, nu, rho, k
 
 
-def inextensional_frequency(R, r, E, nu, rho, k, kind="in-plane"):
+#: What is beyond double precision in the frequencies of a ring.
+_EXTREME = "radii, elastic constants, density and order"
+
+
+def inextensional_frequency(R, r, E, nu, *, rho, k, kind="in-plane"):
     """Classical flexural frequency of a free thin ring of order k, Hz.
 
     Parameters
@@ -661,15 +666,17 @@ def inextensional_frequency(R, r, E, nu, rho, k, kind="in-plane"):
 
     Examples
     --------
-    >>> round(float(inextensional_frequency(1.0, 0.05, 2e11, 0.3, 8000.0, 2)), 2)  # NAFEMS FV6 ring, Hz
+    >>> round(float(inextensional_frequency(1.0, 0.05, 2e11, 0.3, rho=8000.0, k=2)), 2)  # NAFEMS FV6 ring, Hz
     53.38
     """
     R, r, E, nu, rho, k = _ring_inputs(R, r, E, nu, rho, k)
     func = _inextensional_in_plane if plane_kind(kind) == "in-plane" else _inextensional_out_of_plane
-    return func(k, R, r, E, nu, rho) / (2.0 * np.pi)
+    with np.errstate(all="ignore"):  # overflow is reported by value
+        frequency = np.asarray(func(k, R, r, E, nu, rho), dtype=float) / (2.0 * np.pi)
+    return v.finite_result(frequency, "the frequency", _EXTREME)
 
 
-def ring_frequencies(R, r, E, nu, rho, k, kind="in-plane", *, extension=True, shear=True, rotary_inertia=True,
+def ring_frequencies(R, r, E, nu, *, rho, k, kind="in-plane", extension=True, shear=True, rotary_inertia=True,
                      thick=True) -> np.ndarray:  # fmt: skip
     """The three frequencies of order-k motion of the continuous ring, Hz, lowest first.
 
@@ -694,14 +701,24 @@ def ring_frequencies(R, r, E, nu, rho, k, kind="in-plane", *, extension=True, sh
 
     Examples
     --------
-    >>> f = ring_frequencies(22.5e-3, 2.5e-3, 193e9, 0.29, 8000.0, 2)
-    >>> round(float(f[0] / inextensional_frequency(22.5e-3, 2.5e-3, 193e9, 0.29, 8000.0, 2)), 3)
+    >>> f = ring_frequencies(22.5e-3, 2.5e-3, 193e9, 0.29, rho=8000.0, k=2)
+    >>> round(float(f[0] / inextensional_frequency(22.5e-3, 2.5e-3, 193e9, 0.29, rho=8000.0, k=2)), 3)
     0.984
     """
-    from scipy.linalg import eigh, null_space
-
     R, r, E, nu, rho, k = (float(x) for x in _ring_inputs(R, r, E, nu, rho, k))
     kind = plane_kind(kind)
+    try:
+        with np.errstate(all="ignore"):  # overflow is reported by value
+            frequencies = _ring_frequencies(R, r, E, nu, rho, k, kind, extension, shear, rotary_inertia, thick)
+    except (OverflowError, ZeroDivisionError, np.linalg.LinAlgError, ValueError):  # infinities met on the way
+        frequencies = np.array([np.inf])
+    return v.finite_result(frequencies, "a frequency", _EXTREME)
+
+
+def _ring_frequencies(R, r, E, nu, rho, k, kind, extension, shear, rotary_inertia, thick):
+    """:func:`ring_frequencies` of checked numbers."""
+    from scipy.linalg import eigh, null_space
+
     section = _sections(R, r, E, nu, thick=thick)
     D, m = section["D"][kind], section["m"][kind]
     s = symbols()

@@ -139,13 +139,13 @@ class Ring:
     @property
     def crossover_force(self) -> float:
         """Force F* = K_b^3/K_c^2 at which contact and bending compliances are equal, N."""
-        return float(crossover_force(self.K_c, self.K_b))
+        return float(crossover_force(K_c=self.K_c, K_b=self.K_b))
 
     def local_exponent(self, F):
         """Local exponent n(F) of the series law at force F (N)."""
-        return local_exponent(F, self.K_c, self.K_b)
+        return local_exponent(F, K_c=self.K_c, K_b=self.K_b)
 
     def power_law(self, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DEFAULT_FORCE_WINDOW[1]) -> tuple[float, float]:
         """Fitted (K in N/m^n, n) of F = K delta^n over [F_min, F_max] N (Eq. 4)."""
-        K, n = fit_power_law(self.K_c, self.K_b, F_min, F_max)
+        K, n = fit_power_law(K_c=self.K_c, K_b=self.K_b, F_min=F_min, F_max=F_max)
         return float(K), float(n)

@@ -342,7 +342,7 @@ def _dual_spring_speed():
     return _arguments(with_q=False), _at_force(dual_spring_sound_speed())
 
 
-_CHAIN = "static force and chain parameters (F0, K, n, m, a, K_b)"
+_CHAIN = "static force and chain parameters (F_0, K, n, m, a, K_b)"
 
 
 def _model(model, K_b):
@@ -357,14 +357,14 @@ def _model(model, K_b):
     return None
 
 
-def _static_chain(F0, K, n, m):
-    F0 = v.nonnegative("F0", F0, "N")
+def _static_chain(F_0, K, n, m):
+    F_0 = v.nonnegative("F_0", F_0, "N")
     K = v.positive("K", K, "N/m^n")
     n = v.positive("n", n)
     m = v.positive("m", m, "kg")
-    if np.any((F0 == 0) & (n < 1)):
-        raise ValueError("F0 = 0 with n < 1 gives an infinitely stiff contact; give F0 > 0 (N)")
-    return F0, K, n, m
+    if np.any((F_0 == 0) & (n < 1)):
+        raise ValueError("F_0 = 0 with n < 1 gives an infinitely stiff contact; give F_0 > 0 (N)")
+    return F_0, K, n, m
 
 
 class BandEdges(NamedTuple):
@@ -375,8 +375,8 @@ class BandEdges(NamedTuple):
     optical_top: np.ndarray
 
 
-def dispersion(q, *, model, F0, K, n, m, a, K_b=None):
-    """Angular frequency of each branch of the chain linearised about a static force F0.
+def dispersion(q, *, model, F_0, K, n, m, a, K_b=None):
+    """Angular frequency of each branch of the chain linearised about a static force F_0.
 
     Parameters
     ----------
@@ -386,7 +386,7 @@ def dispersion(q, *, model, F0, K, n, m, a, K_b=None):
     model : {"power-law", "dual-spring"}
         Power-law chain (Eq. (7)): one mass m per ring.  Dual-spring chain (Eqs. (5)-(6)):
         two masses m/2 per ring, contact and bending spring K_b alternating.
-    F0 : array_like
+    F_0 : array_like
         Static force in every contact and ring body, N, >= 0.
     K : array_like
         Contact law F = K delta^n: prefactor, N/m^n (K_c, N/m^1.5, for the dual-spring chain).
@@ -402,12 +402,12 @@ def dispersion(q, *, model, F0, K, n, m, a, K_b=None):
     Returns
     -------
     ndarray
-        omega, rad/s, of shape broadcast(q, F0, ...) + (branches,): one branch for the
+        omega, rad/s, of shape broadcast(q, F_0, ...) + (branches,): one branch for the
         power-law chain, two (acoustic first, then optical) for the dual-spring chain.
 
     Notes
     -----
-    The contact acts as a spring of stiffness k_c = n K^(1/n) F0^((n-1)/n)
+    The contact acts as a spring of stiffness k_c = n K^(1/n) F_0^((n-1)/n)
     (:func:`contact_stiffness`).  Power law: omega = 2 sqrt(k_c/m) |sin(q a/2)|
     (:func:`power_law_dispersion`, from :func:`.longwave.lattice_dispersion`).
     Dual spring: omega^2 = 2/m [k_c + K_b -+ sqrt(k_c^2 + K_b^2 + 2 k_c K_b cos(q a))]
@@ -416,30 +416,30 @@ def dispersion(q, *, model, F0, K, n, m, a, K_b=None):
 
     Examples
     --------
-    >>> dispersion([0.0, np.pi], model="power-law", F0=1.0, K=1.0, n=1.0, m=1.0, a=1.0).ravel().tolist()
+    >>> dispersion([0.0, np.pi], model="power-law", F_0=1.0, K=1.0, n=1.0, m=1.0, a=1.0).ravel().tolist()
     [0.0, 2.0]
-    >>> dispersion(np.pi, model="dual-spring", F0=1.0, K=1.0, n=1.0, m=4.0, a=1.0, K_b=4.0).tolist()
+    >>> dispersion(np.pi, model="dual-spring", F_0=1.0, K=1.0, n=1.0, m=4.0, a=1.0, K_b=4.0).tolist()
     [1.0, 2.0]
     """
     K_b = _model(model, K_b)
     q = v.as_float("q", q)
-    F0, K, n, m = _static_chain(F0, K, n, m)
+    F_0, K, n, m = _static_chain(F_0, K, n, m)
     a = v.positive("a", a, "m")
     with np.errstate(all="ignore"):  # overflow is reported below, by value
         if model == "power-law":
-            omega = np.asarray(_power_law_branch(q, F0, K, n, m, a), dtype=float)[..., None]
+            omega = np.asarray(_power_law_branch(q, F_0, K, n, m, a), dtype=float)[..., None]
         else:
-            branches = (_acoustic_branch(q, F0, K, n, m, a, K_b), _optical_branch(q, F0, K, n, m, a, K_b))
+            branches = (_acoustic_branch(q, F_0, K, n, m, a, K_b), _optical_branch(q, F_0, K, n, m, a, K_b))
             omega = np.stack(np.broadcast_arrays(*branches), axis=-1).astype(float)
     return v.finite_result(omega, "omega", _CHAIN)
 
 
-def band_edges(*, model, F0, K, n, m, K_b=None):
-    """Angular frequencies at the band edges of the chain linearised about a static force F0.
+def band_edges(F_0, *, model, K, n, m, K_b=None):
+    """Angular frequencies at the band edges of the chain linearised about a static force F_0.
 
     Parameters
     ----------
-    model, F0, K, n, m, K_b
+    model, F_0, K, n, m, K_b
         As in :func:`dispersion` (the edges do not depend on the spacing a).
 
     Returns
@@ -454,31 +454,31 @@ def band_edges(*, model, F0, K, n, m, K_b=None):
     -----
     The group velocity vanishes at every edge, so these are the frequencies that stay
     behind at a ring after a disturbance has passed.  One dual-spring edge, 2 sqrt(K_b/m),
-    does not depend on F0 (module docstring): the frequency of the trailing oscillations
+    does not depend on F_0 (module docstring): the frequency of the trailing oscillations
     behind a pulse strong enough to leave the contacts slack.
 
     Examples
     --------
-    >>> [round(float(e), 6) for e in band_edges(model="dual-spring", F0=1.0, K=1.0, n=1.0, m=4.0, K_b=4.0)]
+    >>> [round(float(e), 6) for e in band_edges(model="dual-spring", F_0=1.0, K=1.0, n=1.0, m=4.0, K_b=4.0)]
     [1.0, 2.0, 2.236068]
     """
     K_b = _model(model, K_b)
-    F0, K, n, m = _static_chain(F0, K, n, m)
+    F_0, K, n, m = _static_chain(F_0, K, n, m)
     with np.errstate(all="ignore"):  # overflow is reported below, by value
         if model == "power-law":
-            top = v.finite_result(np.asarray(_power_law_top(F0, K, n, m), dtype=float), "omega", _CHAIN)
+            top = v.finite_result(np.asarray(_power_law_top(F_0, K, n, m), dtype=float), "omega", _CHAIN)
             nan = np.full_like(top, np.nan)
             return BandEdges(top, nan, nan.copy())
-        edges = np.broadcast_arrays(*_dual_spring_edges(F0, K, n, m, K_b))
+        edges = np.broadcast_arrays(*_dual_spring_edges(F_0, K, n, m, K_b))
     return BandEdges(*(v.finite_result(np.asarray(e, dtype=float), "omega", _CHAIN) for e in edges))
 
 
-def sound_speed(*, model, F0, K, n, m, a, K_b=None):
-    """Speed of long linear waves in a chain under static force F0, m/s.
+def sound_speed(F_0, *, model, K, n, m, a, K_b=None):
+    """Speed of long linear waves in a chain under static force F_0, m/s.
 
     Parameters
     ----------
-    model, F0, K, n, m, a, K_b
+    model, F_0, K, n, m, a, K_b
         As in :func:`dispersion`.
 
     Returns
@@ -490,16 +490,16 @@ def sound_speed(*, model, F0, K, n, m, a, K_b=None):
 
     Examples
     --------
-    >>> round(float(sound_speed(model="dual-spring", F0=1.0, K=2.0, n=1.0, m=1.0, a=1.0, K_b=2.0)), 12)  # k = 1
+    >>> round(float(sound_speed(model="dual-spring", F_0=1.0, K=2.0, n=1.0, m=1.0, a=1.0, K_b=2.0)), 12)  # k = 1
     1.0
     """
     K_b = _model(model, K_b)
-    F0, K, n, m = _static_chain(F0, K, n, m)
+    F_0, K, n, m = _static_chain(F_0, K, n, m)
     a = v.positive("a", a, "m")
     if model == "power-law":
-        return linear_sound_speed(F0, K, n, a, m)
+        return linear_sound_speed(F_0, K=K, n=n, m=m, a=a)
     with np.errstate(all="ignore"):  # overflow is reported below, by value
-        speed = np.asarray(_dual_spring_speed(F0, K, n, m, a, K_b), dtype=float)
+        speed = np.asarray(_dual_spring_speed(F_0, K, n, m, a, K_b), dtype=float)
     return v.finite_result(speed, "the sound speed", _CHAIN)
 
 
@@ -509,12 +509,12 @@ def _junction():
     return (Z1, Z2), sp.Tuple(*junction_symbolic())
 
 
-def impedance(*, model, F0, K, n, m, a, K_b=None):
-    """Impedance of a chain to long linear waves under static force F0, N s/m.
+def impedance(F_0, *, model, K, n, m, a, K_b=None):
+    """Impedance of a chain to long linear waves under static force F_0, N s/m.
 
     Parameters
     ----------
-    model, F0, K, n, m, a, K_b
+    model, F_0, K, n, m, a, K_b
         As in :func:`dispersion`.
 
     Returns
@@ -530,11 +530,13 @@ def impedance(*, model, F0, K, n, m, a, K_b=None):
 
     Examples
     --------
-    >>> float(impedance(model="power-law", F0=1.0, K=4.0, n=1.0, m=1.0, a=2.0))  # sqrt(m K)
+    >>> float(impedance(model="power-law", F_0=1.0, K=4.0, n=1.0, m=1.0, a=2.0))  # sqrt(m K)
     2.0
     """
-    c = sound_speed(model=model, F0=F0, K=K, n=n, m=m, a=a, K_b=K_b)
-    return np.asarray(v.positive("m", m, "kg") * c / v.positive("a", a, "m"), dtype=float)
+    c = sound_speed(F_0, model=model, K=K, n=n, m=m, a=a, K_b=K_b)
+    with np.errstate(all="ignore"):  # m (c/a) = sqrt(m k): m c alone can overflow where Z does not
+        Z = np.asarray(v.positive("m", m, "kg") * (c / v.positive("a", a, "m")), dtype=float)
+    return v.finite_result(Z, "the impedance", _CHAIN)
 
 
 def junction_coefficients(Z1, Z2):
@@ -573,9 +575,10 @@ def junction_coefficients(Z1, Z2):
 
 
 def _ring_index(name, value):
-    if isinstance(value, bool) or not float(value).is_integer():
-        raise TypeError(f"{name} must be an integer ring index, got {value!r}")
-    return int(value)
+    number = value.item() if isinstance(value, np.generic) else value  # 2.5, not np.float64(2.5), in the message
+    if isinstance(number, bool) or not isinstance(number, (int, float)) or not float(number).is_integer():
+        raise TypeError(f"{name} must be an integer ring index, got {number!r}")
+    return int(number)
 
 
 def linear_travel_time(ring_from, ring_to, *, model, K, n, m, a, K_b=None, m_gravity=None, g=STANDARD_GRAVITY):
@@ -625,11 +628,11 @@ def linear_travel_time(ring_from, ring_to, *, model, K, n, m, a, K_b=None, m_gra
     force = v.finite_result(force, "the static force", "masses and gravity")
     expand = [None if value is None else np.asarray(value, dtype=float)[..., None] for value in (K, n, m, a, K_b)]
     K, n, m, a, K_b = expand
-    speed = sound_speed(model=model, F0=force, K=K, n=n, m=m, a=a, K_b=K_b)
+    speed = sound_speed(model=model, F_0=force, K=K, n=n, m=m, a=a, K_b=K_b)
     with np.errstate(all="ignore"):
         time = np.sum(a / speed, axis=-1)
     if np.any(speed == 0):
-        raise ValueError("the sound speed vanishes at an unloaded contact (F0 = 0 with n > 1): no linear travel time")
+        raise ValueError("the sound speed vanishes at an unloaded contact (F_0 = 0 with n > 1): no linear travel time")
     return v.finite_result(time, "the travel time", _CHAIN)
 
 

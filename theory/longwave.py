@@ -403,7 +403,7 @@ def _sound_speed():
     return (s["K"], s["n"], s["a"], s["m"]), power_law(sound_speed_from_force(), s["F_0"])
 
 
-def linear_sound_speed(F_0, K, n, a, m):
+def linear_sound_speed(F_0, *, K, n, m, a):
     """Speed of small-amplitude long waves in a chain pre-stretched by a static force F_0.
 
     Parameters
@@ -414,10 +414,10 @@ def linear_sound_speed(F_0, K, n, a, m):
         Power-law prefactor, N/m^n (F = K delta^n, paper Eq. 4).
     n : array_like
         Power-law exponent, > 0.
-    a : array_like
-        Distance between adjacent ring centres, m (a = 2(R - r)).
     m : array_like
         Ring mass (or effective mass), kg.
+    a : array_like
+        Distance between adjacent ring centres, m (a = 2(R - r)).
 
     Returns
     -------
@@ -434,7 +434,7 @@ def linear_sound_speed(F_0, K, n, a, m):
 
     Examples
     --------
-    >>> float(linear_sound_speed(1.0, 4.0, 1.0, 2.0, 1.0))  # linear spring: a sqrt(K/m)
+    >>> float(linear_sound_speed(1.0, K=4.0, n=1.0, m=1.0, a=2.0))  # linear spring: a sqrt(K/m)
     4.0
     """
     F_0 = v.nonnegative("F_0", F_0, "N")
@@ -451,4 +451,4 @@ def linear_sound_speed(F_0, K, n, a, m):
         stretched = power_law_value(log_coefficient, exponent, np.where(F_0 > 0, F_0, 1.0))
         unstretched = np.where(exponent == 0, np.exp(log_coefficient), 0.0)
         speed = np.where(F_0 > 0, stretched, unstretched)
-    return v.finite_result(speed, "c_0", "static force and chain parameters (K, n, a, m)")
+    return v.finite_result(speed, "c_0", "static force and chain parameters (K, n, m, a)")

@@ -6,7 +6,7 @@ through named constructors.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import KW_ONLY, dataclass
 
 from . import _validate as v
 from .contact import contact_modulus
@@ -24,6 +24,9 @@ __all__ = [
 @dataclass(frozen=True)
 class Material:
     """An isotropic elastic material.
+
+    The name may be given by position; the constants only by keyword (``E=``, ``nu=``, ``rho=``,
+    ``source=``): E and rho are both positive numbers, and a swap would pass silently.
 
     Attributes
     ----------
@@ -44,6 +47,7 @@ class Material:
     """
 
     name: str
+    _: KW_ONLY
     E: float
     nu: float
     rho: float

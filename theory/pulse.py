@@ -43,10 +43,12 @@ from __future__ import annotations
 
 import functools
 
+import numpy as np
+
 from . import _validate as v
 from . import longwave, solitary
 from ._codegen import derived, sp
-from .solitary import _chain
+from ._forms import power_law, power_law_value
 from .special import beta
 
 __all__ = [
@@ -206,25 +208,35 @@ def impact_law():
 # --- numeric functions --------------------------------------------------------------------------
 
 
+# Each is a power of its force or speed, C x^p: evaluated as exp(log C + p log x) (:func:`power_law_value`), so
+# that no intermediate power overflows where the result does not (v0^2 overflows from 1.3e154 m/s on).
 @derived
 def _energy():
     s = symbols()
-    return (s["F_m"], s["K"], s["n"]), energy()
+    return (s["K"], s["n"]), power_law(energy(), s["F_m"])
 
 
 @derived
 def _momentum():
     s = symbols()
-    return (s["F_m"], s["K"], s["n"], s["m"]), momentum()
+    return (s["K"], s["n"], s["m"]), power_law(momentum(), s["F_m"])
 
 
 @derived
 def _amplitude():
     s = symbols()
-    return (s["v_0"], s["K"], s["n"], s["m_s"]), impact_law()
+    return (s["K"], s["n"], s["m_s"]), power_law(sp.expand_power_base(impact_law(), force=True), s["v_0"])
 
 
-def solitary_wave_energy(F_m, K, n, m, a):
+def _power_of(function, variable, *parameters, what):
+    """exp(log C + p log variable) of a derived power law, refused by value beyond double precision."""
+    with np.errstate(all="ignore"):
+        log_coefficient, exponent = function(*parameters)
+        value = power_law_value(log_coefficient, exponent, variable)
+    return v.finite_result(value, what, "force or speed and chain parameters (K, n, m)")
+
+
+def solitary_wave_energy(F_m, *, K, n, m, a):
     """Energy carried by the compact solitary wave of peak contact force F_m, J (App. B).
 
     Parameters
@@ -258,15 +270,15 @@ def solitary_wave_energy(F_m, K, n, m, a):
 
     Examples
     --------
-    >>> round(float(solitary_wave_energy(1.0, 1.0, 1.5, 1.0, 1.0)), 6)  # Hertz, in units K = F_m = 1
+    >>> round(float(solitary_wave_energy(1.0, K=1.0, n=1.5, m=1.0, a=1.0)), 6)  # Hertz, in units K = F_m = 1
     1.032266
     """
     F_m = v.positive("F_m", F_m, "N")
-    K, n, _, _ = _chain(K, n, a, m)
-    return _energy(F_m, K, n)
+    K, n, _, _ = v.compact_wave_chain(K, n, a, m)
+    return _power_of(_energy, F_m, K, n, what="the energy")
 
 
-def solitary_wave_momentum(F_m, K, n, m, a):
+def solitary_wave_momentum(F_m, *, K, n, m, a):
     """Momentum carried by the compact solitary wave of peak contact force F_m, kg m/s (App. B).
 
     Parameters
@@ -290,15 +302,15 @@ def solitary_wave_momentum(F_m, K, n, m, a):
 
     Examples
     --------
-    >>> round(float(solitary_wave_momentum(1.0, 1.0, 1.5, 1.0, 1.0)), 6)
+    >>> round(float(solitary_wave_momentum(1.0, K=1.0, n=1.5, m=1.0, a=1.0)), 6)
     1.666081
     """
     F_m = v.positive("F_m", F_m, "N")
-    K, n, _, m = _chain(K, n, a, m)
-    return _momentum(F_m, K, n, m)
+    K, n, _, m = v.compact_wave_chain(K, n, a, m)
+    return _power_of(_momentum, F_m, K, n, m, what="the momentum")
 
 
-def impact_amplitude(v0, K, n, m, a, m_striker=None):
+def impact_amplitude(v0, *, K, n, m, a, m_striker=None):
     """Peak force of the leading solitary wave launched by a striker hitting the chain end at v0, N.
 
     Parameters
@@ -329,10 +341,10 @@ def impact_amplitude(v0, K, n, m, a, m_striker=None):
 
     Examples
     --------
-    >>> round(float(impact_amplitude(1.0, 1.0, 1.5, 1.0, 1.0)), 6)
+    >>> round(float(impact_amplitude(1.0, K=1.0, n=1.5, m=1.0, a=1.0)), 6)
     0.647302
     """
     v0 = v.positive("v0", v0, "m/s")
-    K, n, _, m = _chain(K, n, a, m)
+    K, n, _, m = v.compact_wave_chain(K, n, a, m)
     m_striker = m if m_striker is None else v.positive("m_striker", m_striker, "kg")
-    return _amplitude(v0, K, n, m_striker)
+    return _power_of(_amplitude, v0, K, n, m_striker, what="F_m")

@@ -23,7 +23,7 @@ import numpy as np
 from . import _validate as v
 from ._codegen import derived, sp
 from ._forms import log_monomial
-from .special import exp_of_log
+from .special import exp_of_log, gauss_legendre
 
 __all__ = [
     "symbols",
@@ -166,7 +166,7 @@ def _stiffnesses(K_c, K_b):
     return v.positive("K_c", K_c, "N/m^1.5"), v.positive("K_b", K_b, "N/m")
 
 
-def series_displacement(F, K_c, K_b):
+def series_displacement(F, *, K_c, K_b):
     """Extension delta of one contact in series with one ring's bending (paper Eq. 3).
 
     Parameters
@@ -185,7 +185,7 @@ def series_displacement(F, K_c, K_b):
 
     Examples
     --------
-    >>> float(series_displacement(8.0, 1.0, 4.0))  # 8^(2/3) + 8/4
+    >>> float(series_displacement(8.0, K_c=1.0, K_b=4.0))  # 8^(2/3) + 8/4
     6.0
     """
     F = v.nonnegative("F", F, "N")
@@ -196,16 +196,16 @@ def series_displacement(F, K_c, K_b):
     return v.finite_result(delta, "delta", "force and stiffnesses")
 
 
-def series_extension(delta_c, F, K_b):
+def series_extension(F, *, delta_c, K_b):
     """Extension of a contact of any law in series with one ring's bending (paper Eq. 3).
 
     Parameters
     ----------
+    F : array_like
+        Force, N, >= 0.
     delta_c : array_like
         Extension (approach) of the contact at force F, m, >= 0 -- e.g. from a numerical
         contact curve (:func:`ringchain.numerics.contact_curve`).
-    F : array_like
-        Force, N, >= 0.
     K_b : array_like
         Bending stiffness of the ring, N/m.
 
@@ -216,18 +216,18 @@ def series_extension(delta_c, F, K_b):
 
     Examples
     --------
-    >>> float(series_extension(1e-6, 2.0, 1e6))  # 1 um + 2 N / (1 N/um)
+    >>> float(series_extension(2.0, delta_c=1e-6, K_b=1e6))  # 1 um + 2 N / (1 N/um)
     3e-06
     """
-    delta_c = v.nonnegative("delta_c", delta_c, "m")
     F = v.nonnegative("F", F, "N")
+    delta_c = v.nonnegative("delta_c", delta_c, "m")
     K_b = v.positive("K_b", K_b, "N/m")
     with np.errstate(all="ignore"):  # overflow is reported by value
         delta = _series_extension(delta_c, F, K_b)
     return v.finite_result(delta, "the extension", "extensions, forces and bending stiffnesses")
 
 
-def local_exponent(F, K_c, K_b):
+def local_exponent(F, *, K_c, K_b):
     """Local exponent n(F) = d ln F / d ln delta of the series law.
 
     Parameters
@@ -250,7 +250,7 @@ def local_exponent(F, K_c, K_b):
 
     Examples
     --------
-    >>> round(float(local_exponent(8.0, 1.0, 4.0)), 12)  # delta_c = 4, delta_b = 2: w = 1/3, n = 9/7
+    >>> round(float(local_exponent(8.0, K_c=1.0, K_b=4.0)), 12)  # delta_c = 4, delta_b = 2: w = 1/3, n = 9/7
     1.285714285714
     """
     F = v.positive("F", F, "N")
@@ -260,7 +260,7 @@ def local_exponent(F, K_c, K_b):
         return _exponent(F, K_c, K_b)
 
 
-def crossover_force(K_c, K_b):
+def crossover_force(*, K_c, K_b):
     """Force F* = K_b^3/K_c^2 (N) at which contact and bending extensions are equal.
 
     Parameters
@@ -280,12 +280,7 @@ def crossover_force(K_c, K_b):
     return v.finite_result(force, "F*", "stiffnesses")
 
 
-@functools.cache
-def _gauss_legendre(order: int = 64):
-    return np.polynomial.legendre.leggauss(order)
-
-
-def fit_power_law(K_c, K_b, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DEFAULT_FORCE_WINDOW[1]):
+def fit_power_law(*, K_c, K_b, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DEFAULT_FORCE_WINDOW[1]):
     """Least-squares power law F = K delta^n to the series law over [F_min, F_max] (Eq. 4).
 
     Parameters
@@ -320,7 +315,7 @@ def fit_power_law(K_c, K_b, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DEFAULT_FORCE_W
         raise ValueError(
             f"the force window needs F_min < F_max, got F_min = {v.show(F_min)} N and F_max = {v.show(F_max)} N"
         )
-    nodes, weights = _gauss_legendre()
+    nodes, weights = gauss_legendre()
     lo, hi = np.log(F_min)[..., None], np.log(F_max)[..., None]
     log_F = 0.5 * (hi - lo) * nodes + 0.5 * (hi + lo)
     with np.errstate(all="ignore"):
@@ -331,7 +326,7 @@ def fit_power_law(K_c, K_b, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DEFAULT_FORCE_W
     return v.finite_result(K, "the fitted K", reason), v.finite_result(n, "the fitted n", reason)
 
 
-def series_stiffness_for_power_law(K, n, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DEFAULT_FORCE_WINDOW[1]):
+def series_stiffness_for_power_law(*, K, n, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DEFAULT_FORCE_WINDOW[1]):
     """Contact and bending stiffness whose series law reduces to the power law K delta^n (Eqs. 3-4).
 
     The series law delta(F) = (F/K_c)^(2/3) + F/K_b (Eq. 3) can be written
@@ -365,8 +360,8 @@ def series_stiffness_for_power_law(K, n, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DE
 
     Examples
     --------
-    >>> K_c, K_b = series_stiffness_for_power_law(4.9e6, 1.11)
-    >>> K, n = fit_power_law(K_c, K_b)
+    >>> K_c, K_b = series_stiffness_for_power_law(K=4.9e6, n=1.11)
+    >>> K, n = fit_power_law(K_c=K_c, K_b=K_b)
     >>> round(float(K) / 4.9e6, 9), round(float(n), 9)
     (1.0, 1.11)
     """
@@ -380,7 +375,7 @@ def series_stiffness_for_power_law(K, n, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DE
         raise ValueError(f"the force window needs F_min < F_max, got [{F_min:g}, {F_max:g}] N")
 
     def fitted(log_crossover):  # the fit with K_b = 1 N/m, K_c = F*^(-1/2)
-        return fit_power_law(np.exp(-0.5 * log_crossover), 1.0, F_min, F_max)
+        return fit_power_law(K_c=np.exp(-0.5 * log_crossover), K_b=1.0, F_min=F_min, F_max=F_max)
 
     # F* from 1e-12 to 1e12 times the window's geometric mean: n from ~1 to ~1.5.
     centre = 0.5 * (math.log(F_min) + math.log(F_max))
@@ -390,9 +385,12 @@ def series_stiffness_for_power_law(K, n, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DE
                          f"[{F_min:g}, {F_max:g}] N")  # fmt: skip
     log_crossover = brentq(lambda x: float(fitted(x)[1]) - n, low, high, xtol=1e-13, rtol=1e-15)
     K_unit = float(fitted(log_crossover)[0])
-    K_b = (K / K_unit) ** (1.0 / n)
-    K_c = math.sqrt(K_b**3 / math.exp(log_crossover))
-    if not (math.isfinite(K_c) and math.isfinite(K_b)):
+    # In logarithms: K_b^3 overflows for K beyond about 1e100 N/m^n where K_c itself does not.
+    log_K_b = (math.log(K) - math.log(K_unit)) / n
+    with np.errstate(over="ignore"):
+        K_b = float(np.exp(log_K_b))
+        K_c = float(np.exp(1.5 * log_K_b - 0.5 * log_crossover))
+    if not (0.0 < K_c < math.inf and 0.0 < K_b < math.inf):  # beyond the largest double, or below the smallest
         raise ValueError(f"the springs of K = {K:g} N/m^n, n = {n:g} are not representable in double precision")
     return K_c, K_b
 
@@ -410,7 +408,7 @@ def _log_least_squares(log_F, log_delta, weights, n=None):
         return np.exp(mean_y - n * mean_x), n
 
 
-def fit_power_law_to_curve(F, delta, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DEFAULT_FORCE_WINDOW[1], n=None):
+def fit_power_law_to_curve(F, delta, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DEFAULT_FORCE_WINDOW[1], *, n=None):
     """Power law F = K delta^n fitted to a tabulated force-extension curve over [F_min, F_max] (Eq. 4).
 
     Parameters
@@ -458,7 +456,7 @@ def fit_power_law_to_curve(F, delta, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DEFAUL
         raise ValueError(
             f"the force window [{F_min:g}, {F_max:g}] N must lie within the curve's [{F[0]:g}, {F[-1]:g}] N"
         )
-    nodes, weights = _gauss_legendre()
+    nodes, weights = gauss_legendre()
     lo, hi = np.log(F_min), np.log(F_max)
     log_F = 0.5 * (hi - lo) * nodes + 0.5 * (hi + lo)
     log_delta = np.interp(log_F, np.log(F), np.log(delta))
@@ -467,7 +465,7 @@ def fit_power_law_to_curve(F, delta, F_min=DEFAULT_FORCE_WINDOW[0], F_max=DEFAUL
     return float(K), float(n)
 
 
-def n_per_mm_to_si(K, n):
+def n_per_mm_to_si(K, *, n):
     """Convert a power-law prefactor from N/mm^n (the paper's tables) to N/m^n.
 
     Parameters
@@ -484,18 +482,18 @@ def n_per_mm_to_si(K, n):
 
     Examples
     --------
-    >>> float(n_per_mm_to_si(2.0, 1.5) / 1000**1.5)
+    >>> float(n_per_mm_to_si(2.0, n=1.5) / 1000**1.5)
     2.0
     """
     return _convert(K, n, 1.0)
 
 
-def si_to_n_per_mm(K, n):
+def si_to_n_per_mm(K, *, n):
     """Inverse of :func:`n_per_mm_to_si`: K in N/m^n to N/mm^n.
 
     Examples
     --------
-    >>> float(si_to_n_per_mm(2.0 * 1000**1.5, 1.5))
+    >>> float(si_to_n_per_mm(2.0 * 1000**1.5, n=1.5))
     2.0
     """
     return _convert(K, n, -1.0)

@@ -53,8 +53,7 @@ from . import _validate as v
 from . import longwave
 from ._codegen import derived, sp
 from ._forms import power_law, power_law_value
-from .series import _gauss_legendre
-from .special import hyp2f1
+from .special import gauss_legendre, hyp2f1
 
 __all__ = [
     "symbols",
@@ -719,30 +718,12 @@ def _prestress(F_m, F_0, n):
         near = np.broadcast_to(~(numerator >= _ELEMENTARY_FROM), shape)
         if np.any(near):
             F_m_, F_0_, n_ = (np.broadcast_to(value, shape)[near] for value in (F_m, F_0, n))
-            points, weights = _gauss_legendre(_QUADRATURE_POINTS)
+            points, weights = gauss_legendre(_QUADRATURE_POINTS)
             total = 0.0
             for point, weight in zip(0.5 * (points + 1.0), 0.5 * weights, strict=True):
                 total = total + weight * _prestress_integrand(point, F_m_, F_0_, n_)
             factor[near] = total
         return np.sqrt(factor)
-
-
-def _exponent(n):
-    """n as a float array, > 1 (with the reason in the error)."""
-    try:
-        return v.in_range("n", n, 1.0, np.inf)
-    except ValueError as error:
-        raise ValueError(
-            f"{error}: the power-law chain has a compact solitary wave only for n > 1 "
-            "(its profile |sin|^(2/(n-1)) needs n > 1; n = 1 is the linear chain, where pulses disperse)"
-        ) from None
-
-
-def _chain(K, n, a, m=None):
-    out = [v.positive("K", K, "N/m^n"), _exponent(n), v.positive("a", a, "m")]
-    if m is not None:
-        out.append(v.positive("m", m, "kg"))
-    return out
 
 
 def _chain_speed(function, variable, K, n, a, m):
@@ -752,10 +733,10 @@ def _chain_speed(function, variable, K, n, a, m):
         return power_law_value(log_coefficient, exponent, variable)
 
 
-_CHAIN = "force, velocity and chain parameters (K, n, a, m)"
+_CHAIN = "force, velocity and chain parameters (K, n, m, a)"
 
 
-def solitary_wave_speed(F_m, K, n, a, m):
+def solitary_wave_speed(F_m, *, K, n, m, a):
     """Speed of the compact solitary wave of peak contact force F_m (paper Eq. (8)).
 
     Parameters
@@ -766,10 +747,10 @@ def solitary_wave_speed(F_m, K, n, a, m):
         Power-law prefactor, N/m^n (F = K delta^n, paper Eq. 4).
     n : array_like
         Power-law exponent, > 1.
-    a : array_like
-        Distance between adjacent ring centres, m (a = 2(R - r)).
     m : array_like
         Ring mass (the paper uses the effective mass m_eff), kg.
+    a : array_like
+        Distance between adjacent ring centres, m (a = 2(R - r)).
 
     Returns
     -------
@@ -786,16 +767,16 @@ def solitary_wave_speed(F_m, K, n, a, m):
 
     Examples
     --------
-    >>> round(float(solitary_wave_speed(8.0, 1.0, 3.0, 1.0, 1.0)), 6)  # sqrt(1/2) 8^(1/3)
+    >>> round(float(solitary_wave_speed(8.0, K=1.0, n=3.0, m=1.0, a=1.0)), 6)  # sqrt(1/2) 8^(1/3)
     1.414214
     """
     F_m = v.positive("F_m", F_m, "N")
-    chain = _chain(K, n, a, m)
+    chain = v.compact_wave_chain(K, n, a, m)
     v.broadcast_shape(F_m=F_m, K=chain[0], n=chain[1], a=chain[2], m=chain[3])
     return v.finite_result(_chain_speed(_speed, F_m, *chain), "V_s", _CHAIN)
 
 
-def solitary_wave_speed_from_velocity(v_max, K, n, a, m):
+def solitary_wave_speed_from_velocity(v_max, *, K, n, m, a):
     """Speed of the compact solitary wave from its peak ring velocity v_max (App. B).
 
     Parameters
@@ -806,8 +787,8 @@ def solitary_wave_speed_from_velocity(v_max, K, n, a, m):
         away from the impact) the rings of a wave running towards +x move towards -x,
         u_t = -V_s xi, so the signed v_max of App. B is negative; a measured peak speed
         |v_max| > 0 gives the same V_s, and so does a wave running towards -x (v_max > 0).
-    K, n, a, m : array_like
-        Chain: prefactor (N/m^n), exponent (> 1), spacing (m), mass (kg), as in
+    K, n, m, a : array_like
+        Chain: prefactor (N/m^n), exponent (> 1), mass (kg), spacing (m), as in
         :func:`solitary_wave_speed`.
 
     Returns
@@ -824,9 +805,9 @@ def solitary_wave_speed_from_velocity(v_max, K, n, a, m):
 
     Examples
     --------
-    >>> round(float(solitary_wave_speed_from_velocity(-1.0, 1.0, 3.0, 1.0, 1.0)), 6)  # (1/2)^(1/4)
+    >>> round(float(solitary_wave_speed_from_velocity(-1.0, K=1.0, n=3.0, m=1.0, a=1.0)), 6)  # (1/2)^(1/4)
     0.840896
-    >>> round(float(solitary_wave_speed_from_velocity(1.0, 1.0, 3.0, 1.0, 1.0)), 6)  # the magnitude: same speed
+    >>> round(float(solitary_wave_speed_from_velocity(1.0, K=1.0, n=3.0, m=1.0, a=1.0)), 6)  # the magnitude: same speed
     0.840896
     """
     v_max = v.as_float("v_max", v_max)
@@ -836,12 +817,12 @@ def solitary_wave_speed_from_velocity(v_max, K, n, a, m):
             "v_max must be nonzero (m/s), got 0: it is the peak ring velocity of the wave (either sign; "
             "App. B's signed value is negative for a wave running away from the impact)"
         )
-    chain = _chain(K, n, a, m)
+    chain = v.compact_wave_chain(K, n, a, m)
     v.broadcast_shape(v_max=v_max, K=chain[0], n=chain[1], a=chain[2], m=chain[3])
     return v.finite_result(_chain_speed(_speed_from_velocity, speed, *chain), "V_s", _CHAIN)
 
 
-def solitary_wave_width(n, a):
+def solitary_wave_width(*, n, a):
     """Length of the support of the compact solitary wave, pi/omega (App. B).
 
     Parameters
@@ -859,10 +840,10 @@ def solitary_wave_width(n, a):
 
     Examples
     --------
-    >>> round(float(solitary_wave_width(1.5, 1.0)), 4)  # Hertz: 5 pi/sqrt(10), about five spacings
+    >>> round(float(solitary_wave_width(n=1.5, a=1.0)), 4)  # Hertz: 5 pi/sqrt(10), about five spacings
     4.9673
     """
-    n = _exponent(n)
+    n = v.compact_wave_exponent(n)
     a = v.positive("a", a, "m")
     v.broadcast_shape(n=n, a=a)
     with np.errstate(all="ignore"):
@@ -870,7 +851,7 @@ def solitary_wave_width(n, a):
     return v.finite_result(width, "the width", "exponent and spacing")
 
 
-def solitary_wave_profile(x, F_m, K, n, a):
+def solitary_wave_profile(x, *, F_m, K, n, a):
     """Contact-force profile of the compact solitary wave, zero outside its support.
 
     Parameters
@@ -901,19 +882,19 @@ def solitary_wave_profile(x, F_m, K, n, a):
 
     Examples
     --------
-    >>> [round(float(F), 6) for F in solitary_wave_profile([0.0, 1.0, 3.0], 2.0, 1.0, 1.5, 1.0)]
+    >>> [round(float(F), 6) for F in solitary_wave_profile([0.0, 1.0, 3.0], F_m=2.0, K=1.0, n=1.5, a=1.0)]
     [2.0, 0.550693, 0.0]
     """
     x = v.as_float("x", x)
     F_m = v.positive("F_m", F_m, "N")
-    K, n, a = _chain(K, n, a)
+    K, n, a = v.compact_wave_chain(K, n, a)
     v.broadcast_shape(x=x, F_m=F_m, K=K, n=n, a=a)
     with np.errstate(all="ignore"):
         profile = _profile(x, F_m, K, n, a)
     return v.finite_result(profile, "the profile", "positions, force and chain parameters")
 
 
-def solitary_wave_speed_prestressed(F_m, F_0, K, n, a, m):
+def solitary_wave_speed_prestressed(F_m, *, F_0, K, n, m, a):
     """Speed of the solitary wave on a chain pre-stretched by a static contact force F_0.
 
     Parameters
@@ -923,8 +904,8 @@ def solitary_wave_speed_prestressed(F_m, F_0, K, n, a, m):
     F_0 : array_like
         Static contact force far from the wave, N, >= 0 (in a hanging chain, the weight
         of the rings below the contact).
-    K, n, a, m : array_like
-        Chain: prefactor (N/m^n), exponent (> 1), spacing (m), mass (kg), as in
+    K, n, m, a : array_like
+        Chain: prefactor (N/m^n), exponent (> 1), mass (kg), spacing (m), as in
         :func:`solitary_wave_speed`.
 
     Returns
@@ -948,14 +929,14 @@ def solitary_wave_speed_prestressed(F_m, F_0, K, n, a, m):
 
     Examples
     --------
-    >>> round(float(solitary_wave_speed_prestressed(8.0, 0.0, 1.0, 3.0, 1.0, 1.0)), 6)
+    >>> round(float(solitary_wave_speed_prestressed(8.0, F_0=0.0, K=1.0, n=3.0, m=1.0, a=1.0)), 6)
     1.414214
-    >>> round(float(solitary_wave_speed_prestressed(8.0, 8.0, 1.0, 3.0, 1.0, 1.0)), 6)  # sqrt(3) 8^(1/3)
+    >>> round(float(solitary_wave_speed_prestressed(8.0, F_0=8.0, K=1.0, n=3.0, m=1.0, a=1.0)), 6)  # sqrt(3) 8^(1/3)
     3.464102
     """
     F_m = v.positive("F_m", F_m, "N")
     F_0 = v.nonnegative("F_0", F_0, "N")
-    chain = _chain(K, n, a, m)
+    chain = v.compact_wave_chain(K, n, a, m)
     v.broadcast_shape(F_m=F_m, F_0=F_0, K=chain[0], n=chain[1], a=chain[2], m=chain[3])
     if np.any(F_0 > F_m):
         excess = np.broadcast_to(F_0, np.broadcast_shapes(F_0.shape, F_m.shape))[F_0 > F_m]

@@ -18,9 +18,11 @@ identities against mpmath.
 
 from __future__ import annotations
 
+import functools
+
 from ._codegen import sp
 
-__all__ = ["carlson_rf", "carlson_rd", "hyp2f1", "beta", "exp_of_log"]
+__all__ = ["carlson_rf", "carlson_rd", "hyp2f1", "beta", "exp_of_log", "gauss_legendre"]
 
 
 def _scipy_function(name: str, scipy_name: str, nargs: int, mpmath_name: str, module="scipy.special", **extra):
@@ -103,3 +105,11 @@ def beta(x, y):
         return sp.gamma(x) * sp.gamma(y) / sp.gamma(x + y)
 
     return _cls("B", "beta", 2, "beta", _eval_rewrite_as_gamma=_eval_rewrite_as_gamma)(x, y)
+
+
+@functools.cache
+def gauss_legendre(order: int = 64):
+    """Nodes and weights of the ``order``-point Gauss-Legendre rule on [-1, 1] (computed once per order)."""
+    import numpy as np
+
+    return np.polynomial.legendre.leggauss(order)

@@ -125,7 +125,7 @@ def test_from_paper_stiffness_sources(aspect_ratio):
     # "table": the dual-spring springs reduce to Table I's power law over 1-100 N (Eq. 4, fitted
     # by the theory's own fit_power_law): K by hand from N/mm^n, n as printed.
     dual = paper_chain("dual-spring", aspect_ratio, stiffness="table")
-    K, n_fit = fit_power_law(dual.K_c, dual.K_b)
+    K, n_fit = fit_power_law(K_c=dual.K_c, K_b=dual.K_b)
     assert float(K) == pytest.approx(K_mm * 1000.0**n, rel=1e-9)  # root finding to 1e-13 in ln F*
     assert float(n_fit) == pytest.approx(n, rel=1e-9)
     assert dual.n == 1.5 and dual.m == paper_chain("power-law", aspect_ratio).m

@@ -50,9 +50,9 @@ def test_ring_prints_everything_about_one_contact(capsys):
     assert number_after("(Eq. 2)", out) == pytest.approx(ring.K_b, rel=5e-5)
     assert number_after("K_b^3/K_c^2", out) == pytest.approx(ring.crossover_force, rel=5e-4)  # 4 figures
     assert number_after("N/m^n, n =", out) == pytest.approx(n, rel=5e-4)  # 4 decimals
-    assert number_after("(Eq. 4)  K =", out) == pytest.approx(si_to_n_per_mm(K, n), rel=5e-5)  # 5 figures
+    assert number_after("(Eq. 4)  K =", out) == pytest.approx(si_to_n_per_mm(K, n=n), rel=5e-5)  # 5 figures
     assert number_after("um, local exponent", out) == pytest.approx(ring.local_exponent(10.0), rel=5e-4)
-    V_s = solitary_wave_speed(10.0, K, n, ring.spacing, ring.mass)
+    V_s = solitary_wave_speed(10.0, K=K, n=n, m=ring.mass, a=ring.spacing)
     assert number_after("V_s =", out) == pytest.approx(V_s, rel=5e-4)  # 4 figures
     # The crossover sits where contact and bending extensions are equal: n = 6/5 there.
     assert "local exponent there 1.2000" in out
@@ -60,8 +60,9 @@ def test_ring_prints_everything_about_one_contact(capsys):
 
 
 def test_ring_of_oblique_contact_and_of_a_pair_that_cannot_form_a_chain(capsys):
-    code, out, _ = run(capsys, "ring", "--R", "7e-3", "--r", "2.5e-3", "--angle", "80")
-    assert code == 0
+    # Up to 10 N the ellipse stays within the half-space limit (0.049 r; at 100 N it is 0.11 r, flagged).
+    code, out, _ = run(capsys, "ring", "--R", "7e-3", "--r", "2.5e-3", "--angle", "80", "--window", "1", "10")
+    assert code == 0 and "Hertz contact (Eq. 1)" in out
     assert "no: R/r < 3" in out
     # arccos(1 - 2r/R) for R/r = 2.8: the smallest angle with one Hertz contact.
     assert number_after("single Hertz contact above", out) == pytest.approx(math.degrees(math.acos(1 - 2 / 2.8)),
@@ -69,13 +70,41 @@ def test_ring_of_oblique_contact_and_of_a_pair_that_cannot_form_a_chain(capsys):
 
 
 def test_ring_below_theta_min_uses_the_numerical_contact(capsys):
-    from ringchain.numerics import angle_power_law
+    from ringchain.numerics import contact_at_angle
 
     code, out, _ = run(capsys, "ring", "--R", "22.5e-3", "--r", "2.5e-3", "--angle", "30", "--window", "1", "30")
     assert code == 0 and "two patches (BEM" in out
     ring = Ring.from_aspect_ratio(9.0)
-    row = angle_power_law(ring.R, ring.r, ring.material.E, ring.material.nu, math.radians(30), ring.K_b, (1.0, 30.0))
-    assert number_after(", n = ", out) == pytest.approx(row.n, abs=5e-5)  # printed to 4 decimals
+    contact = contact_at_angle(ring.R, ring.r, ring.material.E, ring.material.nu, math.radians(30), K_b=ring.K_b,
+                               window=(1.0, 30.0), forces=[10.0])  # fmt: skip
+    assert number_after(", n = ", out) == pytest.approx(contact.n, abs=5e-5)  # printed to 4 decimals
+
+
+def test_ring_hands_over_where_the_ellipse_leaves_the_half_space(capsys):
+    # Issue 24, item 3: 39 deg is above theta_min (38.94), but the ellipse at 100 N is 1.0 r long: the single
+    # ellipse's K_c (8.8e10, growing without bound towards theta_min) is not printed; the numerical contact is,
+    # and it too is beyond the half-space limit: flagged with exit code 1 and one line on stderr (item 4).
+    code, out, err = run(capsys, "ring", "--R", "22.5e-3", "--r", "2.5e-3", "--angle", "39")
+    assert code == 1 and "one patch (BEM" in out and "Hertz contact (Eq. 1)" not in out
+    assert 5e10 < number_after("tilt 0.0 deg)", out) < 1e11  # 6.8e10 from the boundary elements
+    assert "above 55.84 deg" in out  # where Hertz's ellipse stays within 0.1 r up to 100 N
+    assert err.count("\n") == 1 and err.startswith("ringchain ring: warning: the contact reaches 0.57 r")
+    assert "keep --window's F_MAX and --force below about 0.147 N" in err  # 0.1 r, extrapolated as F^(1/3)
+
+
+def test_ring_flags_a_numerical_contact_beyond_its_limit(capsys):
+    # The issue's case of item 4: "contact up to 1.93 r" at 12.85 deg was printed with exit code 0.
+    code, out, err = run(capsys, "ring", "--R", "22.5e-3", "--r", "2.5e-3", "--angle", "12.85")
+    assert code == 1 and "contact up to 1.93 r at 100 N" in out
+    assert err.count("\n") == 1 and "beyond the half-space limit 0.1 r" in err
+
+
+@pytest.mark.parametrize(("angle", "window"), [("30", "1e4"), ("13", "3000"), ("20", "1e5")])
+def test_ring_contacts_round_the_tube_are_one_line(capsys, angle, window):
+    # The issue's cases of item 12: a traceback, "ray casting onto the torus did not converge".
+    code, out, err = run(capsys, "ring", "--R", "22.5e-3", "--r", "2.5e-3", "--angle", angle, "--window", "1", window)
+    assert_one_line_error(code, out, err, f"--angle {angle} deg, --force 10 N and --window 1 {float(window):g} N: "
+                                          f"the contact reaches round the tube at {float(window):.3g} N")  # fmt: skip
 
 
 @pytest.mark.parametrize(
@@ -83,7 +112,7 @@ def test_ring_below_theta_min_uses_the_numerical_contact(capsys):
     [
         (["--R", "4e-3", "--r", "2.5e-3"], "R must exceed 2 r"),
         (["--R", "22.5e-3", "--r", "2.5e-3", "--angle", "10"], "2 arcsin(r/R)"),
-        (["--R", "22.5e-3", "--r", "2.5e-3", "--angle", "30", "--force", "300"], "within the --window"),
+        (["--R", "22.5e-3", "--r", "2.5e-3", "--angle", "12.8"], "curves away from the contact points"),
         (["--R", "-1"], "R must be positive"),
         (["--R", "abc"], "argument --R: invalid float value: 'abc'"),
         (["--r", "2.5e-3"], "the following arguments are required: --R"),
@@ -203,20 +232,19 @@ def test_paper_prints_the_key_numbers_beside_the_papers_and_writes_figures(capsy
     assert float(cells[5]) == pytest.approx(n, rel=5e-4)
     assert cells[6:9] == ["2284", "1.11", "Table"]
     assert row("3.1 ")[7] == "1.418"  # the paper's Abaqus exponent
-    # Angles: Table II's 30 degrees lies below arccos(1 - 2/9) = 38.9 degrees: no single Hertz contact.
-    assert "no single Hertz contact below 38.9 deg" in out
+    # Angles, each contact as `ringchain ring` chooses it: Hertz's ellipse where it stays within the half-space
+    # limit up to 100 N (above 55.84 deg), the numerical contact elsewhere (Table II's 30 deg: two patches).
+    assert "above 55.84 deg" in out and "a single contact exists above 38.94 deg" in out
     angle60 = Ring.from_aspect_ratio(9.0, angle=math.radians(60.0)).power_law()[1]
-    assert float(row("60 ")[4]) == pytest.approx(angle60, rel=5e-4)
-    # ... and the numerical contact at every angle: at 60 degrees it reproduces Hertz, at 30 it alone gives numbers.
-    assert float(row("60 ")[6]) == pytest.approx(angle60, abs=2e-3)  # BEM: Hertz to 0.2 % in force
-    (cells,) = [line.split() for line in lines if line.split()[:2] == ["30", "n/a"]]
-    assert cells[1:5] == ["n/a"] * 4 and 1.0 < float(cells[6]) < 1.5 and cells[7:] == ["4030", "1.18"]
+    assert row("60 ")[1] == "Hertz" and float(row("60 ")[5]) == pytest.approx(angle60, rel=5e-4)
+    (cells,) = [line.split() for line in lines if line.split()[:2] == ["30", "BEM,"]]
+    assert cells[2:4] == ["2", "patches"] and 1.0 < float(cells[7]) < 1.5 and cells[9:] == ["4030", "1.18"]
     # V_s (Eq. (8)) for every row of Tables I and II, at 1, 10 and 100 N.
     for aspect, (K_mm, n_t, ratio) in paper_data.TABLE_I.items():
         ring = Ring.from_aspect_ratio(aspect)
         cells = row(f"Table I R/r = {aspect:g} ")
-        expected = solitary_wave_speed(np.array([1.0, 10.0, 100.0]), K_mm * 1000.0**n_t, n_t, ring.spacing,
-                                       ratio * ring.mass)  # fmt: skip
+        expected = solitary_wave_speed(np.array([1.0, 10.0, 100.0]), K=K_mm * 1000.0**n_t, n=n_t, m=ratio * ring.mass,
+                                       a=ring.spacing)  # fmt: skip
         np.testing.assert_allclose([float(c) for c in cells[-3:]], expected, rtol=5e-4)  # 4 figures
     assert len([line for line in lines if line.strip().startswith("Table II ")]) == len(paper_data.TABLE_II)
     # The experiment: both models, peak forces and times of flight.
@@ -242,9 +270,19 @@ def test_help_exits_0_and_no_subcommand_exits_2(capsys):
     code, out, _ = run(capsys, "--help")
     assert code == 0 and all(name in out for name in ("paper", "ring", "simulate", "sweep", "ensemble", "cache"))
     code, out, err = run(capsys)
-    assert_one_line_error(
-        code, out, err, "the following arguments are required: {paper,ring,simulate,sweep,ensemble,cache,fit}"
-    )
+    required = "the following arguments are required: {paper,ring,simulate,sweep,ensemble,cache,fit,sheet}"
+    assert_one_line_error(code, out, err, required)
+
+
+def test_version_is_the_package_version_in_one_line(capsys):
+    # Issue 24, item 17: `ringchain --version` was refused as a missing subcommand.
+    from importlib.metadata import version
+
+    code, out, err = run(capsys, "--version")
+    assert (code, out, err) == (0, f"ringchain {version('ringchain')}\n", "")
+    script = Path(sys.executable).with_name("ringchain")
+    done = subprocess.run([script, "--version"], capture_output=True, text=True)
+    assert (done.returncode, done.stdout, done.stderr) == (0, f"ringchain {version('ringchain')}\n", "")
 
 
 def test_console_script_exit_codes():
@@ -462,7 +500,8 @@ class Listener:
     """A TCP server on 127.0.0.1 that is not a Dask scheduler; it stops when the test ends.
 
     ``banner`` speaks first (as an SSH server does); ``http`` waits for a request and
-    answers 400 to any bytes (an HTTP server); ``silent`` accepts and never says a word.
+    answers 400 to any bytes (an HTTP server); ``silent`` accepts and never says a word;
+    ``closing`` accepts and closes the connection at once.
     """
 
     def __init__(self, kind):
@@ -487,6 +526,8 @@ class Listener:
             conn.settimeout(0.1)
             if self.kind == "banner":
                 conn.sendall(b"SSH-2.0-OpenSSH_9.6\r\n")
+            if self.kind == "closing":
+                conn.close()
             if self.kind == "http":
                 while not self.stop.is_set():
                     try:
@@ -521,9 +562,13 @@ def sweep_on_dask(address, timeout=None):
 @pytest.mark.parametrize(
     ("listener", "reason"),
     [
-        ("banner", "accepts connections, but it speaks another protocol (it sent b'SSH-2.0-'...)"),
+        (
+            "banner",
+            "accepts connections, but it speaks another protocol (its first message is not one distributed can read)",
+        ),
         ("http", "accepts connections, but it sent nothing within 2 s, while a Dask scheduler greets at once"),
         ("silent", "accepts connections, but it sent nothing within 2 s"),
+        ("closing", "accepts connections, but it closed the connection without a Dask handshake"),
     ],
     indirect=["listener"],
 )

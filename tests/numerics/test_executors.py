@@ -121,3 +121,27 @@ def test_a_dead_worker_is_reported_with_what_to_do():
 )
 def test_dask_addresses_are_read_as_dask_reads_them(address, host_port):
     assert executors._tcp_host_port(address) == host_port
+
+
+def test_the_scheduler_check_reads_the_greeting_through_distributeds_comm_layer(monkeypatch):
+    # Issue 24, item 19: the greeting was decoded by hand (frame lengths with struct, msgpack type bytes),
+    # a copy of distributed's wire format; it is now read by distributed's own TCP comm.
+    import asyncio
+
+    from distributed import LocalCluster
+    from distributed.comm.tcp import TCP
+
+    read = TCP.read
+    reads = []
+
+    async def spy(self, *args, **kwargs):
+        reads.append((self.peer_address, asyncio.get_running_loop()))
+        return await read(self, *args, **kwargs)
+
+    monkeypatch.setattr(TCP, "read", spy)
+    with LocalCluster(
+        n_workers=0, processes=False, protocol="tcp", host="127.0.0.1", dashboard_address=None
+    ) as cluster:
+        executors.check_dask_scheduler(cluster.scheduler_address, timeout=5.0)  # a scheduler: no error
+        ours = [peer for peer, loop in reads if loop is not cluster.loop.asyncio_loop]  # not the cluster's own comms
+    assert ours == [cluster.scheduler_address]  # one read, of the scheduler's greeting, through TCP.read

@@ -148,7 +148,7 @@ def test_static_fits_recover_exact_laws_with_and_without_offset():
         if offset:
             assert fit.values["delta0"] == pytest.approx(offset, rel=1e-4)
         F = np.linspace(1.0, 100.0, 40)
-        fit = fit_static(series_displacement(F, RING.K_c, RING.K_b) + offset, F, "series", offset=bool(offset))
+        fit = fit_static(series_displacement(F, K_c=RING.K_c, K_b=RING.K_b) + offset, F, "series", offset=bool(offset))
         assert fit.values["K_c"] == pytest.approx(RING.K_c, rel=1e-5)
         assert fit.values["K_b"] == pytest.approx(RING.K_b, rel=1e-6)
 
@@ -156,7 +156,7 @@ def test_static_fits_recover_exact_laws_with_and_without_offset():
 def test_static_information_criterion_tells_the_laws_apart():
     rng = np.random.default_rng(3)
     F = np.linspace(1.0, 100.0, 60)
-    delta = series_displacement(F, RING.K_c, RING.K_b)
+    delta = series_displacement(F, K_c=RING.K_c, K_b=RING.K_b)
     noisy = F + 0.2 * rng.standard_normal(F.size)  # 0.2 % of the largest force
     power, series = fit_static(delta, noisy, "power-law"), fit_static(delta, noisy, "series")
     # The series law generated the data: its AIC and BIC are lower by far more than the ~2 that
@@ -208,7 +208,7 @@ def test_static_rejects_bad_input():
 def test_speed_amplitude_recovers_m_eff_and_n():
     F = np.geomspace(2.0, 150.0, 15)
     m0 = RING.mass
-    V = solitary_wave_speed(F, K_TABLE, N_TABLE, RING.spacing, 0.37 * m0)
+    V = solitary_wave_speed(F, K=K_TABLE, n=N_TABLE, m=0.37 * m0, a=RING.spacing)
     fit = fit_speed_amplitude(F, V, K=K_TABLE, n=N_TABLE, a=RING.spacing, m0=m0, start=0.6)
     assert fit.values["m_eff_ratio"] == pytest.approx(0.37, rel=1e-7)  # exact data: solver tolerance
     # V^2 is proportional to 1/m_eff at fixed F: a speed 1 % too high means m_eff 2 % too low.
@@ -282,7 +282,7 @@ def test_forward_model_batched_agrees_with_one_run_at_a_time():
     converged = simulate_parameter_sets(chains, speeds, [True, False], t, rings, batched=False, rtol=1e-11)
     for b, s, c in zip(batched, single, converged, strict=True):
         peak = np.abs(c).max()
-        # At FIT_RTOL = 1e-8 both are within ~2e-7 of the peak of the converged forces (measured);
+        # At FIT_RTOL = 1e-9 both are within ~5e-7 of the peak of the converged forces (measured);
         # 2e-6 is the accuracy FIT_RTOL documents, with a margin.
         assert np.abs(s - c).max() < 2e-6 * peak
         assert np.abs(b - c).max() < 2e-6 * peak

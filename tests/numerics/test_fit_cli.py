@@ -67,14 +67,16 @@ def test_fit_static_compares_the_two_laws(capsys, tmp_path):
     F = np.linspace(1.0, 100.0, 50)
     noisy = F + 0.1 * np.random.default_rng(2).standard_normal(F.size)
     path = tmp_path / "static.csv"
-    delta = series_displacement(F, RING.K_c, RING.K_b)
+    delta = series_displacement(F, K_c=RING.K_c, K_b=RING.K_b)
     rows = "".join(f"{d!r},{f!r}\n" for d, f in zip(delta.tolist(), noisy.tolist(), strict=True))
     path.write_text("# series law of the R/r = 9 ring\ndisplacement_m,force_N\n" + rows)
     plot = tmp_path / "static.png"
     code, out, _ = run(capsys, "fit", "static", path, "--plot", plot)
     assert code == 0
     assert "static power-law fit" in out and "static series fit" in out
-    assert "the data support the series law" in out
+    # One line naming both laws by their equations (issue 24, item 15: "than the power-law law's").
+    assert "the data support the series law (Eq. 3): its AIC is lower by " in out
+    assert "than that of the power law (Eq. 4)" in out and "law law" not in out
     assert plot.read_bytes().startswith(PNG_MAGIC)
     code, out, _ = run(capsys, "fit", "static", path, "--model", "series", "--offset", "--json")
     data = json.loads(out)
@@ -86,7 +88,7 @@ def test_fit_static_compares_the_two_laws(capsys, tmp_path):
 def test_fit_speed_from_speed_amplitude_pairs(capsys, tmp_path):
     K, n = RING.power_law()
     F = np.geomspace(2.0, 100.0, 12)
-    V = solitary_wave_speed(F, K, n, RING.spacing, 0.35 * RING.mass)
+    V = solitary_wave_speed(F, K=K, n=n, m=0.35 * RING.mass, a=RING.spacing)
     path = tmp_path / "speeds.csv"
     path.write_text("peak_force_N,speed_m_s\n" + "".join(f"{f!r},{v!r}\n" for f, v in zip(F.tolist(), V.tolist(),
                                                                                            strict=True)))  # fmt: skip

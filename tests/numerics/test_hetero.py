@@ -187,7 +187,7 @@ def test_each_contact_from_the_two_rings_it_joins():
 def test_power_law_contacts_fit_the_series_law_of_contact_and_ring_below():
     chain = Chain.from_rings([NINE, SIX, SIX], model="power-law", support="free")
     steel = (NINE.material.E, NINE.material.nu)
-    K, n = fit_power_law(hertz_stiffness_pair(NINE.R, NINE.r, *steel, SIX.R, SIX.r, *steel), NINE.K_b)
+    K, n = fit_power_law(K_c=hertz_stiffness_pair(NINE.R, NINE.r, *steel, SIX.R, SIX.r, *steel), K_b=NINE.K_b)
     assert (chain.K[0], chain.n[0]) == (float(K), float(n))
     assert (chain.K[1], chain.n[1]) == SIX.power_law()
 
@@ -243,7 +243,7 @@ def test_ring_by_ring_constructors_name_the_bad_input(call, message):
 @pytest.mark.parametrize(("stiffness", "mass"), [(4.0, 1.0), (0.25, 1.0), (1.0, 3.0)])
 def test_small_pulse_at_a_junction_against_the_impedance_theory(model, stiffness, mass):
     K1 = 4.9e6 if model == "power-law" else 7.5e9
-    reading = junction_pulse(model, (K1, stiffness * K1), (8e-3, mass * 8e-3))
+    reading = junction_pulse(model, K=(K1, stiffness * K1), m=(8e-3, mass * 8e-3))
     R, T, R_theory, T_theory = reading.R, reading.T, reading.R_theory, reading.T_theory
     assert abs(R_theory) > 0.04  # a junction that reflects
     # Long-wave theory against a pulse 4 rings wide (dispersion ~ (a/w)^2/24 ~ 0.3 %) of 2 % of the
@@ -251,6 +251,15 @@ def test_small_pulse_at_a_junction_against_the_impedance_theory(model, stiffness
     # the incident force covers both (measured up to 0.72 %, R of the power-law chain with m2 = 3 m1).
     assert R == pytest.approx(R_theory, abs=0.01)
     assert T == pytest.approx(T_theory, abs=0.01)
+
+
+def test_junction_pulse_takes_the_chains_by_keyword():
+    # Issue 24, item 7: K and m are both pairs of positive numbers (a swap would pass silently), and the
+    # static force is spelled F_0 as in the theory.
+    with pytest.raises(TypeError):
+        junction_pulse("power-law", (4.9e6, 4.9e6), (8e-3, 8e-3))
+    with pytest.raises(TypeError):
+        junction_pulse("power-law", K=(4.9e6, 4.9e6), m=(8e-3, 8e-3), F0=5.0)
 
 
 # -- several chains of one layout as one network (Network.stack) --------------------------------------

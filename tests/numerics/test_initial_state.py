@@ -31,16 +31,16 @@ def test_the_hanging_equilibrium_stays_at_rest(method):
 def test_a_pre_stretched_free_chain_without_gravity_unloads_from_its_free_end():
     """Uniform tension, fixed top, free bottom, no gravity: the bottom ring is pulled up, the middle waits."""
     chain = Chain.power_law(60, K=1e9, n=1.5, m=0.01, a=0.04)
-    F0 = 2.0
-    x0 = chain.displacement_from_extension(np.full(chain.network().n_links, (F0 / chain.K) ** (1 / chain.n)))
+    F_0 = 2.0
+    x0 = chain.displacement_from_extension(np.full(chain.network().n_links, (F_0 / chain.K) ** (1 / chain.n)))
     u0 = np.zeros(chain.n_sites)
-    speed = 0.04 * np.sqrt(1.5 * chain.K ** (1 / 1.5) * F0 ** (1 / 3) / chain.m)  # linear sound speed at F0
+    speed = 0.04 * np.sqrt(1.5 * chain.K ** (1 / 1.5) * F_0 ** (1 / 3) / chain.m)  # linear sound speed at F_0
     t_end = 15 * chain.a / speed  # the unloading reaches about ring 15
     sim = simulate(chain, t_end, initial=(x0, u0), gravity=False, n_samples=51)
     assert sim.u[-1, 0] > 0  # the free end moves up, into the chain
     # Ahead of the front the lattice only feels a precursor that falls off faster than exponentially
-    # (2e-8 of F0 at 10 rings ahead, measured); 20 rings ahead nothing has moved to the solver's tolerance.
-    np.testing.assert_allclose(sim.contact_force[:, 35:], F0, rtol=1e-9)
+    # (2e-8 of F_0 at 10 rings ahead, measured); 20 rings ahead nothing has moved to the solver's tolerance.
+    np.testing.assert_allclose(sim.contact_force[:, 35:], F_0, rtol=1e-9)
 
 
 def test_batch_rows_and_a_shared_row():

@@ -323,8 +323,9 @@ def test_the_stability_limit_is_that_of_verlet_on_a_linear_chain():
 
 @pytest.mark.parametrize(
     ("options", "drift"),
-    # Returned before: dt = 3e-5 s (10 steps per period) with the energy off by 8%, rtol = 1e-3 by 5%.
-    [(dict(method="verlet", dt=3e-5), "0.0[1-9]"), (dict(rtol=1e-3), r"0\.0[1-9]")],
+    # Returned before: dt = 3e-5 s (10 steps per period) with the energy off by 8%, LSODA at rtol = 1e-3
+    # by 5% (the max-norm control of the default dopri5 keeps the energy within 1% even there).
+    [(dict(method="verlet", dt=3e-5), "0.0[1-9]"), (dict(method="odeint", rtol=1e-3), r"0\.0[1-9]")],
 )
 def test_energy_drift_stops_an_inaccurate_run(options, drift):
     with pytest.raises(IntegrationError, match=f"total energy drifted by {drift}"):

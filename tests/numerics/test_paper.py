@@ -1,5 +1,8 @@
 """The paper module: one source of stiffness for both models, the tables and figures of ``ringchain paper``."""
 
+import math
+
+import pytest
 from ringchain import numerics
 from ringchain.numerics import paper
 from ringchain.numerics.cli import main
@@ -44,4 +47,21 @@ def test_tables_are_plain_data_the_book_can_show():
     speeds = paper.speed_table(forces=[10.0])
     assert speeds.headers[-1] == "V_s(10 N) (m/s)" and len(speeds.rows) == len(paper_data.TABLE_I) + len(
         paper_data.TABLE_II)  # fmt: skip
-    assert any("no single Hertz contact" in note for note in paper.angle_table().notes)  # 30 deg, Table II
+
+
+def test_the_angle_table_takes_each_contact_from_contact_at_angle():
+    # Issue 24, item 3: one choice between the Hertz ellipse and the numerical contact, shared with `ringchain ring`.
+    from ringchain.numerics import contact_at_angle
+    from ringchain.theory import STAINLESS_STEEL_304, Ring
+
+    table = paper.angle_table()
+    ring = Ring.from_aspect_ratio(paper_data.TABLE_II_ASPECT_RATIO, r=paper_data.TUBE_RADIUS)
+    rows = {row[0]: row for row in table.rows}
+    for angle_deg, method in ((90.0, "Hertz"), (60.0, "Hertz"), (30.0, "BEM, 2 patches")):
+        contact = contact_at_angle(ring.R, ring.r, STAINLESS_STEEL_304.E, STAINLESS_STEEL_304.nu,
+                                   math.radians(angle_deg), K_b=ring.K_b)  # fmt: skip
+        row = rows[f"{angle_deg:.0f}"]
+        assert row[1] == method
+        assert float(row[2]) == pytest.approx(contact.K_c, rel=5e-5)  # printed to 5 figures
+        assert float(row[5]) == pytest.approx(contact.n, abs=5e-4)  # 3 decimals
+    assert any("above 55.84 deg" in note for note in table.notes)  # the handover for 1-100 N

@@ -38,7 +38,7 @@ def test_slender_ring_frequencies_are_the_classical_ones(kind):
 def test_elements_converge_to_the_continuous_ring():
     """Against the continuum frequencies of the same beam theory (theory.ring_frequencies), at R/r = 9."""
     orders = np.arange(2, 7)
-    exact = np.array([ring_frequencies(R_PAPER, r_PAPER, E, NU, RHO, k)[0] for k in orders])
+    exact = np.array([ring_frequencies(R_PAPER, r_PAPER, E, NU, rho=RHO, k=k)[0] for k in orders])
     errors = [RingModel(R_PAPER, r_PAPER, elements=n).frequencies(order=orders) / exact - 1 for n in (32, 64)]
     assert np.all(errors[0] > 0) and np.all(errors[1] > 0)  # consistent mass: upper bounds
     # Second order in the element angle (the tangential field is interpolated linearly, as a bar's):

@@ -4,9 +4,9 @@ A power-law chain, undamped, without gravity and free at both ends, is struck at
 (``impact_velocity``).  A solitary wave forms within a few widths and then travels
 unchanged; between contacts 100 and 200 of a 300-ring chain we measure its peak force
 F_m, its speed (time of flight between the force peaks) and its full width at half
-maximum, and compare them with ``solitary_wave_speed(F_m, K, n, a, m)`` and the FWHM of
+maximum, and compare them with ``solitary_wave_speed(F_m, K=K, n=n, m=m, a=a)`` and the FWHM of
 ``solitary_wave_profile`` (the compact force profile, of support
-``solitary_wave_width(n, a)``).
+``solitary_wave_width(n=n, a=a)``).
 
 The long-wave theory is an expansion in eps = a/L, L the support length of the wave;
 the lattice differs from it by its long-wave error, which we measured (velocity Verlet,
@@ -41,10 +41,10 @@ def theory_fwhm(F_m, K, n, a):
     """Full width at half maximum of the compact force profile (App. B), m: the profile
     is even and falls monotonically from its centre, so it is twice the root of F = F_m/2
     on the half support."""
-    half_support = 0.5 * float(solitary_wave_width(n, a))
+    half_support = 0.5 * float(solitary_wave_width(n=n, a=a))
 
     def excess(x):
-        return float(solitary_wave_profile(x, F_m, K, n, a)) - 0.5 * F_m
+        return float(solitary_wave_profile(x, F_m=F_m, K=K, n=n, a=a)) - 0.5 * F_m
 
     return 2.0 * brentq(excess, 0.0, half_support, xtol=1e-14 * a)
 
@@ -53,7 +53,7 @@ def measure(K, n, m, a, impact_velocity):
     chain = Chain.power_law(N_RINGS, K, n, m, a, support="free")
     # Long enough for the wave to pass contact FAR, not to reach the far end (it travels
     # 250 rings at 0.8 times the theory speed at a rough force scale; measured ~1.0 times).
-    t_end = 250 * a / (0.8 * float(solitary_wave_speed(_force_scale(K, n, m, impact_velocity), K, n, a, m)))
+    t_end = 250 * a / (0.8 * float(solitary_wave_speed(_force_scale(K, n, m, impact_velocity), K=K, n=n, m=m, a=a)))
     # 200 Verlet steps per period: 4 times more change F_m, speed and width by < 1e-4.
     sim = simulate(chain, t_end, impact_velocity=impact_velocity, gravity=False, method="verlet",
                    steps_per_period=200, n_samples=6001)  # fmt: skip
@@ -75,8 +75,8 @@ def errors(K, n, m, a, impact_velocity):
     the FWHM of the compact profile at their mean peak force, with eps = a/L."""
     F_near, F_far, speed, width = measure(K, n, m, a, impact_velocity)
     F_m = 0.5 * (F_near + F_far)
-    eps = a / float(solitary_wave_width(n, a))
-    speed_error = speed / float(solitary_wave_speed(F_m, K, n, a, m)) - 1.0
+    eps = a / float(solitary_wave_width(n=n, a=a))
+    speed_error = speed / float(solitary_wave_speed(F_m, K=K, n=n, m=m, a=a)) - 1.0
     width_error = width / theory_fwhm(F_m, K, n, a) - 1.0
     return F_near, F_far, speed_error, width_error, eps
 
@@ -118,5 +118,5 @@ def test_paper_chains_in_si_units(aspect_ratio):
     """Table I chains (SI units, m_eff, a = 2(R - r)), free and without gravity, struck at 1 m/s."""
     chain = paper_chain("power-law", aspect_ratio=aspect_ratio)
     K_mm, n, _ = paper_data.TABLE_I[aspect_ratio]
-    assert chain.K == float(n_per_mm_to_si(K_mm, n))
+    assert chain.K == float(n_per_mm_to_si(K_mm, n=n))
     check(chain.K, chain.n, chain.m, chain.a, 1.0)

@@ -27,7 +27,7 @@ SAMPLE = {
     "R": 0.02, "r": 0.0025, "theta": 1.2, "m": 0.3, "A": 50.0, "E": 193e9, "nu": 0.29,
     "F": 10.0, "K_c": 7.5e9, "K_b": 3.3e6,
     "F_m": 20.0, "F_0": 2.0, "K": 8.7e6, "n": 1.11, "a": 0.04, "v_max": -0.3, "x": 0.05,
-    "X": 0.01, "Y": 0.002, "Z": 0.015, "y": 4e-4, "delta_c": 2e-6,
+    "X": 0.01, "Y": 0.002, "Z": 0.015, "y": 4e-4, "delta_c": 2e-6, "P": 10.0, "m_1": 0.7,
     "R_1": 0.0225, "r_1": 0.0025, "R_2": 0.015, "r_2": 0.002, "E_1": 193e9, "nu_1": 0.29, "E_2": 100e9, "nu_2": 0.34,
 }  # fmt: skip
 # Where a derivation needs other values: the exact torus gap at points over both tubes (x is a position

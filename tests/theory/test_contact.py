@@ -324,3 +324,51 @@ def test_stiffness_positive_and_stiffer_when_oblique(aspect, r_, frac):
     # Tilting the rings spreads A and B apart at fixed A + B, which raises the equivalent radius:
     # the contact never gets softer than the perpendicular one (1e-12: rounding).
     assert K >= K90 * (1 - 1e-12)
+
+
+# --- the semi-axes of the contact ellipse (issue 24, item 3: where the Hertz ellipse leaves the half-space) --
+
+
+def _johnson_semi_axes(R_, r_, E_, nu_, theta_, P):
+    """(a, b) from Johnson's relations (Sec. 4.2) at 30 digits: a^3 = 3 P (K - E)/(2 pi m A E*), b = a sqrt(1 - m)."""
+    with mpmath.workdps(30):
+        total = 1 / mpmath.mpf(r_) - 1 / mpmath.mpf(R_ - r_)
+        diff = (1 / mpmath.mpf(r_) + 1 / mpmath.mpf(R_ - r_)) * abs(mpmath.cos(theta_))
+        A = (total - diff) / 2
+        Es = mpmath.mpf(E_) / (2 * (1 - mpmath.mpf(nu_) ** 2))
+        _, mm = _johnson_at_30_digits(R_, r_, E_, nu_, theta_)
+        mm = mpmath.mpf(mm)
+        D = (mpmath.ellipk(mm) - mpmath.ellipe(mm)) / mm if mm > 1e-20 else mpmath.pi / 4
+        a = (3 * P * D / (2 * mpmath.pi * A * Es)) ** (mpmath.mpf(1) / 3)
+        return float(a), float(a * mpmath.sqrt(1 - mm))
+
+
+@pytest.mark.parametrize(("aspect", "angle_deg"), [(9.0, 90.0), (9.0, 85.0), (9.0, 55.0), (8.0, 45.0), (3.1, 89.0)])
+def test_semi_axes_against_johnson(aspect, angle_deg):
+    r_ = 2.5e-3
+    R_ = aspect * r_
+    a, b = contact.contact_semi_axes(R_, r_, 193e9, 0.29, np.radians(angle_deg), F=100.0)
+    a_ref, b_ref = _johnson_semi_axes(R_, r_, 193e9, 0.29, np.radians(angle_deg), 100.0)
+    # m from the package's table (1e-9 relative, test above) enters a through (K - E)/m and b through
+    # sqrt(1 - m): 1e-9 leaves room for both.
+    assert (float(a), float(b)) == (pytest.approx(a_ref, rel=1e-9), pytest.approx(b_ref, rel=1e-9))
+
+
+def test_semi_axes_of_the_circle_are_hertz_spheres():
+    R_, r_, E_, nu_ = 22.5e-3, 2.5e-3, 193e9, 0.29
+    F = np.array([1.0, 100.0])
+    a, b = contact.contact_semi_axes(R_, r_, E_, nu_, F=F)
+    R_e = r_ * (R_ - r_) / (R_ - 2 * r_)  # App. A
+    E_star = E_ / (2 * (1 - nu_**2))
+    # Johnson's sphere a^3 = 3 P R_e/(4 E*), typed independently: rounding only.
+    np.testing.assert_allclose(a, (3 * F * R_e / (4 * E_star)) ** (1 / 3), rtol=1e-14)
+    np.testing.assert_array_equal(a, b)
+    # The approach of the same contact: delta = a^2/R_e, so F = K_c delta^1.5 holds with these semi-axes.
+    np.testing.assert_allclose(F, hertz_stiffness(R_, r_, E_, nu_) * (a**2 / R_e) ** 1.5, rtol=1e-13)
+
+
+def test_semi_axes_refuse_what_has_no_ellipse():
+    with pytest.raises(ValueError, match="at or below theta_min"):
+        contact.contact_semi_axes(22.5e-3, 2.5e-3, 193e9, 0.29, 0.5, F=1.0)
+    with pytest.raises(ValueError, match="F must be positive"):
+        contact.contact_semi_axes(22.5e-3, 2.5e-3, 193e9, 0.29, F=0.0)

@@ -116,3 +116,29 @@ def test_refuses_what_has_no_single_hertz_contact(args, message):
     values = dict(R1=22.5e-3, r1=2.5e-3, E1=193e9, nu1=0.29, R2=15e-3, r2=2.5e-3, E2=193e9, nu2=0.29) | args
     with pytest.raises(ValueError, match=message):
         hertz_stiffness_pair(**values)
+
+
+@pytest.mark.parametrize("aspect", [2.2, 3.0, 4.5, 6.0, 9.0, 40.0])
+@pytest.mark.parametrize("angle", [np.pi / 2, 1.3, 1.0])
+def test_identical_pairs_inside_an_array(aspect, angle):
+    # Issue 24, item 13: an exactly identical pair among different ones goes the two-torus route, where
+    # |A - B| = sqrt((k1 - k2)^2 + 4 k1 k2 cos^2 theta)/2 must not lose its zero to cancellation (it gave
+    # sqrt of a rounding-negative radicand, NaN curvatures, and 90 deg refused as below theta_min).
+    r = 2.5e-3
+    if angle <= float(contact.minimum_contact_angle(aspect * r, r)):
+        pytest.skip("no single contact of equal rings at this angle")
+    single = float(hertz_stiffness(aspect * r, r, *STEEL, angle))
+    R1 = np.array([22.5e-3, aspect * r])
+    two_torus = contact._pair_stiffness(*map(np.asarray, (R1, r, *STEEL, aspect * r, r, *STEEL, angle)))
+    # The identical pair by the two-torus route against the one-torus route: rounding of a few operations
+    # and the same table (1e-14, as in the test of equal rings above; measured below 1e-15).
+    assert two_torus[1] == pytest.approx(single, rel=1e-14)
+    # The public function gives the one-torus number itself for each identical pair, as for equal arrays.
+    K = hertz_stiffness_pair(R1, r, *STEEL, aspect * r, r, *STEEL, angle)
+    assert K[1] == single
+    assert K[0] == hertz_stiffness_pair(22.5e-3, r, *STEEL, aspect * r, r, *STEEL, angle)
+
+
+def test_the_issue_case_of_an_identical_pair_in_an_array():
+    K = hertz_stiffness_pair(np.array([22.5e-3, 15e-3]), 2.5e-3, *STEEL, 15e-3, 2.5e-3, *STEEL)
+    assert K[1] == hertz_stiffness(15e-3, 2.5e-3, *STEEL)

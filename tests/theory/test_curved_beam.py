@@ -156,7 +156,7 @@ def test_homogeneous_solutions_solve_the_static_equations(kind):
 @pytest.mark.parametrize("kind", cb.PLANES)
 def test_element_matrices(kind):
     R_, r_, beta = 22.5e-3, 2.5e-3, np.pi / 8
-    el = cb.element_matrices(R_, r_, STEEL["E"], STEEL["nu"], STEEL["rho"], beta, kind)
+    el = cb.element_matrices(R_, r_, STEEL["E"], STEEL["nu"], rho=STEEL["rho"], angle=beta, kind=kind)
     K, M = el.stiffness, el.mass
     assert np.allclose(K, K.T, rtol=0, atol=1e-12 * np.abs(K).max())
     eigenvalues = np.linalg.eigvalsh(K)
@@ -177,7 +177,7 @@ def test_element_matrices(kind):
 def test_mass_is_the_integral_of_the_shape_functions():
     """M = integral(N^T m N R dtheta), recomputed on a fine trapezoid grid from the shape functions."""
     R_, r_, beta = 22.5e-3, 2.5e-3, np.pi / 8
-    el = cb.element_matrices(R_, r_, STEEL["E"], STEEL["nu"], STEEL["rho"], beta)
+    el = cb.element_matrices(R_, r_, STEEL["E"], STEEL["nu"], rho=STEEL["rho"], angle=beta)
     grid = np.linspace(0.0, beta, 801)
     N = cb.element_shape_functions(R_, r_, STEEL["E"], STEEL["nu"], beta, grid)
     I = np.pi * r_**4 / 4  # noqa: E741
@@ -199,7 +199,7 @@ def test_shape_functions_interpolate_the_nodes():
 def test_end_resultants_of_a_pure_bending_state():
     """A uniform moment M0 bends the arc into kappa = M0 C22 with N = 0: the resultants read it back."""
     R_, r_, beta = 22.5e-3, 2.5e-3, np.pi / 8
-    el = cb.element_matrices(R_, r_, STEEL["E"], STEEL["nu"], STEEL["rho"], beta)
+    el = cb.element_matrices(R_, r_, STEEL["E"], STEEL["nu"], rho=STEEL["rho"], angle=beta)
     D = np.asarray(cb._sections(R_, r_, STEEL["E"], STEEL["nu"])["D"]["in-plane"])
     strains = np.linalg.solve(D[np.ix_([0, 2], [0, 2])], [0.0, 1.0])  # (eps, kappa) of N = 0, M = 1 N m
     eps, kappa = strains
@@ -234,8 +234,8 @@ def test_nafems_ring_frequencies():
     """NAFEMS FV6 (Selected benchmarks for natural frequency analysis, test 6): R = 1 m, r = 0.05 m,
     E = 200 GPa, nu = 0.3, rho = 8000 kg/m^3; the reference values (the classical formulas), Hz,
     are printed to 5 significant digits."""
-    in_plane = cb.inextensional_frequency(1.0, 0.05, 2e11, 0.3, 8000.0, [2, 3, 4])
-    out_of_plane = cb.inextensional_frequency(1.0, 0.05, 2e11, 0.3, 8000.0, [2, 3, 4], kind="out-of-plane")
+    in_plane = cb.inextensional_frequency(1.0, 0.05, 2e11, 0.3, rho=8000.0, k=[2, 3, 4])
+    out_of_plane = cb.inextensional_frequency(1.0, 0.05, 2e11, 0.3, rho=8000.0, k=[2, 3, 4], kind="out-of-plane")
     assert np.allclose(in_plane, [53.382, 150.99, 289.51], rtol=1e-4)
     assert np.allclose(out_of_plane, [51.849, 148.77, 286.98], rtol=1e-4)
 
@@ -243,9 +243,9 @@ def test_nafems_ring_frequencies():
 @pytest.mark.parametrize("kind", cb.PLANES)
 @pytest.mark.parametrize("order", [2, 4, 6])
 def test_ring_frequencies_reduce_to_the_classical_ones(kind, order):
-    args = (22.5e-3, 2.5e-3, STEEL["E"], STEEL["nu"], STEEL["rho"], order)
-    classical = cb.inextensional_frequency(*args, kind=kind)
-    limit = cb.ring_frequencies(*args, kind, extension=False, shear=False, rotary_inertia=False, thick=False)
+    args = dict(R=22.5e-3, r=2.5e-3, E=STEEL["E"], nu=STEEL["nu"], rho=STEEL["rho"], k=order, kind=kind)
+    classical = cb.inextensional_frequency(**args)
+    limit = cb.ring_frequencies(**args, extension=False, shear=False, rotary_inertia=False, thick=False)
     with mpmath.workdps(20):
         I, A = mpmath.pi * 2.5e-3**4 / 4, mpmath.pi * 2.5e-3**2  # noqa: E741
         extra = 1 if kind == "in-plane" else 1 + STEEL["nu"]
@@ -254,7 +254,7 @@ def test_ring_frequencies_reduce_to_the_classical_ones(kind, order):
     assert limit.size == 1 and limit[0] == pytest.approx(classical, rel=1e-12)  # same formula, two routes
     assert float(classical) == pytest.approx(float(mp), rel=1e-13)  # against mpmath
     # Each effect switched on lowers the flexural frequency of a thick ring (R/r = 9).
-    full = cb.ring_frequencies(*args, kind)[0]
+    full = cb.ring_frequencies(**args)[0]
     assert full < classical
 
 
@@ -282,8 +282,8 @@ def test_thick_rings_depart_from_the_classical_frequencies_as_k_r_over_R_squared
     for order in (2, 6):
         departures = []
         for aspect in aspects:
-            args = (aspect * 2.5e-3, 2.5e-3, STEEL["E"], STEEL["nu"], STEEL["rho"], order)
-            departures.append(1 - cb.ring_frequencies(*args)[0] / cb.inextensional_frequency(*args))
+            args = dict(R=aspect * 2.5e-3, r=2.5e-3, E=STEEL["E"], nu=STEEL["nu"], rho=STEEL["rho"], k=order)
+            departures.append(1 - cb.ring_frequencies(**args)[0] / cb.inextensional_frequency(**args))
         ratios = np.array(departures[:-1]) / np.array(departures[1:])
         # Doubling R/r divides the departure by 4, up to the next order, a relative O((k r/R)^2).
         assert np.all(np.abs(ratios - 4) < 4 * (order / aspects[:-1]) ** 2)
@@ -292,11 +292,14 @@ def test_thick_rings_depart_from_the_classical_frequencies_as_k_r_over_R_squared
 @pytest.mark.parametrize(
     ("call", "message"),
     [
-        (lambda: cb.element_matrices(2.5e-3, 2.5e-3, 193e9, 0.29, 8000.0, 0.1), "r must be smaller than R"),
-        (lambda: cb.element_matrices(22.5e-3, 2.5e-3, 193e9, 0.29, 8000.0, 2.0), "angle must lie in"),
-        (lambda: cb.element_matrices(22.5e-3, 2.5e-3, 193e9, 0.29, 8000.0, 0.1, "sideways"), "kind must be one of"),
-        (lambda: cb.inextensional_frequency(22.5e-3, 2.5e-3, 193e9, 0.29, 8000.0, 1), "k must be an integer"),
-        (lambda: cb.ring_frequencies(22.5e-3, 2.5e-3, 193e9, 0.29, -1.0, 2), "rho must be positive"),
+        (lambda: cb.element_matrices(2.5e-3, 2.5e-3, 193e9, 0.29, rho=8000.0, angle=0.1), "r must be smaller than R"),
+        (lambda: cb.element_matrices(22.5e-3, 2.5e-3, 193e9, 0.29, rho=8000.0, angle=2.0), "angle must lie in"),
+        (
+            lambda: cb.element_matrices(22.5e-3, 2.5e-3, 193e9, 0.29, rho=8000.0, angle=0.1, kind="sideways"),
+            "kind must be one of",
+        ),
+        (lambda: cb.inextensional_frequency(22.5e-3, 2.5e-3, 193e9, 0.29, rho=8000.0, k=1), "k must be an integer"),
+        (lambda: cb.ring_frequencies(22.5e-3, 2.5e-3, 193e9, 0.29, rho=-1.0, k=2), "rho must be positive"),
         (lambda: cb.element_shape_functions(22.5e-3, 2.5e-3, 193e9, 0.29, 0.1, [0.2]), "theta must lie within"),
     ],
 )

@@ -26,9 +26,9 @@ def test_junction_coefficients_are_the_derived_ones():
 @pytest.mark.parametrize("model", ["power-law", "dual-spring"])
 def test_impedance_is_mass_times_sound_speed_over_spacing(model):
     K_b = 3.3e6 if model == "dual-spring" else None
-    args = dict(model=model, F0=np.array([0.5, 5.0, 50.0]), K=7.5e9, n=1.5, m=8e-3, a=0.04, K_b=K_b)
+    args = dict(model=model, F_0=np.array([0.5, 5.0, 50.0]), K=7.5e9, n=1.5, m=8e-3, a=0.04, K_b=K_b)
     Z = impedance(**args)
-    k_c = 1.5 * 7.5e9 ** (2 / 3) * args["F0"] ** (1 / 3)  # dF/d delta of K delta^1.5 at F0
+    k_c = 1.5 * 7.5e9 ** (2 / 3) * args["F_0"] ** (1 / 3)  # dF/d delta of K delta^1.5 at F_0
     k = k_c if K_b is None else k_c * K_b / (k_c + K_b)  # contact and ring body in series (Eq. 3)
     np.testing.assert_allclose(Z, np.sqrt(8e-3 * k), rtol=1e-13)  # a few roundings
     np.testing.assert_allclose(Z, 8e-3 * sound_speed(**args) / 0.04, rtol=1e-15)

@@ -75,7 +75,7 @@ def test_dual_spring_numeric_branches_solve_the_eigenproblem(kc, kb, qa):
     """The numeric branches are the eigenvalues of the 2 x 2 Bloch matrix, evaluated in mpmath."""
     mass = 2.0  # each half 1 kg
     # n = 1: the contact is linear, k_c = K at any static force.
-    omega = dispersion(qa, model="dual-spring", F0=1.0, K=kc, n=1.0, m=mass, a=1.0, K_b=kb)
+    omega = dispersion(qa, model="dual-spring", F_0=1.0, K=kc, n=1.0, m=mass, a=1.0, K_b=kb)
     z = mpmath.expjpi(qa / mpmath.pi)
     D = mpmath.matrix([[kc + kb, -(kb + kc / z)], [-(kb + kc * z), kc + kb]])  # divided by m/2 = 1
     eigen = sorted(mpmath.re(e) for e in mpmath.eig(D)[0])
@@ -118,41 +118,41 @@ def test_equal_springs_fold_the_monatomic_chain_of_half_spacing():
 def test_dispersion_shapes_and_branch_order():
     qs = np.linspace(-np.pi, np.pi, 7)[:, None] / 0.04
     forces = np.array([0.5, 2.0, 20.0])
-    omega = dispersion(qs, model="dual-spring", F0=forces, a=0.04, **RING)
+    omega = dispersion(qs, model="dual-spring", F_0=forces, a=0.04, **RING)
     assert omega.shape == (7, 3, 2)
     assert np.all(omega[..., 0] <= omega[..., 1])
     np.testing.assert_allclose(omega, omega[::-1], rtol=1e-12)  # even in q
-    single = dispersion(qs, model="power-law", F0=forces, K=4.9e6, n=1.11, m=0.0082, a=0.04)
+    single = dispersion(qs, model="power-law", F_0=forces, K=4.9e6, n=1.11, m=0.0082, a=0.04)
     assert single.shape == (7, 3, 1)
-    shifted = dispersion(qs + 2 * np.pi / 0.04, model="power-law", F0=forces, K=4.9e6, n=1.11, m=0.0082, a=0.04)
+    shifted = dispersion(qs + 2 * np.pi / 0.04, model="power-law", F_0=forces, K=4.9e6, n=1.11, m=0.0082, a=0.04)
     np.testing.assert_allclose(shifted, single, rtol=1e-9, atol=1e-6)  # 2 pi/a periodic
 
 
 def test_power_law_dispersion_numbers():
     qa = np.array([0.3, 1.0, 3.0])
-    F0, Kp, npow, mass, spacing = 2.0, 4.9e6, 1.11, 0.0082, 0.04
-    k = npow * Kp ** (1 / npow) * F0 ** ((npow - 1) / npow)
+    F_0, Kp, npow, mass, spacing = 2.0, 4.9e6, 1.11, 0.0082, 0.04
+    k = npow * Kp ** (1 / npow) * F_0 ** ((npow - 1) / npow)
     expected = 2 * np.sqrt(k / mass) * np.abs(np.sin(qa / 2))
-    omega = dispersion(qa / spacing, model="power-law", F0=F0, K=Kp, n=npow, m=mass, a=spacing)[..., 0]
+    omega = dispersion(qa / spacing, model="power-law", F_0=F_0, K=Kp, n=npow, m=mass, a=spacing)[..., 0]
     np.testing.assert_allclose(omega, expected, rtol=1e-12)
 
 
 def test_acoustic_branch_keeps_its_digits_at_long_wavelength():
     """omega/q -> c: the stable form loses nothing at q a = 1e-9, where the difference form loses everything."""
-    c = sound_speed(model="dual-spring", F0=2.0, a=0.04, **RING)
+    c = sound_speed(model="dual-spring", F_0=2.0, a=0.04, **RING)
     q_small = 1e-9 / 0.04
-    omega = dispersion(q_small, model="dual-spring", F0=2.0, a=0.04, **RING)[0]
+    omega = dispersion(q_small, model="dual-spring", F_0=2.0, a=0.04, **RING)[0]
     # omega = c q (1 - O((q a)^2)), the correction below 1e-18 here.
     assert omega / q_small == pytest.approx(float(c), rel=1e-13)
 
 
 def test_band_edges_are_the_dispersion_at_the_zone_edges():
-    equal = (RING["K_b"] / 1.5) ** 3 / RING["K"] ** 2  # N: k_c = 1.5 K^(2/3) F0^(1/3) = K_b (0.19 N)
+    equal = (RING["K_b"] / 1.5) ** 3 / RING["K"] ** 2  # N: k_c = 1.5 K^(2/3) F_0^(1/3) = K_b (0.19 N)
     forces = np.array([0.05, 0.15, 1.0, 30.0])  # both sides of k_c = K_b
-    edges = band_edges(model="dual-spring", F0=forces, **RING)
+    edges = band_edges(model="dual-spring", F_0=forces, **RING)
     assert isinstance(edges, BandEdges)
-    at_edge = dispersion(np.pi / 0.04, model="dual-spring", F0=forces, a=0.04, **RING)
-    at_centre = dispersion(0.0, model="dual-spring", F0=forces, a=0.04, **RING)
+    at_edge = dispersion(np.pi / 0.04, model="dual-spring", F_0=forces, a=0.04, **RING)
+    at_centre = dispersion(0.0, model="dual-spring", F_0=forces, a=0.04, **RING)
     np.testing.assert_allclose(edges.acoustic_top, at_edge[:, 0], rtol=1e-12)
     np.testing.assert_allclose(edges.optical_bottom, at_edge[:, 1], rtol=1e-12)
     np.testing.assert_allclose(edges.optical_top, at_centre[:, 1], rtol=1e-12)
@@ -163,30 +163,30 @@ def test_band_edges_are_the_dispersion_at_the_zone_edges():
 
 
 def test_slack_contacts_leave_every_ring_on_its_own():
-    """F0 = 0 (n > 1): k_c = 0, the acoustic band collapses to 0 and the optical band is flat at 2 sqrt(K_b/m)."""
+    """F_0 = 0 (n > 1): k_c = 0, the acoustic band collapses to 0 and the optical band is flat at 2 sqrt(K_b/m)."""
     qs = np.linspace(0.0, np.pi / 0.04, 9)
-    omega = dispersion(qs, model="dual-spring", F0=0.0, a=0.04, **RING)
+    omega = dispersion(qs, model="dual-spring", F_0=0.0, a=0.04, **RING)
     np.testing.assert_array_equal(omega[:, 0], 0.0)
     np.testing.assert_allclose(omega[:, 1], 2 * np.sqrt(RING["K_b"] / RING["m"]), rtol=1e-12)
-    edges = band_edges(model="dual-spring", F0=0.0, **RING)
+    edges = band_edges(model="dual-spring", F_0=0.0, **RING)
     assert edges.optical_bottom == pytest.approx(edges.optical_top, rel=1e-12)
 
 
 def test_power_law_band_edges():
-    edges = band_edges(model="power-law", F0=[1.0, 8.0], K=1.0, n=3.0, m=4.0)
-    # k_c = 3 F0^(2/3): 3 and 12, top 2 sqrt(k_c/m).
+    edges = band_edges(model="power-law", F_0=[1.0, 8.0], K=1.0, n=3.0, m=4.0)
+    # k_c = 3 F_0^(2/3): 3 and 12, top 2 sqrt(k_c/m).
     np.testing.assert_allclose(edges.acoustic_top, [np.sqrt(3.0), np.sqrt(12.0)], rtol=1e-12)
     assert np.all(np.isnan(edges.optical_bottom)) and np.all(np.isnan(edges.optical_top))
 
 
 def test_sound_speed_of_each_model():
-    power = sound_speed(model="power-law", F0=[1.0, 3.0], K=4.9e6, n=1.11, m=0.0082, a=0.04)
-    np.testing.assert_array_equal(power, linear_sound_speed([1.0, 3.0], 4.9e6, 1.11, 0.04, 0.0082))
+    power = sound_speed(model="power-law", F_0=[1.0, 3.0], K=4.9e6, n=1.11, m=0.0082, a=0.04)
+    np.testing.assert_array_equal(power, linear_sound_speed([1.0, 3.0], K=4.9e6, n=1.11, m=0.0082, a=0.04))
     # Dual spring: the tangent stiffness of the series law Eq. (3), here by differentiating delta(F) numerically.
-    F0, h = 2.0, 1e-4
-    delta = [series_displacement(F, RING["K"], RING["K_b"]) for F in (F0 - h, F0 + h)]
+    F_0, h = 2.0, 1e-4
+    delta = [series_displacement(F, K_c=RING["K"], K_b=RING["K_b"]) for F in (F_0 - h, F_0 + h)]
     stiffness = 2 * h / (delta[1] - delta[0])
-    c = sound_speed(model="dual-spring", F0=F0, a=0.04, **RING)
+    c = sound_speed(model="dual-spring", F_0=F_0, a=0.04, **RING)
     assert float(c) == pytest.approx(0.04 * np.sqrt(stiffness / RING["m"]), rel=1e-7)  # central difference, h^2
 
 
@@ -194,7 +194,7 @@ def test_linear_travel_time_sums_the_cells():
     chain = dict(K=4.9e6, n=1.11, m=0.0082, a=0.04)
     weight = 0.0222 * 9.80665
     t = linear_travel_time(3, 9, model="power-law", m_gravity=0.0222, **chain)
-    cells = [0.04 / sound_speed(model="power-law", F0=(k + 1) * weight, **chain) for k in range(3, 9)]
+    cells = [0.04 / sound_speed(model="power-law", F_0=(k + 1) * weight, **chain) for k in range(3, 9)]
     assert float(t) == pytest.approx(float(np.sum(cells)), rel=1e-14)
     # A linear chain (n = 1) has one speed: the time is distance over speed.
     linear_chain = linear_travel_time(0, 10, model="power-law", K=4.0, n=1.0, m=1.0, a=0.5)
@@ -220,12 +220,12 @@ def test_travel_time_grows_less_than_the_distance_up_a_hanging_chain():
 @pytest.mark.parametrize(
     ("call", "message"),
     [
-        (lambda: dispersion(1.0, model="chain", F0=1.0, K=1.0, n=1.5, m=1.0, a=1.0), "model must be one of"),
-        (lambda: dispersion(1.0, model="dual-spring", F0=1.0, K=1.0, n=1.5, m=1.0, a=1.0), "needs the bending"),
-        (lambda: dispersion(1.0, model="power-law", F0=1.0, K=1.0, n=1.5, m=1.0, a=1.0, K_b=1.0), "K_b belongs"),
-        (lambda: dispersion(1.0, model="power-law", F0=-1.0, K=1.0, n=1.5, m=1.0, a=1.0), "F0 must be non-neg"),
-        (lambda: band_edges(model="power-law", F0=0.0, K=1.0, n=0.8, m=1.0), "F0 = 0 with n < 1"),
-        (lambda: sound_speed(model="power-law", F0=1.0, K=1.0, n=1.5, m=0.0, a=1.0), "m must be positive"),
+        (lambda: dispersion(1.0, model="chain", F_0=1.0, K=1.0, n=1.5, m=1.0, a=1.0), "model must be one of"),
+        (lambda: dispersion(1.0, model="dual-spring", F_0=1.0, K=1.0, n=1.5, m=1.0, a=1.0), "needs the bending"),
+        (lambda: dispersion(1.0, model="power-law", F_0=1.0, K=1.0, n=1.5, m=1.0, a=1.0, K_b=1.0), "K_b belongs"),
+        (lambda: dispersion(1.0, model="power-law", F_0=-1.0, K=1.0, n=1.5, m=1.0, a=1.0), "F_0 must be non-neg"),
+        (lambda: band_edges(model="power-law", F_0=0.0, K=1.0, n=0.8, m=1.0), "F_0 = 0 with n < 1"),
+        (lambda: sound_speed(model="power-law", F_0=1.0, K=1.0, n=1.5, m=0.0, a=1.0), "m must be positive"),
         (lambda: linear_travel_time(5, 5, model="power-law", K=1.0, n=1.5, m=1.0, a=1.0), "ring_from < ring_to"),
         (lambda: linear_travel_time(0, 3, model="power-law", K=1.0, n=1.5, m=1.0, a=1.0, g=0.0), "g must be"),
     ],

@@ -165,11 +165,11 @@ def test_linear_sound_speed_against_a_numerical_derivative(point):
         k_0 = mpmath.diff(lambda d: K_v * d**n_v, delta_0, h=delta_0 * mpmath.mpf(10) ** -12)  # relative step
         expected = mpmath.mpf(a_) * mpmath.sqrt(k_0 / mpmath.mpf(m_))
     # exp(log C + p log F_0) with log c_0 up to 690: relative error about 690 x 1e-16 < 1e-13.
-    assert np.isclose(linear_sound_speed(*point), float(expected), rtol=1e-13, atol=0)
+    assert np.isclose(linear_sound_speed(F_0_, K=K_, n=n_, m=m_, a=a_), float(expected), rtol=1e-13, atol=0)
 
 
 def test_linear_sound_speed_broadcasts_and_vanishes_without_prestress():
-    c = linear_sound_speed(np.array([[0.0], [1.0]]), 1e8, np.array([1.2, 1.5]), 0.04, 0.01)
+    c = linear_sound_speed(np.array([[0.0], [1.0]]), K=1e8, n=np.array([1.2, 1.5]), m=0.01, a=0.04)
     assert c.shape == (2, 2)
     assert np.all(c[0] == 0.0)  # sonic vacuum: no static force, no sound for n > 1
     assert np.all(c[1] > 0)
@@ -189,4 +189,5 @@ def test_linear_sound_speed_broadcasts_and_vanishes_without_prestress():
 )
 def test_linear_sound_speed_rejects_bad_input(args, message):
     with pytest.raises(ValueError, match=message):
-        linear_sound_speed(*args)
+        F_0_, K_, n_, a_, m_ = args
+        linear_sound_speed(F_0_, K=K_, n=n_, m=m_, a=a_)

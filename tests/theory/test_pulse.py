@@ -102,9 +102,9 @@ def test_energy_and_momentum_against_quadrature(n_value):
     assert float(derived_contact) == pytest.approx(float(contact), rel=1e-20)
     assert float(pulse.momentum().subs(values).evalf(30)) == pytest.approx(float(momentum), rel=1e-20)
     # The numeric functions, to double precision.
-    args = (point["F"], point["K_"], n_value, point["m_"], point["a_"])
-    assert float(solitary_wave_energy(*args)) == pytest.approx(float(kinetic + contact), rel=1e-12)
-    assert float(solitary_wave_momentum(*args)) == pytest.approx(float(momentum), rel=1e-12)
+    args = dict(K=point["K_"], n=n_value, m=point["m_"], a=point["a_"])
+    assert float(solitary_wave_energy(point["F"], **args)) == pytest.approx(float(kinetic + contact), rel=1e-12)
+    assert float(solitary_wave_momentum(point["F"], **args)) == pytest.approx(float(momentum), rel=1e-12)
 
 
 def test_impact_law_puts_the_striker_energy_into_the_wave():
@@ -126,8 +126,8 @@ def test_hertz_numbers_against_gamma_closed_forms():
     with mpmath.workdps(30):
         energy = 2 * (mpmath.beta(0.5, 4.5) + mpmath.beta(0.5, 5.5)) / mpmath.sqrt(10)
         momentum = mpmath.sqrt(mpmath.mpf(1.5) / 3) * mpmath.beta(0.5, 2.5) / 0.5
-    assert float(solitary_wave_energy(1.0, 1.0, 1.5, 1.0, 1.0)) == pytest.approx(float(energy), rel=1e-13)
-    assert float(solitary_wave_momentum(1.0, 1.0, 1.5, 1.0, 1.0)) == pytest.approx(float(momentum), rel=1e-13)
+    assert float(solitary_wave_energy(1.0, K=1.0, n=1.5, m=1.0, a=1.0)) == pytest.approx(float(energy), rel=1e-13)
+    assert float(solitary_wave_momentum(1.0, K=1.0, n=1.5, m=1.0, a=1.0)) == pytest.approx(float(momentum), rel=1e-13)
     # The wave moves like a particle of 1.34 ring masses.
     mass = float(momentum**2 / (2 * energy))
     assert 1.34 < mass < 1.35
@@ -135,23 +135,27 @@ def test_hertz_numbers_against_gamma_closed_forms():
 
 def test_scaling_and_broadcasting():
     F = np.array([1.0, 10.0, 100.0])
-    E = solitary_wave_energy(F[:, None], 4.9e6, [1.11, 1.5], 8.2e-3, 0.04)
+    E = solitary_wave_energy(F[:, None], K=4.9e6, n=[1.11, 1.5], m=8.2e-3, a=0.04)
     assert E.shape == (3, 2)
     np.testing.assert_allclose(E[1] / E[0], 10.0 ** ((np.array([1.11, 1.5]) + 1) / [1.11, 1.5]), rtol=1e-12)
-    P = solitary_wave_momentum(F[:, None], 4.9e6, 1.5, [8.2e-3, 4 * 8.2e-3], 0.04)
+    P = solitary_wave_momentum(F[:, None], K=4.9e6, n=1.5, m=[8.2e-3, 4 * 8.2e-3], a=0.04)
     np.testing.assert_allclose(P[:, 1] / P[:, 0], 2.0, rtol=1e-12)  # sqrt(m)
     # a cancels; v0 over three decades with the exponent 2n/(n+1).
-    assert solitary_wave_energy(3.0, 4.9e6, 1.3, 8.2e-3, 0.04) == solitary_wave_energy(3.0, 4.9e6, 1.3, 1.0, 7.0)
+    assert solitary_wave_energy(3.0, K=4.9e6, n=1.3, m=8.2e-3, a=0.04) == solitary_wave_energy(
+        3.0, K=4.9e6, n=1.3, m=1.0, a=7.0
+    )
     v0 = np.array([0.01, 0.1, 1.0, 10.0])
-    F_v = impact_amplitude(v0, 4.9e6, 1.3, 8.2e-3, 0.04)
+    F_v = impact_amplitude(v0, K=4.9e6, n=1.3, m=8.2e-3, a=0.04)
     np.testing.assert_allclose(np.diff(np.log(F_v)) / np.log(10.0), 2 * 1.3 / 2.3, rtol=1e-12)
 
 
 def test_impact_amplitude_inverts_the_energy():
-    F = impact_amplitude(0.99, 4.9e6, 1.11, 8.2e-3, 0.04, m_striker=0.0222)
-    assert float(solitary_wave_energy(F, 4.9e6, 1.11, 8.2e-3, 0.04)) == pytest.approx(0.5 * 0.0222 * 0.99**2, rel=1e-12)
-    default = impact_amplitude(0.99, 4.9e6, 1.11, 8.2e-3, 0.04)
-    assert float(default) == float(impact_amplitude(0.99, 4.9e6, 1.11, 8.2e-3, 0.04, m_striker=8.2e-3))
+    F = impact_amplitude(0.99, K=4.9e6, n=1.11, m=8.2e-3, a=0.04, m_striker=0.0222)
+    assert float(solitary_wave_energy(F, K=4.9e6, n=1.11, m=8.2e-3, a=0.04)) == pytest.approx(
+        0.5 * 0.0222 * 0.99**2, rel=1e-12
+    )
+    default = impact_amplitude(0.99, K=4.9e6, n=1.11, m=8.2e-3, a=0.04)
+    assert float(default) == float(impact_amplitude(0.99, K=4.9e6, n=1.11, m=8.2e-3, a=0.04, m_striker=8.2e-3))
 
 
 def test_near_n_one_the_numbers_stay_finite():
@@ -159,24 +163,24 @@ def test_near_n_one_the_numbers_stay_finite():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         n_values = np.array([1.0001, 1.001, 1.01])
-        E = solitary_wave_energy(10.0, 4.9e6, n_values, 8.2e-3, 0.04)
-        P = solitary_wave_momentum(10.0, 4.9e6, n_values, 8.2e-3, 0.04)
-        F = impact_amplitude(1.0, 4.9e6, n_values, 8.2e-3, 0.04)
+        E = solitary_wave_energy(10.0, K=4.9e6, n=n_values, m=8.2e-3, a=0.04)
+        P = solitary_wave_momentum(10.0, K=4.9e6, n=n_values, m=8.2e-3, a=0.04)
+        F = impact_amplitude(1.0, K=4.9e6, n=n_values, m=8.2e-3, a=0.04)
     assert np.all(np.isfinite(E) & np.isfinite(P) & np.isfinite(F) & (E > 0) & (P > 0) & (F > 0))
     # The wave widens as 1/(n - 1) and carries more energy at a given force: E grows as the width^(1/2).
-    width = solitary_wave_width(n_values, 0.04)
+    width = solitary_wave_width(n=n_values, a=0.04)
     assert np.all(np.diff(E) < 0) and np.all(np.diff(width) < 0)
 
 
 @pytest.mark.parametrize(
     ("call", "message"),
     [
-        (lambda: solitary_wave_energy(0.0, 1.0, 1.5, 1.0, 1.0), "F_m must be positive"),
-        (lambda: solitary_wave_energy(1.0, 1.0, 1.0, 1.0, 1.0), "compact solitary wave only for n > 1"),
-        (lambda: solitary_wave_momentum(1.0, 1.0, 1.5, -1.0, 1.0), "m must be positive"),
-        (lambda: impact_amplitude(-1.0, 1.0, 1.5, 1.0, 1.0), "v0 must be positive"),
-        (lambda: impact_amplitude(1.0, 1.0, 1.5, 1.0, 0.0), "a must be positive"),
-        (lambda: impact_amplitude(1.0, 1.0, 1.5, 1.0, 1.0, m_striker=0.0), "m_striker must be positive"),
+        (lambda: solitary_wave_energy(0.0, K=1.0, n=1.5, m=1.0, a=1.0), "F_m must be positive"),
+        (lambda: solitary_wave_energy(1.0, K=1.0, n=1.0, m=1.0, a=1.0), "compact solitary wave only for n > 1"),
+        (lambda: solitary_wave_momentum(1.0, K=1.0, n=1.5, m=-1.0, a=1.0), "m must be positive"),
+        (lambda: impact_amplitude(-1.0, K=1.0, n=1.5, m=1.0, a=1.0), "v0 must be positive"),
+        (lambda: impact_amplitude(1.0, K=1.0, n=1.5, m=1.0, a=0.0), "a must be positive"),
+        (lambda: impact_amplitude(1.0, K=1.0, n=1.5, m=1.0, a=1.0, m_striker=0.0), "m_striker must be positive"),
     ],
 )
 def test_bad_input(call, message):

@@ -60,9 +60,9 @@ def test_numeric_functions_against_eq_3_in_mpmath(F_, Kc_, Kb_):
         exponent = 1 / mpmath.diff(log_delta, log_F)
         crossover = Kb**3 / Kc**2
     # Double-precision powers and logarithms: 1e-13.
-    assert np.isclose(series_displacement(F_, Kc_, Kb_), float(delta), rtol=1e-13, atol=0)
-    assert np.isclose(local_exponent(F_, Kc_, Kb_), float(exponent), rtol=1e-13, atol=0)
-    assert np.isclose(crossover_force(Kc_, Kb_), float(crossover), rtol=1e-13, atol=0)
+    assert np.isclose(series_displacement(F_, K_c=Kc_, K_b=Kb_), float(delta), rtol=1e-13, atol=0)
+    assert np.isclose(local_exponent(F_, K_c=Kc_, K_b=Kb_), float(exponent), rtol=1e-13, atol=0)
+    assert np.isclose(crossover_force(K_c=Kc_, K_b=Kb_), float(crossover), rtol=1e-13, atol=0)
 
 
 def test_local_exponent_of_the_bending_share():
@@ -73,37 +73,37 @@ def test_local_exponent_of_the_bending_share():
 
 def test_extreme_stiffnesses_give_a_reason_not_an_overflow():
     with pytest.raises(ValueError, match=r"F\* is not representable"):
-        crossover_force(1e-200, 1e200)  # K_b^3/K_c^2 = 1e1000
+        crossover_force(K_c=1e-200, K_b=1e200)  # K_b^3/K_c^2 = 1e1000
     with pytest.raises(ValueError, match="the converted K is not representable"):
-        n_per_mm_to_si(1.0, 200.0)  # 1000^200
+        n_per_mm_to_si(1.0, n=200.0)  # 1000^200
 
 
 def test_broadcasting_errors_name_the_arguments():
     with pytest.raises(ValueError, match=r"F \(shape \(3,\)\) and K_c \(shape \(2,\)\)"):
-        series_displacement([1.0, 2.0, 3.0], [1e9, 2e9], 1e6)
+        series_displacement([1.0, 2.0, 3.0], K_c=[1e9, 2e9], K_b=1e6)
     with pytest.raises(ValueError, match=r"K_b \(shape \(2,\)\) and F_min \(shape \(3,\)\)"):
-        fit_power_law(1e9, [1e6, 2e6], [1.0, 2.0, 3.0], 100.0)
+        fit_power_law(K_c=1e9, K_b=[1e6, 2e6], F_min=[1.0, 2.0, 3.0], F_max=100.0)
 
 
 def test_fit_recovers_pure_limits():
     # Pure Hertz (bending infinitely stiff): the fit must return exactly K_c and 3/2.
-    K, n = fit_power_law(7.5e9, 1e30, 1.0, 100.0)
+    K, n = fit_power_law(K_c=7.5e9, K_b=1e30, F_min=1.0, F_max=100.0)
     assert np.isclose(n, 1.5, rtol=1e-9, atol=0) and np.isclose(K, 7.5e9, rtol=1e-8)  # 1e30 leaves ~1e-13 of bending
     # Pure bending (contact infinitely stiff): K_b and 1.
-    K, n = fit_power_law(1e40, 3.3e6, 1.0, 100.0)
+    K, n = fit_power_law(K_c=1e40, K_b=3.3e6, F_min=1.0, F_max=100.0)
     assert np.isclose(n, 1.0, rtol=1e-9, atol=0) and np.isclose(K, 3.3e6, rtol=1e-8)
 
 
 def test_fit_lies_between_local_exponents_at_window_ends():
-    _, n = fit_power_law(7.5e9, 3.3e6, 1.0, 100.0)
-    n_lo, n_hi = local_exponent(100.0, 7.5e9, 3.3e6), local_exponent(1.0, 7.5e9, 3.3e6)
+    _, n = fit_power_law(K_c=7.5e9, K_b=3.3e6, F_min=1.0, F_max=100.0)
+    n_lo, n_hi = local_exponent(100.0, K_c=7.5e9, K_b=3.3e6), local_exponent(1.0, K_c=7.5e9, K_b=3.3e6)
     assert n_lo < n < n_hi
 
 
 def test_fit_broadcasts():
-    K, n = fit_power_law(np.array([7.5e9, 9.7e9]), np.array([[3.3e6], [5.9e7]]))
+    K, n = fit_power_law(K_c=np.array([7.5e9, 9.7e9]), K_b=np.array([[3.3e6], [5.9e7]]))
     assert n.shape == (2, 2) and K.shape == (2, 2)
-    assert np.isclose(n[0, 0], fit_power_law(7.5e9, 3.3e6)[1])
+    assert np.isclose(n[0, 0], fit_power_law(K_c=7.5e9, K_b=3.3e6)[1])
 
 
 def test_fitted_exponent_against_aspect_ratio_follows_papers_trend():
@@ -122,19 +122,19 @@ def test_fitted_exponent_against_aspect_ratio_follows_papers_trend():
 def test_unit_conversion():
     # F = K_mm (delta/1 mm)^n = K_si (delta/1 m)^n: at delta = 1 mm both give K_mm newtons.
     K_mm, n = 2284.0, 1.11
-    assert np.isclose(n_per_mm_to_si(K_mm, n) * (1e-3) ** n, K_mm, rtol=1e-14, atol=0)
-    assert np.isclose(si_to_n_per_mm(n_per_mm_to_si(K_mm, n), n), K_mm, rtol=1e-14, atol=0)
+    assert np.isclose(n_per_mm_to_si(K_mm, n=n) * (1e-3) ** n, K_mm, rtol=1e-14, atol=0)
+    assert np.isclose(si_to_n_per_mm(n_per_mm_to_si(K_mm, n=n), n=n), K_mm, rtol=1e-14, atol=0)
 
 
 @pytest.mark.parametrize(
     ("call", "message"),
     [
-        (lambda: series_displacement(-1.0, 1e9, 1e6), "F must be non-negative"),
-        (lambda: local_exponent(0.0, 1e9, 1e6), "F must be positive"),
-        (lambda: crossover_force(1e9, -1.0), "K_b must be positive"),
-        (lambda: fit_power_law(1e9, 1e6, 10.0, 1.0), "F_min < F_max"),
-        (lambda: fit_power_law(1e9, 1e6, 0.0, 1.0), "F_min must be positive"),
-        (lambda: series_displacement("a", 1e9, 1e6), "F must be a real number"),
+        (lambda: series_displacement(-1.0, K_c=1e9, K_b=1e6), "F must be non-negative"),
+        (lambda: local_exponent(0.0, K_c=1e9, K_b=1e6), "F must be positive"),
+        (lambda: crossover_force(K_c=1e9, K_b=-1.0), "K_b must be positive"),
+        (lambda: fit_power_law(K_c=1e9, K_b=1e6, F_min=10.0, F_max=1.0), "F_min < F_max"),
+        (lambda: fit_power_law(K_c=1e9, K_b=1e6, F_min=0.0, F_max=1.0), "F_min must be positive"),
+        (lambda: series_displacement("a", K_c=1e9, K_b=1e6), "F must be a real number"),
     ],
 )
 def test_bad_inputs(call, message):
@@ -149,10 +149,10 @@ def test_bad_inputs(call, message):
     Kb_=st.floats(1e3, 1e9),
 )
 def test_local_exponent_between_one_and_three_halves(F_, Kc_, Kb_):
-    n = local_exponent(F_, Kc_, Kb_)
+    n = local_exponent(F_, K_c=Kc_, K_b=Kb_)
     assert 1.0 <= n <= 1.5
     # and it decreases with force (bending takes over)
-    assert local_exponent(2 * F_, Kc_, Kb_) <= n + 1e-15
+    assert local_exponent(2 * F_, K_c=Kc_, K_b=Kb_) <= n + 1e-15
 
 
 @settings(max_examples=50, deadline=None)
@@ -174,9 +174,9 @@ def test_series_stiffness_reduces_to_the_measured_power_law(row):
     """The springs found for each measured (K, n) of Tables I and II, fitted again by the theory's
     own least squares (Eq. 4, theory.fit_power_law), give that K and n back."""
     _, _, (K_mm, n, _) = row
-    K = float(n_per_mm_to_si(K_mm, n))
-    K_c, K_b = series_stiffness_for_power_law(K, n)
-    K_fit, n_fit = fit_power_law(K_c, K_b)
+    K = float(n_per_mm_to_si(K_mm, n=n))
+    K_c, K_b = series_stiffness_for_power_law(K=K, n=n)
+    K_fit, n_fit = fit_power_law(K_c=K_c, K_b=K_b)
     # The root finder stops at 1e-13 in ln F*; n depends smoothly on it.
     assert float(n_fit) == pytest.approx(n, rel=1e-9)
     assert float(K_fit) == pytest.approx(K, rel=1e-9)
@@ -188,11 +188,22 @@ def test_series_stiffness_reduces_to_the_measured_power_law(row):
 @settings(max_examples=40, deadline=None)
 @given(K=st.floats(1e4, 1e10), n=st.floats(1.02, 1.48), window=st.sampled_from([(1.0, 100.0), (0.1, 10.0)]))
 def test_series_stiffness_round_trips_over_the_admissible_range(K, n, window):
-    K_c, K_b = series_stiffness_for_power_law(K, n, *window)
+    K_c, K_b = series_stiffness_for_power_law(K=K, n=n, F_min=window[0], F_max=window[1])
     assert np.isfinite(K_c) and np.isfinite(K_b)
-    K_fit, n_fit = fit_power_law(K_c, K_b, *window)
+    K_fit, n_fit = fit_power_law(K_c=K_c, K_b=K_b, F_min=window[0], F_max=window[1])
     assert float(n_fit) == pytest.approx(n, rel=1e-8)  # root finding to 1e-13 in ln F*
     assert float(K_fit) == pytest.approx(K, rel=1e-7)  # K ~ K_b^n: the error in n times ln(delta)
+
+
+@pytest.mark.parametrize("K", [1e150, 1e-150])
+def test_series_stiffness_of_a_huge_or_tiny_K_is_computed_in_logarithms(K):
+    # K_b^3 overflowed as a Python float for K = 1e150 (an OverflowError, not a ValueError), although
+    # K_c ~ 1e203 and K_b ~ 1e135 are representable; the springs now come from their logarithms.
+    K_c, K_b = series_stiffness_for_power_law(K=K, n=1.11)
+    K_fit, n_fit = fit_power_law(K_c=K_c, K_b=K_b)
+    assert float(n_fit) == pytest.approx(1.11, rel=1e-9) and float(K_fit) == pytest.approx(K, rel=1e-9)
+    with pytest.raises(ValueError, match="not representable in double precision"):  # K_c beyond the doubles
+        series_stiffness_for_power_law(K=K**2, n=1.11)
 
 
 @pytest.mark.parametrize(
@@ -202,4 +213,4 @@ def test_series_stiffness_round_trips_over_the_admissible_range(K, n, window):
 )  # fmt: skip
 def test_series_stiffness_refuses_what_no_series_law_gives(args, message):
     with pytest.raises(ValueError, match=message):
-        series_stiffness_for_power_law(*args)
+        series_stiffness_for_power_law(**dict(zip(("K", "n", "F_min", "F_max"), args, strict=False)))

@@ -24,16 +24,18 @@ def test_series_extension_is_eq_3_with_any_contact():
 def test_series_extension_numbers_and_errors():
     F = np.array([1.0, 10.0])
     K_c, K_b = 7.5e9, 2.5e6
-    assert np.allclose(series_extension((F / K_c) ** (2 / 3), F, K_b), series_displacement(F, K_c, K_b), rtol=1e-14)
+    assert np.allclose(
+        series_extension(F, delta_c=(F / K_c) ** (2 / 3), K_b=K_b), series_displacement(F, K_c=K_c, K_b=K_b), rtol=1e-14
+    )
     with pytest.raises(ValueError, match="K_b"):
-        series_extension(1e-6, 1.0, -1.0)
+        series_extension(1.0, delta_c=1e-6, K_b=-1.0)
 
 
 def test_fit_to_a_sampled_series_law_matches_the_continuous_fit():
     K_c, K_b = 7.5e9, 2.5e6
     F = np.geomspace(1.0, 100.0, 200)
-    K, n = fit_power_law_to_curve(F, series_displacement(F, K_c, K_b))
-    K_ref, n_ref = fit_power_law(K_c, K_b)
+    K, n = fit_power_law_to_curve(F, series_displacement(F, K_c=K_c, K_b=K_b))
+    K_ref, n_ref = fit_power_law(K_c=K_c, K_b=K_b)
     # Linear interpolation of ln delta in ln F with 200 points per two decades: error ~ (h^2/8) |d2| ~ 1e-6.
     assert n == pytest.approx(float(n_ref), rel=1e-5)
     assert K == pytest.approx(float(K_ref), rel=1e-4)

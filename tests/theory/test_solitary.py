@@ -293,17 +293,19 @@ def test_numeric_speeds_against_app_b_in_mpmath(point):
         from_velocity = (2 * c2 / (nv + 1)) ** (1 / (nv + 1)) * v ** ((nv - 1) / (nv + 1))
         width = mpmath.pi * av * (nv + 1) / ((nv - 1) * mpmath.sqrt(6 * (nv + 1) / nv))
     # Double-precision evaluation of powers and logarithms: 1e-13.
-    assert np.isclose(solitary_wave_speed_from_velocity(-0.7, K_, n_, a_, m_), float(from_velocity), rtol=1e-13, atol=0)
-    assert np.isclose(solitary_wave_width(n_, a_), float(width), rtol=1e-13, atol=0)
+    assert np.isclose(
+        solitary_wave_speed_from_velocity(-0.7, K=K_, n=n_, m=m_, a=a_), float(from_velocity), rtol=1e-13, atol=0
+    )
+    assert np.isclose(solitary_wave_width(n=n_, a=a_), float(width), rtol=1e-13, atol=0)
 
 
 def _prestressed_reference(F_m_, F_0_, K_, n_, a_, m_):
     """App. B's first integral at 60 digits: V_s^2 = 2 c_n^2 [(X^(n+1) - X0^(n+1))/(n+1) - X0^n (X - X0)]/(X - X0)^2,
     with X = xi_max, X0 = xi_0 from F = K (a xi)^n; its limit n c_n^2 X^(n-1) at X0 = X."""
     with mpmath.workdps(60):
-        F, F0, Kv, nv, av, mv = (mpmath.mpf(value) for value in (F_m_, F_0_, K_, n_, a_, m_))
+        F, F_static, Kv, nv, av, mv = (mpmath.mpf(value) for value in (F_m_, F_0_, K_, n_, a_, m_))
         c2 = Kv * av ** (nv + 1) / mv
-        X, X0 = (F / Kv) ** (1 / nv) / av, (F0 / Kv) ** (1 / nv) / av
+        X, X0 = (F / Kv) ** (1 / nv) / av, (F_static / Kv) ** (1 / nv) / av
         if X0 == X:
             return float(mpmath.sqrt(nv * c2 * X ** (nv - 1)))
         bracket = (X ** (nv + 1) - X0 ** (nv + 1)) / (nv + 1) - X0**nv * (X - X0)
@@ -316,7 +318,9 @@ def test_prestressed_speed_against_the_first_integral(point, ratio):
     F_m_, K_, n_, a_, m_ = point
     expected = _prestressed_reference(F_m_, ratio * F_m_, K_, n_, a_, m_)
     # The elementary form or 12-point quadrature, both to a few 1e-16: 1e-13.
-    assert np.isclose(solitary_wave_speed_prestressed(F_m_, ratio * F_m_, K_, n_, a_, m_), expected, rtol=1e-13, atol=0)
+    assert np.isclose(
+        solitary_wave_speed_prestressed(F_m_, F_0=ratio * F_m_, K=K_, n=n_, m=m_, a=a_), expected, rtol=1e-13, atol=0
+    )
 
 
 @pytest.mark.parametrize(
@@ -333,7 +337,9 @@ def test_prestressed_speed_for_long_chains_and_large_exponents(F_m_, ratio, n_):
     K_, a_, m_ = 2.6e8, 0.04, 0.0098
     expected = _prestressed_reference(F_m_, ratio * F_m_, K_, n_, a_, m_)
     # 1e-13 as above; the reference resolves the 0/0 of F_0 -> F_m with 60 digits.
-    assert np.isclose(solitary_wave_speed_prestressed(F_m_, ratio * F_m_, K_, n_, a_, m_), expected, rtol=1e-13, atol=0)
+    assert np.isclose(
+        solitary_wave_speed_prestressed(F_m_, F_0=ratio * F_m_, K=K_, n=n_, m=m_, a=a_), expected, rtol=1e-13, atol=0
+    )
 
 
 def test_speeds_of_extreme_chains_do_not_overflow_on_the_way():
@@ -344,41 +350,44 @@ def test_speeds_of_extreme_chains_do_not_overflow_on_the_way():
         F, Kv, nv, av, mv = (mpmath.mpf(value) for value in point)
         expected = av * mpmath.sqrt(2 / (nv + 1)) * mpmath.sqrt(Kv ** (1 / nv) / mv) * F ** ((nv - 1) / (2 * nv))
     # exp(log C + p log F_m) with log V_s ~ 560: relative error about 560 x 1e-16.
-    assert np.isclose(solitary_wave_speed(*point), float(expected), rtol=1e-13, atol=0)
+    F_m_, K_, n_, a_, m_ = point
+    assert np.isclose(solitary_wave_speed(F_m_, K=K_, n=n_, m=m_, a=a_), float(expected), rtol=1e-13, atol=0)
     with pytest.raises(ValueError, match="V_s is not representable"):
-        solitary_wave_speed(1e300, 1e300, 3.0, 1e300, 1e-300)  # V_s itself ~ 1e550
+        solitary_wave_speed(1e300, K=1e300, n=3.0, m=1e-300, a=1e300)  # V_s itself ~ 1e550
 
 
 def test_speed_from_velocity_takes_the_magnitude():
     # Either sign: the speed depends on |v_max| only (App. B's signed v_max is negative).
-    signed = solitary_wave_speed_from_velocity(-0.7, 1e8, 1.3, 0.04, 0.01)
-    assert solitary_wave_speed_from_velocity(0.7, 1e8, 1.3, 0.04, 0.01) == signed
+    signed = solitary_wave_speed_from_velocity(-0.7, K=1e8, n=1.3, m=0.01, a=0.04)
+    assert solitary_wave_speed_from_velocity(0.7, K=1e8, n=1.3, m=0.01, a=0.04) == signed
     with pytest.raises(ValueError, match="v_max must be nonzero"):
-        solitary_wave_speed_from_velocity([0.5, 0.0], 1e8, 1.3, 0.04, 0.01)
+        solitary_wave_speed_from_velocity([0.5, 0.0], K=1e8, n=1.3, m=0.01, a=0.04)
 
 
 def test_broadcasting_errors_name_the_arguments():
     with pytest.raises(ValueError, match=r"F_m \(shape \(3,\)\) and K \(shape \(2,\)\)"):
-        solitary_wave_speed([1.0, 2.0, 3.0], [1e8, 1e9], 1.5, 0.04, 0.01)
+        solitary_wave_speed([1.0, 2.0, 3.0], K=[1e8, 1e9], n=1.5, m=0.01, a=0.04)
     with pytest.raises(ValueError, match=r"F_0 \(shape \(2,\)\) and n \(shape \(3,\)\)"):
-        solitary_wave_speed_prestressed(5.0, [1.0, 2.0], 1e8, [1.2, 1.3, 1.5], 0.04, 0.01)
+        solitary_wave_speed_prestressed(5.0, F_0=[1.0, 2.0], K=1e8, n=[1.2, 1.3, 1.5], m=0.01, a=0.04)
     with pytest.raises(ValueError, match=r"n \(shape \(2,\)\) and a \(shape \(3,\)\)"):
-        solitary_wave_width([1.2, 1.3], [0.01, 0.02, 0.03])
+        solitary_wave_width(n=[1.2, 1.3], a=[0.01, 0.02, 0.03])
 
 
 @pytest.mark.parametrize("point", POINTS)
 def test_numeric_speed_equals_paper_formula(point):
     F_m_, K_, n_, a_, m_ = point
     paper = a_ * np.sqrt(2 / (n_ + 1)) * np.sqrt(K_ ** (1 / n_) / m_) * F_m_ ** ((n_ - 1) / (2 * n_))
-    assert np.isclose(solitary_wave_speed(*point), paper, rtol=1e-13, atol=0)  # same formula, rounding only
+    assert np.isclose(
+        solitary_wave_speed(F_m_, K=K_, n=n_, m=m_, a=a_), paper, rtol=1e-13, atol=0
+    )  # same formula, rounding only
 
 
 @pytest.mark.parametrize(("n_", "width"), [(1.5, 1.0), (1.11, 0.04), (1.01, 0.04)])
 def test_profile_equals_high_precision_formula(n_, width):
     F_m_ = 12.0
-    support = solitary_wave_width(n_, width)
+    support = solitary_wave_width(n=n_, a=width)
     xs = np.linspace(-0.6, 0.6, 49) * support
-    got = solitary_wave_profile(xs, F_m_, 1e8, n_, width)
+    got = solitary_wave_profile(xs, F_m=F_m_, K=1e8, n=n_, a=width)
     with mpmath.workdps(30):
         nv = mpmath.mpf(n_)
         omega = (nv - 1) / (nv + 1) * mpmath.sqrt(6 * (nv + 1) / nv) / mpmath.mpf(width)
@@ -397,8 +406,8 @@ def test_profile_equals_high_precision_formula(n_, width):
 def test_profile_shape():
     positive = np.linspace(0.01, 3.0, 300)
     xs = np.concatenate((-positive[::-1], [0.0], positive))
-    F = solitary_wave_profile(xs, 5.0, 1e8, 1.3, 0.04 * 50)
-    half = solitary_wave_width(1.3, 0.04 * 50) / 2
+    F = solitary_wave_profile(xs, F_m=5.0, K=1e8, n=1.3, a=0.04 * 50)
+    half = solitary_wave_width(n=1.3, a=0.04 * 50) / 2
     assert F.max() == 5.0 and F[300] == 5.0  # peak at x = 0
     assert np.array_equal(F, F[::-1])  # even in x
     assert np.all(F[np.abs(xs) >= half] == 0.0) and np.all(F[np.abs(xs) < half] > 0.0)
@@ -408,10 +417,10 @@ def test_near_linear_exponent_is_finite_and_quiet():
     n_ = 1.01
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        V = solitary_wave_speed(10.0, 1e8, n_, 0.04, 0.01)
-        width = solitary_wave_width(n_, 0.04)
-        F = solitary_wave_profile(np.linspace(-2 * width, 2 * width, 2001), 10.0, 1e8, n_, 0.04)
-        V_pre = solitary_wave_speed_prestressed(10.0, 1.0, 1e8, n_, 0.04, 0.01)
+        V = solitary_wave_speed(10.0, K=1e8, n=n_, m=0.01, a=0.04)
+        width = solitary_wave_width(n=n_, a=0.04)
+        F = solitary_wave_profile(np.linspace(-2 * width, 2 * width, 2001), F_m=10.0, K=1e8, n=n_, a=0.04)
+        V_pre = solitary_wave_speed_prestressed(10.0, F_0=1.0, K=1e8, n=n_, m=0.01, a=0.04)
     assert np.isfinite(V) and np.isfinite(width) and np.all(np.isfinite(F)) and np.isfinite(V_pre)
     assert np.isclose(
         width / 0.04, np.pi * 2.01 / (0.01 * np.sqrt(6 * 2.01 / 1.01)), rtol=1e-12, atol=0
@@ -422,35 +431,38 @@ def test_speed_tends_to_the_linear_sound_speed_as_n_tends_to_one():
     K_, a_, m_ = 1e5, 0.04, 0.01
     linear = a_ * np.sqrt(K_ / m_)
     # V_s/c = sqrt(2/(n+1)) K^((1-n)/(2n)) F^((n-1)/(2n)): relative distance O(n - 1) = 1e-9, times log factors ~ 10.
-    assert np.isclose(solitary_wave_speed(10.0, K_, 1 + 1e-9, a_, m_), linear, rtol=1e-7, atol=0)
+    assert np.isclose(solitary_wave_speed(10.0, K=K_, n=1 + 1e-9, m=m_, a=a_), linear, rtol=1e-7, atol=0)
 
 
 def test_broadcasting():
     F = np.array([1.0, 10.0, 100.0])[:, None]
     n_ = np.array([1.1, 1.3])
-    assert solitary_wave_speed(F, 1e8, n_, 0.04, 0.01).shape == (3, 2)
-    assert solitary_wave_speed_from_velocity(-F, 1e8, n_, 0.04, 0.01).shape == (3, 2)
-    assert solitary_wave_width(n_, np.array([[0.03], [0.04]])).shape == (2, 2)
-    assert solitary_wave_profile(np.zeros((4, 1)), 2.0, 1e8, n_, 0.04).shape == (4, 2)
-    assert solitary_wave_speed_prestressed(F, 0.5, 1e8, n_, 0.04, 0.01).shape == (3, 2)
+    assert solitary_wave_speed(F, K=1e8, n=n_, m=0.01, a=0.04).shape == (3, 2)
+    assert solitary_wave_speed_from_velocity(-F, K=1e8, n=n_, m=0.01, a=0.04).shape == (3, 2)
+    assert solitary_wave_width(n=n_, a=np.array([[0.03], [0.04]])).shape == (2, 2)
+    assert solitary_wave_profile(np.zeros((4, 1)), F_m=2.0, K=1e8, n=n_, a=0.04).shape == (4, 2)
+    assert solitary_wave_speed_prestressed(F, F_0=0.5, K=1e8, n=n_, m=0.01, a=0.04).shape == (3, 2)
 
 
 @pytest.mark.parametrize(
     ("call", "message"),
     [
-        (lambda: solitary_wave_speed(10.0, 1e8, 1.0, 0.04, 0.01), "compact solitary wave only for n > 1"),
-        (lambda: solitary_wave_speed(10.0, 1e8, 0.7, 0.04, 0.01), "n must lie in"),
-        (lambda: solitary_wave_width([1.5, 0.9], 0.04), "n > 1"),
-        (lambda: solitary_wave_profile(0.0, 1.0, 1e8, 1.0, 0.04), "n > 1"),
-        (lambda: solitary_wave_speed(0.0, 1e8, 1.5, 0.04, 0.01), "F_m"),
-        (lambda: solitary_wave_speed(1.0, -1e8, 1.5, 0.04, 0.01), "K"),
-        (lambda: solitary_wave_speed(1.0, 1e8, 1.5, 0.0, 0.01), "a"),
-        (lambda: solitary_wave_speed(1.0, 1e8, 1.5, 0.04, 0.0), "m"),
-        (lambda: solitary_wave_speed(np.inf, 1e8, 1.5, 0.04, 0.01), "finite"),
-        (lambda: solitary_wave_speed_from_velocity(0.0, 1e8, 1.5, 0.04, 0.01), "v_max must be nonzero"),
-        (lambda: solitary_wave_speed_prestressed(1.0, 2.0, 1e8, 1.5, 0.04, 0.01), "F_0 must not exceed F_m"),
-        (lambda: solitary_wave_speed_prestressed(1.0, -2.0, 1e8, 1.5, 0.04, 0.01), "F_0"),
-        (lambda: solitary_wave_profile(np.nan, 1.0, 1e8, 1.5, 0.04), "x must be finite"),
+        (lambda: solitary_wave_speed(10.0, K=1e8, n=1.0, m=0.01, a=0.04), "compact solitary wave only for n > 1"),
+        (lambda: solitary_wave_speed(10.0, K=1e8, n=0.7, m=0.01, a=0.04), "n must lie in"),
+        (lambda: solitary_wave_width(n=[1.5, 0.9], a=0.04), "n > 1"),
+        (lambda: solitary_wave_profile(0.0, F_m=1.0, K=1e8, n=1.0, a=0.04), "n > 1"),
+        (lambda: solitary_wave_speed(0.0, K=1e8, n=1.5, m=0.01, a=0.04), "F_m"),
+        (lambda: solitary_wave_speed(1.0, K=-1e8, n=1.5, m=0.01, a=0.04), "K"),
+        (lambda: solitary_wave_speed(1.0, K=1e8, n=1.5, m=0.01, a=0.0), "a"),
+        (lambda: solitary_wave_speed(1.0, K=1e8, n=1.5, m=0.0, a=0.04), "m"),
+        (lambda: solitary_wave_speed(np.inf, K=1e8, n=1.5, m=0.01, a=0.04), "finite"),
+        (lambda: solitary_wave_speed_from_velocity(0.0, K=1e8, n=1.5, m=0.01, a=0.04), "v_max must be nonzero"),
+        (
+            lambda: solitary_wave_speed_prestressed(1.0, F_0=2.0, K=1e8, n=1.5, m=0.01, a=0.04),
+            "F_0 must not exceed F_m",
+        ),
+        (lambda: solitary_wave_speed_prestressed(1.0, F_0=-2.0, K=1e8, n=1.5, m=0.01, a=0.04), "F_0"),
+        (lambda: solitary_wave_profile(np.nan, F_m=1.0, K=1e8, n=1.5, a=0.04), "x must be finite"),
     ],
 )
 def test_bad_input(call, message):
@@ -460,7 +472,7 @@ def test_bad_input(call, message):
 
 def test_non_numeric_input():
     with pytest.raises(TypeError, match="F_m"):
-        solitary_wave_speed("ten", 1e8, 1.5, 0.04, 0.01)
+        solitary_wave_speed("ten", K=1e8, n=1.5, m=0.01, a=0.04)
 
 
 # --- properties -----------------------------------------------------------------------------------------
@@ -477,41 +489,43 @@ masses = st.floats(1e-4, 1.0)
 def test_speed_increases_with_force(F1, F2, n_, K_, a_, m_):
     lo, hi = sorted((F1, F2))
     if hi > lo * (1 + 1e-6):
-        assert solitary_wave_speed(lo, K_, n_, a_, m_) < solitary_wave_speed(hi, K_, n_, a_, m_)
+        assert solitary_wave_speed(lo, K=K_, n=n_, m=m_, a=a_) < solitary_wave_speed(hi, K=K_, n=n_, m=m_, a=a_)
 
 
 @settings(derandomize=True, max_examples=60, deadline=None)
 @given(forces, exponents, stiffness, spacing, masses)
 def test_velocity_and_force_give_the_same_speed(F_m_, n_, K_, a_, m_):
-    V = solitary_wave_speed(F_m_, K_, n_, a_, m_)
+    V = solitary_wave_speed(F_m_, K=K_, n=n_, m=m_, a=a_)
     xi_peak = (F_m_ / K_) ** (1 / n_) / a_
     # v_max = -V_s xi_max (Eq. (B18)); double-precision round trip through powers: 1e-12.
-    assert np.isclose(solitary_wave_speed_from_velocity(-V * xi_peak, K_, n_, a_, m_), V, rtol=1e-12, atol=0)
+    assert np.isclose(solitary_wave_speed_from_velocity(-V * xi_peak, K=K_, n=n_, m=m_, a=a_), V, rtol=1e-12, atol=0)
 
 
 @settings(derandomize=True, max_examples=60, deadline=None)
 @given(forces, st.floats(0.0, 1.0), exponents, stiffness, spacing, masses)
 def test_prestressed_speed_bounds(F_m_, fraction, n_, K_, a_, m_):
     F_0_ = fraction * F_m_
-    V = solitary_wave_speed_prestressed(F_m_, F_0_, K_, n_, a_, m_)
+    V = solitary_wave_speed_prestressed(F_m_, F_0=F_0_, K=K_, n=n_, m=m_, a=a_)
     slack = 1 + 1e-12  # equalities hold at fraction 0 and 1; allow rounding
     # Between the compact wave of the same peak force and the sound speed at the peak ...
-    assert solitary_wave_speed(F_m_, K_, n_, a_, m_) <= V * slack
-    assert V <= linear_sound_speed(F_m_, K_, n_, a_, m_) * slack
+    assert solitary_wave_speed(F_m_, K=K_, n=n_, m=m_, a=a_) <= V * slack
+    assert V <= linear_sound_speed(F_m_, K=K_, n=n_, m=m_, a=a_) * slack
     # ... and supersonic with respect to the pre-stretched chain.
-    assert linear_sound_speed(F_0_, K_, n_, a_, m_) <= V * slack
+    assert linear_sound_speed(F_0_, K=K_, n=n_, m=m_, a=a_) <= V * slack
 
 
 @settings(derandomize=True, max_examples=40, deadline=None)
 @given(forces, exponents, stiffness, spacing, masses)
 def test_prestressed_limits_numerically(F_m_, n_, K_, a_, m_):
-    compact = solitary_wave_speed(F_m_, K_, n_, a_, m_)
+    compact = solitary_wave_speed(F_m_, K=K_, n=n_, m=m_, a=a_)
     # F_0/F_m = 1e-12: V^2 moves by O((F_0/F_m)^(1/n)) <= 1e-12^(1/3) = 1e-4 relative.
-    assert np.isclose(solitary_wave_speed_prestressed(F_m_, 1e-12 * F_m_, K_, n_, a_, m_), compact, rtol=2e-4, atol=0)
-    sound = linear_sound_speed(F_m_, K_, n_, a_, m_)
+    assert np.isclose(
+        solitary_wave_speed_prestressed(F_m_, F_0=1e-12 * F_m_, K=K_, n=n_, m=m_, a=a_), compact, rtol=2e-4, atol=0
+    )
+    sound = linear_sound_speed(F_m_, K=K_, n=n_, m=m_, a=a_)
     # F_m/F_0 = 1 + 1e-9: V moves by O(1e-9) relative.
     assert np.isclose(
-        solitary_wave_speed_prestressed(F_m_, F_m_ / (1 + 1e-9), K_, n_, a_, m_), sound, rtol=1e-8, atol=0
+        solitary_wave_speed_prestressed(F_m_, F_0=F_m_ / (1 + 1e-9), K=K_, n=n_, m=m_, a=a_), sound, rtol=1e-8, atol=0
     )
 
 
@@ -520,4 +534,4 @@ def test_prestressed_limits_numerically(F_m_, n_, K_, a_, m_):
 def test_width_decreases_with_exponent(n1, n2, a_):
     lo, hi = sorted((n1, n2))
     if hi > lo + 1e-6:
-        assert solitary_wave_width(hi, a_) < solitary_wave_width(lo, a_)
+        assert solitary_wave_width(n=hi, a=a_) < solitary_wave_width(n=lo, a=a_)

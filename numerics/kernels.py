@@ -1,0 +1,640 @@
+r"""Compiled kernels of the engine: the right-hand sides of networks and of the ring-resolved chain, an
+adaptive Dormand-Prince 5(4) pair with dense output and velocity Verlet, whole time loops in Numba.
+
+The same models as :mod:`ringchain.numerics.network` and :mod:`ringchain.numerics.ring_chain`, written as
+loops over plain arrays (no Python object in the time loop), and the same contract: what
+:func:`ringchain.numerics.simulate` calls with ``method="dopri5"`` or ``method="verlet"``.  The NumPy and
+SciPy paths stay as the independent reference the tests compare against.
+
+Models.  A model is packed once (:func:`pack_network`, :func:`pack_ring_chain`) into a :class:`Packed`
+tuple of arrays of fixed types, whatever its kind, so that every kernel compiles once per process (once
+ever, with the disk cache) and not once per chain:
+
+- a network: per link its two sites (``-1`` for the support), its law's kind and parameters (a row of
+  ``PARAMETERS`` numbers: K, n, gamma for :class:`~ringchain.numerics.laws.PowerLaw`; K, gamma for
+  :class:`~ringchain.numerics.laws.LinearSpring`; gamma for :class:`~ringchain.numerics.laws.Dashpot`),
+  per site its inverse mass and the acceleration of gravity; in two or three dimensions the links' rest
+  vectors (site i to the far end, a periodic image or an anchor), their spans and prestretches;
+- the ring-resolved chain: one ring's coupling matrix -M^-1 K, the columns of M^-1 at its two contact
+  points, its rigid translation, and the Hertz contact.
+
+A stack of networks (:meth:`~ringchain.numerics.Network.stack`) gives per-member masses and parameters
+(a leading axis of length B; length 1 when every member shares them).
+
+The Runge-Kutta pair.  Dormand and Prince's 5(4) pair with its fourth-order continuous extension
+(Hairer, Norsett and Wanner, Solving ODEs I, Sec. II.5-6), first-same-as-last, step-size control
+0.9 err^(-1/5) within [0.2, 10].  The error is measured in the max norm over the components,
+|err_i| / (atol_i + rtol max(|y_i|, |y_new_i|)): a component at rest, or a run repeated in a batch,
+never changes the steps a run takes (an RMS norm over n components loosens the control by sqrt(n)
+when most of them are idle).  Each member of a batch takes its own steps; the members run in parallel
+over the cores (``prange``).  The samples are read from the continuous extension.
+
+Velocity Verlet.  The fixed-step scheme of :func:`ringchain.numerics.integrate` (kick-drift-kick in
+leapfrog form, samples by cubic Hermite interpolation of the two ends of their step), one member per
+thread.
+
+The disk cache.  Kernels are compiled on first use and cached on disk by Numba in the package's cache
+folder (``<ringchain cache>/numba``, :func:`ringchain.theory._codegen.cache_dir`), so a later process
+loads them.  Every kernel lives in this one module: Numba keys a cached kernel on its own file, and a
+change to a kernel in another module would not invalidate the cache of a kernel calling it.  Where
+the folder is disabled or not writable, the kernels are compiled in every process instead (about
+the cold compile time stated in benchmarks/bench_kernels.py).  No module-level value enters a kernel:
+Numba freezes globals as constants in the compiled code.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import tempfile
+import weakref
+from typing import NamedTuple
+
+import numba
+import numpy as np
+from numba import prange
+
+__all__ = [
+    "Packed",
+    "pack",
+    "pack_network",
+    "pack_ring_chain",
+    "dopri5",
+    "verlet",
+    "accelerations",
+    "CACHE",
+    "PARAMETERS",
+    "LAW_KINDS",
+    "STATUS",
+]
+
+#: Law parameters per link (a row of the packed parameter array).
+PARAMETERS = 4
+
+#: Kind code of each law class the kernels implement, by class name.
+LAW_KINDS = {"PowerLaw": 0, "LinearSpring": 1, "Dashpot": 2}
+
+#: Exit codes of the integrators: 0 done; 1 too many steps; 2 a non-finite state; 3 the step underflowed.
+STATUS = {1: "too many steps", 2: "the state became non-finite", 3: "the step size fell below the time resolution"}
+
+
+def _cache_folder() -> str | None:
+    """The folder of compiled code, or None where the package's cache is disabled or not writable."""
+    from ringchain.theory._codegen import cache_dir
+
+    folder = cache_dir()
+    if folder is None:
+        return None
+    folder = folder / "numba"
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        with tempfile.NamedTemporaryFile(dir=folder):
+            pass
+    except OSError:
+        return None
+    return os.fspath(folder)
+
+
+#: Where compiled kernels are cached (None: compiled in every process).
+CACHE = _cache_folder()
+
+_previous_cache_dir = numba.config.CACHE_DIR
+if CACHE is not None:
+    numba.config.CACHE_DIR = CACHE  # read when each kernel below is decorated; restored at the end of the module
+
+
+def _jit(**options):
+    return numba.njit(cache=CACHE is not None, error_model="numpy", **options)
+
+
+class Packed(NamedTuple):
+    """A model as the kernels take it (see the module notes); build it with :func:`pack_network` or
+    :func:`pack_ring_chain`."""
+
+    ints: np.ndarray  # [kind (0 network, 1 rings), dim, n_coords, damped, n_sites, n_links, rings, dofs, fixed, path]
+    floats: np.ndarray  # [K_c, exponent] of the ring-resolved chain's contact
+    inv_mass: np.ndarray  # (Bm, n_coords)
+    gravity: np.ndarray  # (Bm, n_coords): gravity's acceleration per unit g; for rings, the rigid mode
+    li: np.ndarray  # (L,) int64
+    lj: np.ndarray  # (L,) int64, -1 for the support
+    kind: np.ndarray  # (L,) int64
+    par: np.ndarray  # (Bp, L, PARAMETERS)
+    rest_vectors: np.ndarray  # (L, dim): from site i to the link's far end at rest (Network.rest_vectors)
+    spans: np.ndarray  # (L,): their lengths (Network.spans)
+    prestretch: np.ndarray  # (L,): the links' extensions at rest (Network.prestretch)
+    coupling: np.ndarray  # (n, n)
+    inv_top: np.ndarray  # (n,)
+    inv_bottom: np.ndarray  # (n,)
+
+
+def _empty(*shape, dtype=float):
+    return np.zeros(shape, dtype=dtype)
+
+
+_PACKED: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def pack(model) -> Packed:
+    """The :class:`Packed` form of a network or a ring-resolved chain (the dynamics of a model), made once."""
+    if model not in _PACKED:
+        _PACKED[model] = pack_ring_chain(model) if hasattr(model, "ring") else pack_network(model)
+    return _PACKED[model]
+
+
+def pack_network(net) -> Packed:
+    """The :class:`Packed` form of a :class:`~ringchain.numerics.Network` (or of a stack of them)."""
+    L, S, d = net.n_links, net.n_sites, net.dim
+    batch = net.batch_shape
+    Bp = 1
+    for law, _ in net.groups:
+        if any(np.ndim(p) > 1 for p in law.params.values()):
+            Bp = batch[0]
+    kind = np.empty(L, dtype=np.int64)
+    par = np.zeros((Bp, L, PARAMETERS))
+    for law, index in net.groups:
+        name = type(law).__name__
+        if name not in LAW_KINDS:
+            raise ValueError(f"the compiled methods do not know the law {name}; use method='odeint'")
+        kind[index] = LAW_KINDS[name]
+        for column, value in enumerate(law.params.values()):
+            value = np.asarray(value, dtype=float)
+            par[:, index, column] = value if value.ndim < 2 else value.reshape(Bp, -1)
+    mass = np.atleast_2d(np.repeat(net.mass, d, axis=-1))
+    per_unit_g = np.zeros((*batch, S, d))  # gravity acts on the weight masses, along -axis (the last component)
+    per_unit_g[..., -1] = net.weight_mass / net.mass
+    gravity = np.atleast_2d(per_unit_g.reshape(*batch, S * d))
+    planar = net.positions is not None and d > 1
+    rest_vectors = np.asarray(net.rest_vectors, dtype=float) if planar else np.zeros((L, d))
+    spans = np.asarray(net.spans, dtype=float) if planar else np.zeros(L)
+    prestretch = np.asarray(net.prestretch, dtype=float) if planar else np.zeros(L)
+    path = d == 1 and np.array_equal(net.i, np.arange(L))  # a chain: link k joins site k to k + 1 (or the support)
+    ints = np.array([0, d, net.n_coords, int(net.damped), S, L, 0, 0, 0, int(path)], dtype=np.int64)
+    return Packed(ints, _empty(2), np.ascontiguousarray(1.0 / mass), np.ascontiguousarray(gravity, dtype=float),
+                  net.i.astype(np.int64), net.j.astype(np.int64), kind, par, np.ascontiguousarray(rest_vectors),
+                  np.ascontiguousarray(spans), np.ascontiguousarray(prestretch), _empty(0, 0), _empty(0),
+                  _empty(0))  # fmt: skip
+
+
+def pack_ring_chain(chain) -> Packed:
+    """The :class:`Packed` form of a :class:`~ringchain.numerics.RingChain`."""
+    ring, N, n = chain.ring, chain.n_rings, chain.ring.n_dof
+    coupling = -(ring.inverse_mass @ ring.stiffness).T
+    ints = np.array([1, 1, N * n, 0, 0, 0, N, n, int(chain.support == "fixed"), 0], dtype=np.int64)
+    return Packed(ints, np.array([chain.K_c, chain.n]), _empty(1, 0), np.atleast_2d(ring.rigid.astype(float)),
+                  _empty(0, dtype=np.int64), _empty(0, dtype=np.int64), _empty(0, dtype=np.int64),
+                  _empty(1, 0, PARAMETERS), _empty(0, 1), _empty(0, 1), _empty(0),
+                  np.ascontiguousarray(coupling), np.ascontiguousarray(ring.inverse_mass[:, 1]),
+                  np.ascontiguousarray(ring.inverse_mass[:, 0]))  # fmt: skip
+
+
+# -- the laws --------------------------------------------------------------------------------------------------
+@_jit()
+def _law(kind, p0, p1, p2, e, rate):
+    """(force, elastic force) of one link: the :mod:`ringchain.numerics.laws` of kind ``kind``, parameters p0-p2."""
+    if kind == 0:  # PowerLaw: [K delta^n + gamma delta_dot]_+ where engaged (K, n, gamma)
+        if e <= 0.0:
+            return 0.0, 0.0
+        elastic = p0 * e * math.sqrt(e) if p1 == 1.5 else p0 * e**p1
+        force = elastic + p2 * rate
+        return (force if force > 0.0 else 0.0), elastic
+    if kind == 1:  # LinearSpring: K delta + gamma delta_dot (K, gamma)
+        elastic = p0 * e
+        return elastic + p1 * rate, elastic
+    return p0 * rate, 0.0  # Dashpot (gamma)
+
+
+# -- right-hand sides ----------------------------------------------------------------------------------------
+@_jit()
+def _network_accelerations(m, b, g, x, u, out):
+    """Accelerations of member ``b`` of a packed network under gravity ``g`` into ``out``; returns the power its
+    dashpots take out."""
+    d, n, damped = m.ints[1], m.ints[2], m.ints[3] != 0
+    bm = b * (m.inv_mass.shape[0] > 1)  # one row shared by every member, or one per member (integers only:
+    bp = b * (m.par.shape[0] > 1)  # a prange index is unsigned, and b if ... else 0 would unify to a float)
+    par, li, lj, kind = m.par[bp], m.li, m.lj, m.kind
+    for c in range(n):
+        out[c] = 0.0
+    power = 0.0
+    L = li.size
+    if m.ints[9]:  # a path (every chain): link k joins site k to site k + 1, the last one perhaps to the support
+        for k in range(L):
+            if k + 1 < n:
+                e = x[k + 1] - x[k]
+                rate = u[k + 1] - u[k] if damped else 0.0
+            else:
+                e = -x[k]
+                rate = -u[k] if damped else 0.0
+            force, elastic = _law(kind[k], par[k, 0], par[k, 1], par[k, 2], e, rate)
+            if damped:
+                power += (force - elastic) * rate
+            out[k] += force
+            if k + 1 < n:
+                out[k + 1] -= force
+    elif d == 1:
+        for k in range(L):
+            i, j = li[k], lj[k]
+            if j >= 0:
+                e = x[j] - x[i]
+                rate = u[j] - u[i] if damped else 0.0
+            else:
+                e = -x[i]
+                rate = -u[i] if damped else 0.0
+            force, elastic = _law(kind[k], par[k, 0], par[k, 1], par[k, 2], e, rate)
+            if damped:
+                power += (force - elastic) * rate
+            out[i] += force
+            if j >= 0:
+                out[j] -= force
+    else:
+        # The extension as Network.extensions computes it: |b + w| - |b| = (2 b.w + w.w)/(|b + w| + |b|),
+        # from the rest vector b and the relative displacement w of the ends, free of the cancellation of
+        # two lengths of order |b|, plus the prestretch.
+        for k in range(L):
+            i, j = li[k], lj[k]
+            length2 = 0.0
+            stretch = 0.0
+            for c in range(d):
+                w = (0.0 if j < 0 else x[j * d + c]) - x[i * d + c]
+                length2 += (m.rest_vectors[k, c] + w) ** 2
+                stretch += (2.0 * m.rest_vectors[k, c] + w) * w
+            length = math.sqrt(length2)
+            e = stretch / (length + m.spans[k]) + m.prestretch[k]
+            rate = 0.0
+            if damped:
+                for c in range(d):
+                    w = (0.0 if j < 0 else x[j * d + c]) - x[i * d + c]
+                    du = (0.0 if j < 0 else u[j * d + c]) - u[i * d + c]
+                    rate += du * (m.rest_vectors[k, c] + w) / length
+            force, elastic = _law(kind[k], par[k, 0], par[k, 1], par[k, 2], e, rate)
+            if damped:
+                power += (force - elastic) * rate
+            for c in range(d):
+                w = (0.0 if j < 0 else x[j * d + c]) - x[i * d + c]
+                component = force * (m.rest_vectors[k, c] + w) / length
+                out[i * d + c] += component
+                if j >= 0:
+                    out[j * d + c] -= component
+    inv_mass, gravity = m.inv_mass[bm], m.gravity[bm]
+    for c in range(n):
+        out[c] = out[c] * inv_mass[c] - g * gravity[c]
+    return power
+
+
+@_jit()
+def _ring_accelerations(m, x, out):
+    """Accelerations of the ring-resolved chain without gravity (:meth:`~ringchain.numerics.RingChain.stepper`)."""
+    N, n, fixed = m.ints[6], m.ints[7], m.ints[8]
+    K_c, exponent = m.floats[0], m.floats[1]
+    for r in range(N):
+        for a in range(n):
+            total = 0.0
+            for c in range(n):
+                total += x[r * n + c] * m.coupling[c, a]
+            out[r * n + a] = total
+    for r in range(N):  # the contact above ring r: with ring r + 1, or the support
+        if r < N - 1:
+            e = x[(r + 1) * n] - x[r * n + 1]
+        elif fixed:
+            e = -x[r * n + 1]
+        else:
+            continue
+        force = 0.0
+        if e > 0.0:
+            force = K_c * e * math.sqrt(e) if exponent == 1.5 else K_c * e**exponent
+        for a in range(n):
+            out[r * n + a] += force * m.inv_top[a]  # pulled up at its top
+            if r < N - 1:
+                out[(r + 1) * n + a] -= force * m.inv_bottom[a]  # the ring above pulled down at its bottom
+
+
+@_jit()
+def _accelerations(m, b, g, x, u, out):
+    """Accelerations of member ``b`` of either kind of model (the packed kind says which)."""
+    if m.ints[0] == 0:
+        return _network_accelerations(m, b, g, x, u, out)
+    _ring_accelerations(m, x, out)
+    n, N = m.ints[7], m.ints[6]
+    rigid = m.gravity[0]
+    for r in range(N):
+        for a in range(n):
+            out[r * n + a] -= g * rigid[a]
+    return 0.0
+
+
+@_jit()
+def _derivative(m, b, g, y, dy, N):
+    """dy/dt of the state y = [x (N), u (N), W (dissipated energy, if damped)]."""
+    power = _accelerations(m, b, g, y[:N], y[N : 2 * N], dy[N : 2 * N])
+    for c in range(N):
+        dy[c] = y[N + c]
+    if y.size > 2 * N:
+        dy[2 * N] = power
+
+
+def accelerations(packed: Packed, x, u=None, g=9.80665, member=0) -> np.ndarray:
+    """Accelerations of one state (m/s^2), for tests: the compiled right-hand side against the NumPy one."""
+    x = np.ascontiguousarray(x, dtype=float)
+    u = np.zeros_like(x) if u is None else np.ascontiguousarray(u, dtype=float)
+    out = np.empty_like(x)
+    _accelerations(packed, member, float(g), x, u, out)
+    return out
+
+
+# -- Dormand-Prince 5(4) -----------------------------------------------------------------------------------------
+@_jit()
+def _error_norm(err, y, y_new, atol, rtol):
+    worst = 0.0
+    for c in range(err.size):
+        scale = atol[c] + rtol * max(abs(y[c]), abs(y_new[c]))
+        ratio = abs(err[c]) / scale
+        if not ratio <= worst:  # NaN too
+            worst = ratio
+    return worst
+
+
+@_jit()
+def _group_derivative(m, members, g, y, dy, N, n):
+    """dy/dt of a group of members stepped together: their states one after the other in ``y``."""
+    if members.size == 1:
+        _derivative(m, members[0], g, y, dy, N)
+        return
+    for q in range(members.size):
+        _derivative(m, members[q], g, y[q * n : (q + 1) * n], dy[q * n : (q + 1) * n], N)
+
+
+@_jit()
+def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps):
+    """The runs ``members`` stepped together (one step size for the group; one member: its own steps).
+
+    ``y0`` and ``atol`` are (G, n), the states of the group's members; ``out_x``, ``out_u`` (B, T, K) and ``out_w``
+    (B, T) are filled at rows ``members``.  Returns (status, evaluations, steps, rejections, final states (G, n)).
+    """
+    G, n = y0.shape
+    size = G * n
+    y = y0.copy().reshape(size)
+    tolerance = atol.reshape(size)
+    stages = np.empty((7, size))
+    k1, k2, k3, k4, k5, k6, k7 = stages[0], stages[1], stages[2], stages[3], stages[4], stages[5], stages[6]
+    y_stage, y_new, err = np.empty(size), np.empty(size), np.empty(size)
+    T = t_eval.size
+    t_end = t_eval[T - 1]
+    t = 0.0
+    j = 0
+    damped = n > 2 * N
+    K = keep.size
+    while j < T and t_eval[j] <= 0.0:  # samples at the start
+        for q in range(G):
+            b, o = members[q], q * n
+            for c in range(K):
+                out_x[b, j, c], out_u[b, j, c] = y[o + keep[c]], y[o + N + keep[c]]
+            out_w[b, j] = y[o + 2 * N] if damped else 0.0
+        j += 1
+    _group_derivative(m, members, g, y, k1, N, n)
+    evaluations = 1
+    if j == T:
+        return 0, evaluations, 0, 0, y.reshape(G, n)
+    # Initial step (Hairer's HINIT): the first-derivative estimate, then a second-order correction.
+    d0, d1 = 0.0, 0.0
+    for c in range(size):
+        scale = tolerance[c] + rtol * abs(y[c])
+        d0 = max(d0, abs(y[c]) / scale)
+        d1 = max(d1, abs(k1[c]) / scale)
+    h = 1e-6 * t_end if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
+    h = min(h, t_end)
+    for c in range(size):
+        y_stage[c] = y[c] + h * k1[c]
+    _group_derivative(m, members, g, y_stage, k2, N, n)
+    evaluations += 1
+    d2 = 0.0
+    for c in range(size):
+        scale = tolerance[c] + rtol * abs(y[c])
+        d2 = max(d2, abs(k2[c] - k1[c]) / scale / h)
+    h1 = max(1e-6 * h, 1e-3 * h) if max(d1, d2) <= 1e-15 else (0.01 / max(d1, d2)) ** 0.2
+    h = min(100.0 * h, h1, t_end)
+    steps, rejections = 0, 0
+    rejected_last = False
+    while t < t_end:
+        if steps + rejections >= max_steps:
+            return 1, evaluations, steps, rejections, y.reshape(G, n)
+        if t + h > t_end:
+            h = t_end - t
+        if h <= 1e-14 * max(abs(t), t_end):
+            return 3, evaluations, steps, rejections, y.reshape(G, n)
+        for c in range(size):
+            y_stage[c] = y[c] + h * (0.2 * k1[c])
+        _group_derivative(m, members, g, y_stage, k2, N, n)
+        for c in range(size):
+            y_stage[c] = y[c] + h * (3.0 / 40.0 * k1[c] + 9.0 / 40.0 * k2[c])
+        _group_derivative(m, members, g, y_stage, k3, N, n)
+        for c in range(size):
+            y_stage[c] = y[c] + h * (44.0 / 45.0 * k1[c] - 56.0 / 15.0 * k2[c] + 32.0 / 9.0 * k3[c])
+        _group_derivative(m, members, g, y_stage, k4, N, n)
+        for c in range(size):
+            y_stage[c] = y[c] + h * (19372.0 / 6561.0 * k1[c] - 25360.0 / 2187.0 * k2[c] + 64448.0 / 6561.0 * k3[c]
+                                     - 212.0 / 729.0 * k4[c])  # fmt: skip
+        _group_derivative(m, members, g, y_stage, k5, N, n)
+        for c in range(size):
+            y_stage[c] = y[c] + h * (9017.0 / 3168.0 * k1[c] - 355.0 / 33.0 * k2[c] + 46732.0 / 5247.0 * k3[c]
+                                     + 49.0 / 176.0 * k4[c] - 5103.0 / 18656.0 * k5[c])  # fmt: skip
+        _group_derivative(m, members, g, y_stage, k6, N, n)
+        for c in range(size):
+            y_new[c] = y[c] + h * (35.0 / 384.0 * k1[c] + 500.0 / 1113.0 * k3[c] + 125.0 / 192.0 * k4[c]
+                                   - 2187.0 / 6784.0 * k5[c] + 11.0 / 84.0 * k6[c])  # fmt: skip
+        _group_derivative(m, members, g, y_new, k7, N, n)
+        evaluations += 6
+        for c in range(size):
+            err[c] = h * (71.0 / 57600.0 * k1[c] - 71.0 / 16695.0 * k3[c] + 71.0 / 1920.0 * k4[c]
+                          - 17253.0 / 339200.0 * k5[c] + 22.0 / 525.0 * k6[c] - 1.0 / 40.0 * k7[c])  # fmt: skip
+        error = _error_norm(err, y, y_new, tolerance, rtol)
+        if not math.isfinite(error):
+            h *= 0.2
+            rejections += 1
+            rejected_last = True
+            continue
+        factor = 0.9 * error**-0.2 if error > 0.0 else 10.0
+        if error <= 1.0:
+            steps += 1
+            t_new = t + h
+            # Samples in (t, t + h]: the continuous extension of the pair (Hairer's contd5).
+            while j < T and t_eval[j] <= t_new * (1.0 + 1e-15):
+                theta = (t_eval[j] - t) / h
+                theta1 = 1.0 - theta
+                for q in range(G):
+                    b, o = members[q], q * n
+                    for c in range(2 * K + (1 if damped else 0)):
+                        if c < K:
+                            r = o + keep[c]
+                        elif c < 2 * K:
+                            r = o + N + keep[c - K]
+                        else:
+                            r = o + 2 * N
+                        dy = y_new[r] - y[r]
+                        bspl = h * k1[r] - dy
+                        r4 = dy - h * k7[r] - bspl
+                        r5 = h * (-12715105075.0 / 11282082432.0 * k1[r] + 87487479700.0 / 32700410799.0 * k3[r]
+                                  - 10690763975.0 / 1880347072.0 * k4[r] + 701980252875.0 / 199316789632.0 * k5[r]
+                                  - 1453857185.0 / 822651844.0 * k6[r] + 69997945.0 / 29380423.0 * k7[r])  # fmt: skip
+                        value = y[r] + theta * (dy + theta1 * (bspl + theta * (r4 + theta1 * r5)))
+                        if c < K:
+                            out_x[b, j, c] = value
+                        elif c < 2 * K:
+                            out_u[b, j, c - K] = value
+                        else:
+                            out_w[b, j] = value
+                j += 1
+            for c in range(size):
+                y[c] = y_new[c]
+                k1[c] = k7[c]  # first same as last
+            t = t_new
+            if rejected_last:
+                factor = min(factor, 1.0)
+            rejected_last = False
+            h *= min(10.0, max(0.2, factor))
+            for c in range(size):
+                if not math.isfinite(y[c]):
+                    return 2, evaluations, steps, rejections, y.reshape(G, n)
+        else:
+            rejections += 1
+            rejected_last = True
+            h *= max(0.2, factor)
+    return 0, evaluations, steps, rejections, y.reshape(G, n)
+
+
+@_jit()
+def _dopri5_shared(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, status, stats, final):
+    members = np.arange(y0.shape[0])
+    code, evaluations, steps, rejections, y = _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x,
+                                                            out_u, out_w, max_steps)  # fmt: skip
+    for b in range(y0.shape[0]):
+        status[b], stats[b, 0], stats[b, 1], stats[b, 2] = code, evaluations, steps, rejections
+        final[b] = y[b]
+
+
+@_jit()
+def _dopri5_serial(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, status, stats, final):
+    for b in range(y0.shape[0]):
+        code, evaluations, steps, rejections, y = _dopri5_group(
+            m, np.array([b]), g, y0[b : b + 1], t_eval, rtol, atol[b : b + 1], keep, N, out_x, out_u, out_w, max_steps
+        )
+        status[b], stats[b, 0], stats[b, 1], stats[b, 2] = code, evaluations, steps, rejections
+        final[b] = y[0]
+
+
+@_jit(parallel=True)
+def _dopri5_parallel(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, status, stats, final):
+    for b in prange(y0.shape[0]):
+        code, evaluations, steps, rejections, y = _dopri5_group(
+            m, np.array([b]), g, y0[b : b + 1], t_eval, rtol, atol[b : b + 1], keep, N, out_x, out_u, out_w, max_steps
+        )
+        status[b], stats[b, 0], stats[b, 1], stats[b, 2] = code, evaluations, steps, rejections
+        final[b] = y[0]
+
+
+def dopri5(packed: Packed, y0, t_eval, rtol, atol, keep, g, *, max_steps=10_000_000, parallel=None, shared=False):
+    """Integrate B runs (rows of ``y0``, each [x, u, W if damped]) over ``t_eval`` with the 5(4) pair.
+
+    Returns x and u of the coordinates ``keep`` (B, T, K), W (B, T), the final states (B, n), the exit
+    status of each run (0 done, :data:`STATUS` otherwise) and its counts (evaluations, accepted and
+    rejected steps), shape (B, 3).  ``atol`` has one row per run.  Each run takes its own steps, on Numba's
+    threads when ``parallel`` (default: more than one run); ``shared``: the runs take one step size, the
+    error measured over all of them (forward differences between runs then share their steps).
+    """
+    y0 = np.ascontiguousarray(y0, dtype=float)
+    B = y0.shape[0]
+    T, K = t_eval.size, keep.size
+    N = int(packed.ints[2])
+    out_x, out_u, out_w = np.empty((B, T, K)), np.empty((B, T, K)), np.zeros((B, T))
+    status, stats, final = np.zeros(B, dtype=np.int64), np.zeros((B, 3), dtype=np.int64), np.empty_like(y0)
+    if shared:
+        kernel = _dopri5_shared
+    else:
+        kernel = _dopri5_parallel if (B > 1 if parallel is None else parallel) else _dopri5_serial
+    kernel(packed, float(g), y0, np.ascontiguousarray(t_eval, dtype=float), float(rtol),
+           np.ascontiguousarray(atol, dtype=float), np.ascontiguousarray(keep, dtype=np.int64), N, out_x, out_u, out_w,
+           int(max_steps), status, stats, final)  # fmt: skip
+    return out_x, out_u, out_w, final, status, stats
+
+
+# -- velocity Verlet -----------------------------------------------------------------------------------------------
+@_jit()
+def _verlet_member(m, b, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u):
+    N = x0.size
+    x, u_half = x0.copy(), np.empty(N)
+    a = np.empty(N)
+    x_prev, u_prev = np.empty(keep.size), np.empty(keep.size)
+    _accelerations(m, b, g, x, u0, a)
+    half = 0.5 * dt
+    for c in range(N):
+        u_half[c] = u0[c] + half * a[c]
+    T = t_eval.size
+    j = 0
+    while j < T and t_eval[j] / dt - 1e-9 <= 0.0:  # samples at the start (step "-1")
+        for c in range(keep.size):
+            out_x[j, c], out_u[j, c] = x[keep[c]], u0[keep[c]]
+        j += 1
+    for k in range(n_steps):
+        sampling = j < T and math.ceil(t_eval[j] / dt - 1e-9) - 1 == k
+        if sampling:
+            for c in range(keep.size):
+                x_prev[c] = x[keep[c]]
+                u_prev[c] = u_half[keep[c]] - half * a[keep[c]]
+        for c in range(N):
+            x[c] += dt * u_half[c]
+        _accelerations(m, b, g, x, u_half, a)  # undamped: the velocities are not read
+        while j < T and math.ceil(t_eval[j] / dt - 1e-9) - 1 == k:
+            s = t_eval[j] / dt - k
+            h00, h10, h01, h11 = 2 * s**3 - 3 * s**2 + 1, s**3 - 2 * s**2 + s, -2 * s**3 + 3 * s**2, s**3 - s**2
+            d00, d10, d01, d11 = 6 * s**2 - 6 * s, 3 * s**2 - 4 * s + 1, -6 * s**2 + 6 * s, 3 * s**2 - 2 * s
+            for c in range(keep.size):
+                q = keep[c]
+                u_now = u_half[q] + half * a[q]
+                out_x[j, c] = h00 * x_prev[c] + h10 * dt * u_prev[c] + h01 * x[q] + h11 * dt * u_now
+                out_u[j, c] = (d00 * x_prev[c] + d01 * x[q]) / dt + d10 * u_prev[c] + d11 * u_now
+            j += 1
+        for c in range(N):
+            u_half[c] += dt * a[c]
+        if not math.isfinite(x[0] + u_half[0]):
+            return 2, x, u_half
+    u = np.empty(N)
+    for c in range(N):
+        u[c] = u_half[c] - half * a[c]
+    for c in range(N):
+        if not (math.isfinite(x[c]) and math.isfinite(u[c])):
+            return 2, x, u
+    return 0, x, u
+
+
+@_jit()
+def _verlet_serial(m, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, status, final_x, final_u):
+    for b in range(x0.shape[0]):
+        code, x, u = _verlet_member(m, b, g, x0[b], u0[b], t_eval, n_steps, dt, keep, out_x[b], out_u[b])
+        status[b] = code
+        final_x[b], final_u[b] = x, u
+
+
+@_jit(parallel=True)
+def _verlet_parallel(m, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, status, final_x, final_u):
+    for b in prange(x0.shape[0]):
+        code, x, u = _verlet_member(m, b, g, x0[b], u0[b], t_eval, n_steps, dt, keep, out_x[b], out_u[b])
+        status[b] = code
+        final_x[b], final_u[b] = x, u
+
+
+def verlet(packed: Packed, x0, u0, t_eval, t_end, dt, keep, g, *, parallel=None):
+    """Velocity Verlet over ``t_eval`` (steps of ``t_end``/ceil(t_end/dt)): x and u of ``keep`` (B, T, K), the
+    final x and u (B, n), the exit status of each run and the step taken."""
+    x0 = np.ascontiguousarray(x0, dtype=float)
+    u0 = np.ascontiguousarray(u0, dtype=float)
+    B = x0.shape[0]
+    n_steps = max(1, math.ceil(t_end / dt))
+    dt = t_end / n_steps
+    T, K = t_eval.size, keep.size
+    out_x, out_u = np.empty((B, T, K)), np.empty((B, T, K))
+    status, final_x, final_u = np.zeros(B, dtype=np.int64), np.empty_like(x0), np.empty_like(u0)
+    kernel = _verlet_parallel if (B > 1 if parallel is None else parallel) else _verlet_serial
+    kernel(packed, float(g), x0, u0, np.ascontiguousarray(t_eval, dtype=float), int(n_steps), float(dt),
+           np.ascontiguousarray(keep, dtype=np.int64), out_x, out_u, status, final_x, final_u)  # fmt: skip
+    return out_x, out_u, final_x, final_u, status, dt, n_steps
+
+
+numba.config.CACHE_DIR = _previous_cache_dir
