@@ -7,13 +7,15 @@ one engine (:mod:`.integrate`): a new capability is a new law or a new way to la
 The floors, top to bottom (each module imports only the floors below it; no cycle, no
 underscore name reached across modules):
 
-1. the command line: ``cli``, ``fit_cli``, ``_cli_options`` -- parse, call one public function, print;
+1. the command line: ``cli``, ``fit_cli``, ``sheet_cli``, ``_cli_options`` -- parse, call one public
+   function, print;
 2. jobs: ``paper``, ``experiment``, ``sweep``, ``fit``, ``fit_dynamic``, ``junction``,
    ``effective_mass``, ``contact_bem`` -- the paper's tables and figures, a drop read at two
    sensors, grids, inverse problems, the impedance experiment, the effective mass, the
    numerical contact at any angle;
-3. layouts: ``chain``, ``chain_file``, ``ring_chain``, ``ring_beam`` -- a Chain builds a Network;
-   chain files; the ring-resolved chain (its own dynamics) and the ring as a curved beam;
+3. layouts: ``chain``, ``chain_file``, ``ring_chain``, ``ring_beam``, ``sheet``, ``sheet_runs`` -- a Chain
+   builds a Network; chain files; the ring-resolved chain (its own dynamics) and the ring as a curved
+   beam; sheets of interlinked rings in two dimensions and their runs;
 4. the engine: ``integrate``, ``results``, ``traces``, ``plots``, ``executors``, ``signals`` --
    the integrator layer, result records, measurement files, figures, where sweeps run,
    reading pulses;
@@ -37,6 +39,9 @@ What each module owns:
 - :mod:`.chain` -- :class:`Chain`: the power-law (Eq. (7)) and dual-spring (Eqs. (5)-(6)) chains,
   uniform or changing along their length, hanging or free; their drop protocol and striker;
   ``Chain.network()``; :mod:`.chain_file` reads chains in TOML;
+- :mod:`.sheet` -- :class:`Sheet`: square (4-in-1) and triangular (6-in-1) sheets and any layout of
+  rings in a plane, hanging under gravity or pretensioned, the contact law of a ring pair at any angle;
+  :mod:`.sheet_runs` -- :class:`SheetSimulation` (``link_force``, fields in NetCDF), :func:`read_sheet_run`;
 - :mod:`.ring_beam`, :mod:`.ring_chain` -- :class:`RingModel`, :class:`ReducedRing` (a ring as an
   elastic curved beam) and :class:`RingChain` (a chain of them), :func:`simulate_rings`;
 - :mod:`.experiment` -- :func:`~.experiment.run_experiment`: a drop read at two sensors (``ringchain
@@ -76,6 +81,8 @@ from .paper import STIFFNESS_SOURCES, PaperExperiment, paper_chain, paper_experi
 from .results import BatchSimulation, EnergyBudget, NetworkBatch, NetworkSimulation, Simulation
 from .ring_beam import ReducedRing, RingModel
 from .ring_chain import RingChain, RingSimulation, simulate_rings
+from .sheet import Sheet
+from .sheet_runs import SheetBatch, SheetSimulation, read_sheet_run
 from .signals import NoPulseError, PulseError, TruncatedPulseError, UnresolvedPulseError
 from .sweep import Point, sweep, write_csv
 from .traces import DataError, read_speed_amplitude, read_static, read_traces, write_traces
@@ -148,4 +155,8 @@ __all__ = [
     "simulate_rings",
     "predict_effective_mass",
     "fit_effective_mass",
+    "Sheet",
+    "SheetSimulation",
+    "SheetBatch",
+    "read_sheet_run",
 ]

@@ -9,7 +9,8 @@
 - ``ringchain simulate --chain FILE`` / ``ringchain sweep --chain FILE --vary 2.R.last 0.01:0.02:5`` -- a
   chain that changes along its length, described segment by segment in TOML (:mod:`.chain_file`);
 - ``ringchain cache info`` / ``ringchain cache clear`` -- the disk cache of generated code.
-- ``ringchain fit static|speed|traces FILE`` -- parameters from measurements (:mod:`.fit_cli`).
+- ``ringchain fit static|speed|traces FILE`` -- parameters from measurements (:mod:`.fit_cli`);
+- ``ringchain sheet --pattern square --size 40x40`` -- an impact on a sheet of rings (:mod:`.sheet_cli`).
 
 Inputs are SI (m, m/s, N) except contact angles, given in degrees.  Every input and every
 output path is checked before any work (:mod:`ringchain.numerics._cli_options`); a bad one
@@ -26,6 +27,7 @@ import warnings
 from pathlib import Path
 
 from . import _cli_options as opt
+from . import sheet_cli
 from .paper import PAPER_DROP_HEIGHT, PAPER_FIGURES, STIFFNESS_SOURCES
 
 __all__ = ["main", "build_parser"]
@@ -202,7 +204,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     parser = _Parser(prog="ringchain", description=__doc__.split("\n\n")[0], allow_abbrev=False)
     parser.add_argument("--version", action="version", version=f"ringchain {_version()}")
-    sub = parser.add_subparsers(dest="command", required=True, metavar="{paper,ring,simulate,sweep,cache,fit}")
+    sub = parser.add_subparsers(dest="command", required=True, metavar="{paper,ring,simulate,sweep,cache,fit,sheet}")
 
     p = sub.add_parser("paper", help="derive the theory, print the paper's key numbers, write the figures",
                        allow_abbrev=False)  # fmt: skip
@@ -262,6 +264,7 @@ def build_parser() -> argparse.ArgumentParser:
     from .fit_cli import add_parser as add_fit_parser
 
     add_fit_parser(sub, geometry=opt.geometry_options)  # sets its own func (fit_cli.run)
+    sheet_cli.add_parser(sub)  # ringchain sheet: sets its own func (sheet_cli.run)
     return parser
 
 

@@ -60,6 +60,7 @@ def test_every_chapter_is_in_the_table_of_contents_and_back():
         "linear_waves",
         "rings_that_bend",
         "designing",
+        "sheets",
         "fitting",
         "paper_notes",
         "bibliography",
