@@ -155,6 +155,8 @@ _SECONDS_PER_SITE_STEP = 2e-8
 
 # Most LSODA steps between two samples (odeint's mxstep); a run that needs more fails.
 _MAX_STEPS_PER_SAMPLE = 1_000_000
+#: Steps the compiled dopri5 may take per run before it stops with "too many steps".
+_MAX_DOPRI5_STEPS = 10_000_000
 
 
 class IntegrationError(ValueError):
@@ -267,7 +269,8 @@ def _compiled(method, dyn, x0, u0, scales, t_eval, t_end, rtol, atol, dt, g, kee
         columns.append(E[:, None])
         state.append(np.zeros((B, 1)))
     xs, us, w, final, status, counts = kernels.dopri5(packed, np.hstack(state), t_eval, rtol,
-                                                      atol * np.hstack(columns), keep, g, shared=shared)  # fmt: skip
+                                                      atol * np.hstack(columns), keep, g, shared=shared,
+                                                      max_steps=_MAX_DOPRI5_STEPS)  # fmt: skip
     _check_status(method, status, t_end, rtol)
     watch(t_end, final[:, :N], final[:, N : 2 * N], final[:, 2 * N] if dyn.damped else 0.0)
     return xs, us, w, {"method": method, "rtol": rtol, "nfev": int(counts[:, 0].sum()),
