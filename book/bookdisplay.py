@@ -22,6 +22,7 @@ from IPython.display import Markdown, Math, display
 __all__ = [
     "COLOURS",
     "DROP_HEIGHTS",
+    "FORCE_MAP",
     "HIGH_DROP",
     "LOW_DROP",
     "STRIKER",
@@ -60,7 +61,26 @@ COLOURS = {
     "R/r = 4": "#7f7f7f",
     "R/r = 8": "#bcbd22",
     "R/r = 10": "#17becf",
+    # disorder (chapter "Disorder"): the ordered chain, the ensembles by the size of their spread, the two
+    # estimates of the mean speed, and the chain without gravity beside the hanging one
+    "ordered": "black",
+    "spread 1": "#fdae6b",
+    "spread 2": "#f16913",
+    "spread 3": "#a63603",
+    "effective-medium": "#3182bd",
+    "harmonic-mean": "#31a354",
+    "hanging": "#756bb1",
+    "no gravity": "#a63603",
+    # sheets of interlinked rings (the sheets chapter)
+    "square sheet": "#a63603",
+    "triangular sheet": "#08519c",
+    "longitudinal": "#31a354",
+    "transverse": "#756bb1",
 }
+
+#: The colour map of the forces of a sheet's links (the sheets chapter): pale where a link carries little,
+#: dark where it carries most, so that the lattice fades into the page and the pulse stands out.
+FORCE_MAP = "magma_r"
 
 #: Drop heights used by every chapter, m; the paper does not give its own.  ``LOW_DROP`` and ``HIGH_DROP``
 #: stand for the low- and high-amplitude experiments of the paper's Fig. 1 d and e.

@@ -368,6 +368,35 @@ def impact_options(p, *, many=False, required=False):
                             help="impact speed of ring 0, m/s")  # fmt: skip
 
 
+def executor_options(p, *, default_batch: int, what: str = "runs of one chain"):
+    """Where the work runs: --batch-size, --workers, --dask ADDRESS, --dask-timeout (a sweep, an ensemble)."""
+    p.add_argument("--batch-size", type=Checked(int, batch_size), default=default_batch,
+                   help=f"{what} integrated together (default {default_batch})")  # fmt: skip
+    p.add_argument("--workers", type=integer("workers", 0), default=None,
+                   help="local worker processes (default: CPUs; 0: run in this process)")  # fmt: skip
+    p.add_argument("--dask", metavar="ADDRESS", help="run on a Dask cluster, e.g. tcp://scheduler:8786")
+    p.add_argument("--dask-timeout", type=DURATION, default=5.0, metavar="S",
+                   help="seconds to wait for the Dask scheduler to answer (default 5)")  # fmt: skip
+
+
+@contextlib.contextmanager
+def executor_of(args):
+    """The executor of --dask (a client's, closed at the end), or None for local processes (--workers)."""
+    if not args.dask:
+        yield None
+        return
+    from .executors import dask_client
+
+    try:
+        client = dask_client(args.dask, args.dask_timeout)
+    except ImportError:
+        raise ValueError("--dask needs the dask extra: pip install 'ringchain[dask]'") from None
+    except (ConnectionError, ValueError) as exc:
+        raise ValueError(f"argument --dask: {one_line(exc)}") from None
+    with client:
+        yield client.get_executor()
+
+
 def chain_options(p, *, many=False):
     """The lattice run: --rings, --model, --sensors, --t-end, --samples."""
     from .chain import MODELS

@@ -80,6 +80,7 @@ import numpy as np
 from ringchain.theory import STANDARD_GRAVITY, Ring, fit_power_law, hertz_stiffness_pair, linear
 from ringchain.theory import _validate as v
 
+from .disorder import disordered_chain
 from .integrate import impact_speeds
 from .laws import LinearSpring, PowerLaw
 from .network import ANCHOR, Links, Network
@@ -154,7 +155,8 @@ class Chain:
 
     Build it with :meth:`power_law`, :meth:`dual_spring` or :meth:`from_ring` (the paper's
     own chain: :func:`ringchain.numerics.paper.paper_chain`); a chain that changes along its
-    length with :meth:`from_rings`, :meth:`graded`, :meth:`alternating` or :meth:`joined`.
+    length with :meth:`from_rings`, :meth:`graded`, :meth:`alternating` or :meth:`joined`; rings that
+    differ at random with :meth:`disordered`.
     The contact law of both models is [K delta^n + gamma delta_dot]_+
     (:class:`~ringchain.numerics.laws.PowerLaw`);
     the dual-spring model uses K = K_c, n = 3/2, gamma = gamma_c and adds the bending
@@ -549,6 +551,9 @@ class Chain:
                      for q in values]  # fmt: skip
             return cls.from_rings(rings, model=model, **options)
         return cls.from_rings([ring] * n_rings, angles=values, model=model, **options)
+
+    # A chain of rings drawn at random about a nominal ring (issue 23): disorder.disordered_chain's docstring.
+    disordered = classmethod(disordered_chain)
 
     @classmethod
     def alternating(cls, ring_a: Ring, ring_b: Ring, n_rings: int, angles=None, model="dual-spring", **options):

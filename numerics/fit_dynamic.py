@@ -50,11 +50,13 @@ __all__ = [
 
 #: Chain fields a trace fit may free (besides "t0", "v0" and "h0").
 CHAIN_PARAMETERS = ("m", "gamma", "K", "n", "K_b", "gamma_b")
-#: Relative tolerance of the forward runs of a trace fit.  The sensor forces of the paper's
-#: chain differ from converged ones by about 1e-6 of their peak (tests/numerics/test_fit.py),
-#: far below any measured noise, at half the cost of the package's default 1e-9; at 1e-7 the
-#: forward differences of the Jacobian are off by up to 15 % where contacts open.
-FIT_RTOL = 1e-8
+
+#: Relative tolerance of the forward runs of a trace fit (the compiled pair, the runs of one Jacobian
+#: stepped together).  The sensor forces of the paper's chain differ from converged ones by about 5e-7
+#: of their peak (4e-6 at 1e-8; tests/numerics/test_fit.py), far below any measured noise, at a third
+#: of the cost of the pair's default 3e-10; looser, the forward differences of the Jacobian go wrong
+#: where contacts open (by up to 15 % with LSODA at 1e-7).
+FIT_RTOL = 1e-9
 
 #: Relative step of the forward differences of the Jacobian.  Truncation error ~ step (1e-4
 #: of a column); the runs of one Jacobian share their integration steps, so their
@@ -162,7 +164,7 @@ def simulate_parameter_sets(chains, speeds, dropped, t_grid, rings, *, rtol=FIT_
     x0 = np.concatenate([x for x, _ in states])
     u0 = np.concatenate([u for _, u in states])
     batch = simulate_batch(Network.stack([chain.network() for chain, _ in runs]), t_grid[-1], initial=(x0, u0),
-                           **options)  # fmt: skip
+                           shared_steps=True, **options)  # fmt: skip
     for b, (chain, r) in enumerate(runs):
         sim = Simulation(t=t_grid, x=batch.x[b], u=batch.u[b], dissipated=batch.dissipated[b], g=batch.g, chain=chain,
                          impact_velocity=float(speeds.flat[b]))  # fmt: skip

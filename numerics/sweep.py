@@ -46,7 +46,7 @@ from ringchain.theory import _validate as v
 from . import signals
 from .chain import MODELS, Chain, sensor_pair, striker_convention
 from .chain_file import ChainFile, vary
-from .executors import InlineExecutor, default_executor
+from .executors import InlineExecutor, run_tasks
 from .experiment import default_t_end
 from .integrate import DEFAULT_MAX_SECONDS, RunTooLargeError, estimate_run, format_duration, simulate_batch
 
@@ -510,8 +510,6 @@ def sweep(
     >>> [round(row["n_fit"], 3) for row in rows]
     [1.225, 1.107]
     """
-    from tqdm import tqdm
-
     try:
         batch_size = v.count("batch_size", batch_size, 1)
     except ValueError:
@@ -526,26 +524,13 @@ def sweep(
     tasks = [idx[k : k + batch_size] for idx in groups.values() for k in range(0, len(idx), batch_size)]
     options = {"t_end": t_end, "n_samples": n_samples, "method": method, "max_seconds": max_seconds, **solver}
     _check_work([[points[i] for i in task] for task in tasks], options)
-    own = executor is None
-    if own:
-        executor = default_executor(len(tasks), max_workers)
+    results = run_tasks(run_points, [([points[i] for i in task],) for task in tasks], executor, options=options,
+                        max_workers=max_workers, progress=progress, sizes=[len(task) for task in tasks], name="sweep",
+                        unit="point")  # fmt: skip
     rows: list[dict | None] = [None] * len(points)
-    try:
-        futures = {executor.submit(run_points, [points[i] for i in task], **options): task for task in tasks}
-        with tqdm(total=len(points), disable=not progress, unit="point", desc="sweep") as bar:
-            for future in cf.as_completed(futures):
-                task = futures[future]
-                for i, row in zip(task, future.result(), strict=True):
-                    rows[i] = row
-                bar.update(len(task))
-    except cf.BrokenExecutor as exc:
-        raise RuntimeError(
-            f"a worker of the sweep died ({exc}); a process may have run out of memory. "
-            "Run with max_workers=0 to see the error in this process."
-        ) from exc
-    finally:
-        if own:
-            executor.shutdown(cancel_futures=True)
+    for task, result in zip(tasks, results, strict=True):
+        for i, row in zip(task, result, strict=True):
+            rows[i] = row
     return rows
 
 
