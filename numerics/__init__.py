@@ -13,7 +13,7 @@ underscore name reached across modules):
    ``effective_mass``, ``contact_bem`` -- the paper's tables and figures, a drop read at two
    sensors, grids, ensembles of disordered chains, inverse problems, the impedance experiment,
    the effective mass, the numerical contact at any angle;
-3. layouts: ``chain``, ``chain_file``, ``disorder``, ``ring_chain``, ``ring_beam``, ``sheet``, ``sheet_runs`` --
+3. layouts: ``chain``, ``chain_kinds``, ``chain_file``, ``disorder``, ``ring_chain``, ``ring_beam``, ``sheet``, ``sheet_runs`` --
    a Chain builds a Network; chain files; random rings about a nominal one; the ring-resolved chain (its
    own dynamics) and the ring as a curved beam; sheets of interlinked rings in two dimensions and their runs;
 4. the engine: ``integrate``, ``results``, ``traces``, ``plots``, ``executors``, ``signals`` --
@@ -38,7 +38,8 @@ What each module owns:
 - :mod:`.traces` -- :func:`write_traces` beside :func:`read_traces`, and the other measurement files;
 - :mod:`.chain` -- :class:`Chain`: the power-law (Eq. (7)) and dual-spring (Eqs. (5)-(6)) chains,
   uniform or changing along their length, hanging or free; their drop protocol and striker;
-  ``Chain.network()``; :mod:`.chain_file` reads chains in TOML; :mod:`.disorder` draws the rings of
+  ``Chain.network()``; :mod:`.chain_kinds` builds the graded, alternating and joined chains;
+  :mod:`.chain_file` reads chains in TOML; :mod:`.disorder` draws the rings of
   :meth:`Chain.disordered` (seeds, spreads, truncation);
 - :mod:`.sheet` -- :class:`Sheet`: square (4-in-1) and triangular (6-in-1) sheets and any layout of
   rings in a plane, hanging under gravity or pretensioned, the contact law of a ring pair at any angle;
