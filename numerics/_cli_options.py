@@ -126,6 +126,22 @@ def batch_size(n):
     return n
 
 
+def striker_mass(text: str):
+    """argparse type of --striker-mass: "m_eff", "m0" or a positive mass in kg (:func:`.chain.striker_convention`)."""
+    from .chain import STRIKERS, striker_convention
+
+    if text not in STRIKERS:
+        try:
+            text = float(text)
+        except ValueError:
+            expected = ", ".join(STRIKERS)
+            raise argparse.ArgumentTypeError(f"expected {expected} or a mass in kg, got {text!r}") from None
+    try:
+        return striker_convention(text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(one_line(exc).replace("striker_mass", "striker mass")) from None
+
+
 LENGTH_R = positive("R", "m")
 LENGTH_r = positive("r", "m")
 ASPECT = positive("R/r", "")
@@ -418,6 +434,35 @@ def impact_options(p, *, many=False, required=False):
                             help="impact speed of ring 0, m/s")  # fmt: skip
 
 
+def executor_options(p, *, default_batch: int, what: str = "runs of one chain"):
+    """Where the work runs: --batch-size, --workers, --dask ADDRESS, --dask-timeout (a sweep, an ensemble)."""
+    p.add_argument("--batch-size", type=Checked(int, batch_size), default=default_batch,
+                   help=f"{what} integrated together (default {default_batch})")  # fmt: skip
+    p.add_argument("--workers", type=integer("workers", 0), default=None,
+                   help="local worker processes (default: CPUs; 0: run in this process)")  # fmt: skip
+    p.add_argument("--dask", metavar="ADDRESS", help="run on a Dask cluster, e.g. tcp://scheduler:8786")
+    p.add_argument("--dask-timeout", type=DURATION, default=5.0, metavar="S",
+                   help="seconds to wait for the Dask scheduler to answer (default 5)")  # fmt: skip
+
+
+@contextlib.contextmanager
+def executor_of(args):
+    """The executor of --dask (a client's, closed at the end), or None for local processes (--workers)."""
+    if not args.dask:
+        yield None
+        return
+    from .executors import dask_client
+
+    try:
+        client = dask_client(args.dask, args.dask_timeout)
+    except ImportError:
+        raise ValueError("--dask needs the dask extra: pip install 'ringchain[dask]'") from None
+    except (ConnectionError, ValueError) as exc:
+        raise ValueError(f"argument --dask: {one_line(exc)}") from None
+    with client:
+        yield client.get_executor()
+
+
 def chain_options(p, *, many=False):
     """The lattice run: --rings, --model, --sensors, --t-end, --samples."""
     from .chain import MODELS
@@ -440,6 +485,27 @@ def chain_options(p, *, many=False):
                    help="samples of each force record (default: simulate's 2001, sweep's 1001)")  # fmt: skip
     p.add_argument("--no-gravity", dest="gravity", action="store_false",
                    help="no gravity: the chain starts unstretched (a chain file's free support needs it)")  # fmt: skip
+
+
+def striker_option(p, *, many=False):
+    """--striker-mass: the inertia of the struck ring 0 (several, for a sweep)."""
+    what = ("inertia of the struck ring 0: m_eff (the lattice's, the paper's convention; default), m0 (the ring's "
+            "own mass, a rigid ring in free fall) or a mass in kg")  # fmt: skip
+    if many:
+        p.add_argument("--striker-mass", type=striker_mass, nargs="+", default=["m_eff"], metavar="MASS",
+                       help=what + "; several give one row each")  # fmt: skip
+    else:
+        p.add_argument("--striker-mass", type=striker_mass, default="m_eff", metavar="MASS", help=what)
+
+
+def striker_words(striker, m0: float | None = None) -> str:
+    """The striker of a run in words, for what ``ringchain simulate`` prints."""
+    if striker == "m_eff":
+        return "striker of the lattice's inertia m_eff (the paper's convention)"  # m_eff is the chain's m
+    if striker == "m0":
+        mass = "" if m0 is None else f", {m0 * 1e3:.4g} g"
+        return f"rigid striker of the ring's mass m0{mass}"
+    return f"striker of {striker * 1e3:.4g} g"
 
 
 def chain_file(text: str):
@@ -509,18 +575,20 @@ def simulated_chain(args):
         for material in {segment.material for segment in description.segments}:
             check_impact(material, **impacts)
         with computing(f"the chain of {description.source}"):
-            chain = description.chain(args.model, args.m_eff_ratio)
-        return chain, f" from {description.source} ({len(description.segments)} segments)"
+            chain = description.chain(args.model, args.m_eff_ratio, striker_mass=args.striker_mass)
+        striker = striker_words(args.striker_mass, chain.striker_inertia)
+        return chain, f" from {description.source} ({len(description.segments)} segments), {striker}"
     aspect = aspect_ratio(args.R, args.r)
     check_geometry(aspect, [args.angle], chain=True, given="arguments --R and --r")
     check_sensors(args.sensors, [args.rings])
     check_impact(args.material, **impacts)
     ring_of(aspect * args.r, args.r, args.material, args.angle, f"the ring of --R {args.R:g} m and --r {args.r:g} m")
     point = Point(R_over_r=aspect, r=args.r, angle=math.radians(args.angle), material=args.material, model=args.model,
-                  n_rings=args.rings, m_eff_ratio=args.m_eff_ratio, sensors=tuple(args.sensors))  # fmt: skip
+                  n_rings=args.rings, m_eff_ratio=args.m_eff_ratio, sensors=tuple(args.sensors),
+                  striker_mass=args.striker_mass)  # fmt: skip
     with computing(f"the chain of {args.rings} rings"):
         chain = point.chain()
-    return chain, f", R/r = {aspect:g}"
+    return chain, f", R/r = {aspect:g}, {striker_words(args.striker_mass, chain.striker_inertia)}"
 
 
 def sweep_points(args) -> list:
@@ -552,8 +620,10 @@ def sweep_points(args) -> list:
     for material in {segment.material for segment in args.chain.segments}:
         check_impact(material, drop_heights=heights, impact_velocities=velocities)
     impacts = [{"drop_height": h} for h in heights] if heights else [{"impact_velocity": u} for u in velocities]
-    return [FilePoint(args.chain, field, value, model, ratio, sensors=tuple(args.sensors), **impact)
-            for model in models for ratio in ratios for value in values for impact in impacts]  # fmt: skip
+    return [FilePoint(args.chain, field, value, model, ratio, sensors=tuple(args.sensors), striker_mass=striker,
+                      **impact)
+            for model in models for ratio in ratios for striker in args.striker_mass for value in values
+            for impact in impacts]  # fmt: skip
 
 
 def _sweep_grid(args) -> dict:
@@ -574,6 +644,7 @@ def _sweep_grid(args) -> dict:
         "R_over_r": aspects,
         "angle": [math.radians(a) for a in angles],
         "m_eff_ratio": flat(args.m_eff_ratio),
+        "striker_mass": args.striker_mass,
         "r": [args.r],
         "material": [args.material],
         "sensors": [tuple(args.sensors)],
@@ -648,12 +719,13 @@ def trace_chain(args):
         description = args.chain
         with computing(f"the chain of {description.source}"):
             chain = description.chain(args.model, args.m_eff_ratio)
-        chain = dataclasses.replace(chain, gamma=args.gamma, **({} if args.model == "power-law" else {
-            "gamma_b": args.gamma_b}))  # fmt: skip
+        chain = dataclasses.replace(chain, gamma=args.gamma, striker_mass=args.striker_mass,
+                                    **({} if args.model == "power-law" else {"gamma_b": args.gamma_b}))  # fmt: skip
         return chain, float(np.ravel(chain.m_gravity)[0])
     ring = ring_of(args.R, args.r, args.material, args.angle, f"the ring of --R {args.R:g} m and --r {args.r:g} m")
     ring.check_chain()
     law = {} if args.K is None else {"K": args.K, "n": args.n}
     with computing(f"the chain of {args.rings} rings"):
-        chain = Chain.from_ring(ring, args.rings, args.model, m_eff_ratio=args.m_eff_ratio, **law, **dashpots)
+        chain = Chain.from_ring(ring, args.rings, args.model, m_eff_ratio=args.m_eff_ratio, **law, **dashpots,
+                                striker_mass=args.striker_mass)  # fmt: skip
     return chain, ring.mass

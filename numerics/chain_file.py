@@ -116,8 +116,12 @@ class ChainFile:
                 raise ValueError(f"{self.source}: segment {k}: {error}") from None
         return rings
 
-    def chain(self, model: str = "dual-spring", m_eff_ratio: float = 1.0) -> Chain:
+    def chain(self, model: str = "dual-spring", m_eff_ratio: float = 1.0, *, striker_mass=None) -> Chain:
         """The :class:`~ringchain.numerics.Chain` of these rings (:meth:`Chain.from_rings`).
+
+        ``model``, ``m_eff_ratio`` and ``striker_mass`` (``"m_eff"``, the default, ``"m0"``: ring 0's
+        own mass, or kg) are the model's choices, not the rings': they are arguments, not fields of
+        the file.
 
         Examples
         --------
@@ -144,7 +148,8 @@ class ChainFile:
                 raise ValueError(f"{self.source}: segment {k}, field 'R': R/r = {ring.aspect_ratio:.4g} (ring {i}) is "
                                  "below 3: the rings cannot form a chain")  # fmt: skip
         try:
-            return Chain.from_rings(rings, model=model, m_eff_ratio=m_eff_ratio, support=self.support)
+            return Chain.from_rings(rings, model=model, m_eff_ratio=m_eff_ratio, support=self.support,
+                                    striker_mass=striker_mass)  # fmt: skip
         except ValueError as error:
             raise ValueError(f"{self.source}: {error}") from None
 

@@ -9,7 +9,9 @@
 - ``ringchain simulate --chain FILE`` / ``ringchain sweep --chain FILE --vary 2.R.last 0.01:0.02:5`` -- a
   chain that changes along its length, described segment by segment in TOML (:mod:`.chain_file`);
 - ``ringchain cache info`` / ``ringchain cache clear`` -- the disk cache of generated code.
-- ``ringchain fit static|speed|traces FILE`` -- parameters from measurements (:mod:`.fit_cli`).
+- ``ringchain fit static|speed|traces FILE`` -- parameters from measurements (:mod:`.fit_cli`);
+- ``ringchain ensemble --count 1000 --spread R=0.05`` -- disordered chains, read at every ring (:mod:`.ensemble_cli`);
+- ``ringchain sheet --pattern square --size 40x40`` -- an impact on a sheet of rings (:mod:`.sheet_cli`).
 
 Inputs are SI (m, m/s, N) except contact angles, given in degrees.  Every input and every
 output path is checked before any work (:mod:`ringchain.numerics._cli_options`); a bad one
@@ -29,6 +31,8 @@ import warnings
 from pathlib import Path
 
 from . import _cli_options as opt
+from . import sheet_cli
+from .ensemble_cli import add_parser as add_ensemble_parser
 from .paper import PAPER_DROP_HEIGHT, PAPER_FIGURES, STIFFNESS_SOURCES
 
 __all__ = ["main", "build_parser"]
@@ -113,7 +117,6 @@ def _simulate(args) -> int:
 
 # -- ringchain sweep -------------------------------------------------------------------------------
 def _sweep(args) -> int:
-    from .executors import dask_client
     from .sweep import sweep, write_csv
 
     opt.check_outputs([args.chain and args.chain.path], [("--out", args.out)])
@@ -122,18 +125,8 @@ def _sweep(args) -> int:
                    t_end=args.t_end, gravity=args.gravity)  # fmt: skip
     if args.samples is not None:
         options["n_samples"] = args.samples
-    if args.dask:
-        try:
-            client = dask_client(args.dask, args.dask_timeout)
-        except ImportError:
-            raise ValueError("--dask needs the dask extra: pip install 'ringchain[dask]'") from None
-        except (ConnectionError, ValueError) as exc:
-            raise ValueError(f"argument --dask: {opt.one_line(exc)}") from None
-        with client, opt.naming_t_end(args), opt.naming_size(args):
-            rows = sweep(points, client.get_executor(), **options)
-    else:
-        with opt.naming_t_end(args), opt.naming_size(args):
-            rows = sweep(points, **options)
+    with opt.executor_of(args) as executor, opt.naming_t_end(args), opt.naming_size(args):
+        rows = sweep(points, executor, **options)
     if args.out == "-":
         write_csv(rows, sys.stdout)
     else:
@@ -214,7 +207,9 @@ def build_parser() -> argparse.ArgumentParser:
 
     parser = _Parser(prog="ringchain", description=__doc__.split("\n\n")[0], allow_abbrev=False)
     parser.add_argument("--version", action="version", version=f"ringchain {_version()}")
-    sub = parser.add_subparsers(dest="command", required=True, metavar="{paper,ring,simulate,sweep,cache,fit}")
+    sub = parser.add_subparsers(
+        dest="command", required=True, metavar="{paper,ring,simulate,sweep,ensemble,cache,fit,sheet}"
+    )
 
     p = sub.add_parser("paper", help="derive the theory, print the paper's key numbers, write the figures",
                        allow_abbrev=False)  # fmt: skip
@@ -237,6 +232,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("simulate", help="one drop or impact; sensor traces to CSV", allow_abbrev=False)
     opt.geometry_options(p)
+    opt.striker_option(p)
     opt.impact_options(p, required=True)
     opt.chain_options(p)
     p.add_argument("--method", choices=METHODS, default=None,
@@ -251,15 +247,10 @@ def build_parser() -> argparse.ArgumentParser:
                        description="Values: numbers, or start:stop:count for evenly spaced ones (start > stop "
                                    f"counts down; at most {opt.MAX_GRID_POINTS} points in all).")  # fmt: skip
     opt.geometry_options(p, many=True)
+    opt.striker_option(p, many=True)
     opt.impact_options(p, many=True)
     opt.chain_options(p, many=True)
-    p.add_argument("--batch-size", type=opt.Checked(int, opt.batch_size), default=64,
-                   help="runs of one chain integrated together (default 64)")  # fmt: skip
-    p.add_argument("--workers", type=opt.integer("workers", 0), default=None,
-                   help="local worker processes (default: CPUs; 0: run in this process)")  # fmt: skip
-    p.add_argument("--dask", metavar="ADDRESS", help="run on a Dask cluster, e.g. tcp://scheduler:8786")
-    p.add_argument("--dask-timeout", type=opt.DURATION, default=5.0, metavar="S",
-                   help="seconds to wait for the Dask scheduler to answer (default 5)")  # fmt: skip
+    opt.executor_options(p, default_batch=64)
     p.add_argument("--out", type=opt.output_csv, default="-", metavar="CSV",
                    help="output CSV (default: standard output)")  # fmt: skip
     opt.chain_file_options(p, sweep=True)
@@ -274,6 +265,8 @@ def build_parser() -> argparse.ArgumentParser:
     from .fit_cli import add_parser as add_fit_parser
 
     add_fit_parser(sub, geometry=opt.geometry_options)  # sets its own func (fit_cli.run)
+    add_ensemble_parser(sub)  # ringchain ensemble: sets its own func (ensemble_cli.run)
+    sheet_cli.add_parser(sub)  # ringchain sheet: sets its own func (sheet_cli.run)
     return parser
 
 

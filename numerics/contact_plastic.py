@@ -188,7 +188,7 @@ def capped_contact_curve(R, r, E, nu, Y, delta_over_delta_y, *, angle=np.pi / 2,
     if pixels < 8:
         raise ValueError(f"pixels must be at least 8, got {pixels}")
     ratios = np.atleast_1d(v.positive("delta_over_delta_y", delta_over_delta_y)).astype(float).ravel()
-    yielding = first_yield(R, r, E, nu, Y, angle)  # validates the rest, with errors that say why
+    yielding = first_yield(R, r, E, nu, angle, Y=Y)  # validates the rest, with errors that say why
     K_c = float(hertz_stiffness(R, r, E, nu, angle))
     E_star = float(contact_modulus(E, nu))
     R_e = float(equivalent_radius(R, r, angle))
@@ -221,7 +221,7 @@ def capped_contact_curve(R, r, E, nu, Y, delta_over_delta_y, *, angle=np.pi / 2,
     return CappedContactCurve(
         delta=deltas,
         force=force,
-        thornton=np.asarray(thornton(deltas, K_c, delta_y), dtype=float),
+        thornton=np.asarray(thornton(deltas, K_c=K_c, delta_y=delta_y), dtype=float),
         area=area,
         plastic_area=plastic,
         delta_y=delta_y,

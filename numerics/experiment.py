@@ -42,7 +42,8 @@ def default_t_end(chain: Chain, speeds, sensors) -> float:
     carry its front 1.5 times the distance to ring ``sensors[1]`` plus half a wave width
     (:func:`ringchain.theory.solitary_wave_width`), at a force estimate below the actual
     peak (so the estimated speed is low and the duration long): a quarter of the peak
-    force of a two-ring collision at the smallest impact speed, and at least the weight
+    force of the striker's collision with ring 1 at the smallest impact speed (the striker of
+    :class:`~ringchain.numerics.Chain`, of mass ``striker_inertia``), and at least the weight
     of one ring (the gravity prestress keeps weak waves fast).  For the dual-spring
     chain the power law is the one fitted to its contact and bending springs in series
     (Eq. 4).  :func:`run_points` doubles the duration if a pulse is still passing the far
@@ -68,8 +69,8 @@ def default_t_end(chain: Chain, speeds, sensors) -> float:
     else:
         K, n = chain.K, chain.n
     speed = float(np.min(speeds))
-    # Two rings of mass m colliding at relative speed v store m v^2/4 at the peak of K delta^n.
-    delta = ((n + 1.0) * 0.25 * chain.m * speed**2 / K) ** (1.0 / (n + 1.0))
+    # The striker m_s hitting ring 1 (m) at v stores mu v^2/2 at the peak of K delta^n, mu = m_s m/(m_s + m).
+    delta = ((n + 1.0) * 0.5 * _reduced_mass(chain, chain.m) * speed**2 / K) ** (1.0 / (n + 1.0))
     force = max(0.25 * K * delta**n, chain.m_gravity * STANDARD_GRAVITY)
     V = float(solitary_wave_speed(force, K=K, n=n, a=chain.a, m=chain.m))
     width = min(float(solitary_wave_width(n=n, a=chain.a)), chain.n_rings * chain.a)
@@ -88,11 +89,17 @@ def _varying_t_end(chain: Chain, speeds, far: int) -> float:
     else:
         K, n = chain.profile("K")[pairs], chain.profile("n")[pairs]
     m, a, speed = float(np.max(chain.m)), chain.profile("a"), float(np.min(speeds))
-    delta = ((n + 1.0) * 0.25 * m * speed**2 / K) ** (1.0 / (n + 1.0))
+    delta = ((n + 1.0) * 0.5 * _reduced_mass(chain, m) * speed**2 / K) ** (1.0 / (n + 1.0))
     force = np.maximum(0.25 * K * delta**n, float(np.min(chain.m_gravity)) * STANDARD_GRAVITY)
     V = solitary_wave_speed(force, K=K, n=n, a=a, m=m)
     width = min(float(np.max(solitary_wave_width(n=n, a=a))), float(np.sum(a)))
     return float(1.5 * np.sum(a[:far] / V[:far]) + 0.5 * width / np.min(V))
+
+
+def _reduced_mass(chain: Chain, m: float) -> float:
+    """Reduced mass of the striker (ring 0, :attr:`Chain.striker_inertia`) and a ring of mass ``m``, kg."""
+    striker = chain.striker_inertia
+    return striker * m / (striker + m)
 
 
 @dataclass(frozen=True, eq=False)

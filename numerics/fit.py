@@ -52,7 +52,7 @@ MINIMUM_STEP = 0.05
 _UNITS = {
     "m": "kg", "gamma": "N s/m", "K": "N/m^n", "n": "", "K_b": "N/m", "gamma_b": "N s/m", "t0": "s", "v0": "m/s",
     "h0": "m", "offset": "N", "delta0": "m", "K_c": "N/m^1.5", "m_eff_ratio": "", "m_gravity": "kg", "a": "m",
-    "m0": "kg",
+    "m0": "kg", "striker_mass": "kg",
 }  # fmt: skip
 
 

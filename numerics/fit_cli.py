@@ -104,6 +104,9 @@ def add_parser(sub, *, geometry) -> None:
                    help=f"free parameters, a comma list (default {DEFAULT_FREE}; also K, n, K_b, gamma_b, v0, "
                         "h0)")  # fmt: skip
     p.add_argument("--no-offsets", action="store_true", help="do not fit a DC offset per channel")
+    from ._cli_options import striker_option
+
+    striker_option(p)  # as ringchain simulate takes it
     common(p)
     fit.set_defaults(func=run)
 
@@ -232,7 +235,10 @@ def _traces(args) -> int:
     _print(args, {"traces": result})
     if not args.json and "m" in result.names:
         ratio, sd = result.values["m"] / m0, result.stderr["m"] / m0
-        print(f"m/m0 = {ratio:.6g} +/- {sd:.2g} (m0 = {m0:.6g} kg, the mass of ring 0)")
+        from ._cli_options import striker_words
+
+        striker = striker_words(args.striker_mass, m0)
+        print(f"m/m0 = {ratio:.6g} +/- {sd:.2g} (m0 = {m0:.6g} kg, the mass of ring 0; {striker})")
     if args.plot:
         _plot_traces(result, args.plot, [Path(p).name for p in args.files])
         print(f"plot written to {args.plot}")

@@ -50,11 +50,13 @@ __all__ = [
 
 #: Chain fields a trace fit may free (besides "t0", "v0" and "h0").
 CHAIN_PARAMETERS = ("m", "gamma", "K", "n", "K_b", "gamma_b")
-#: Relative tolerance of the forward runs of a trace fit.  The sensor forces of the paper's
-#: chain differ from converged ones by about 1e-6 of their peak (tests/numerics/test_fit.py),
-#: far below any measured noise, at half the cost of the package's default 1e-9; at 1e-7 the
-#: forward differences of the Jacobian are off by up to 15 % where contacts open.
-FIT_RTOL = 1e-8
+
+#: Relative tolerance of the forward runs of a trace fit (the compiled pair, the runs of one Jacobian
+#: stepped together).  The sensor forces of the paper's chain differ from converged ones by about 5e-7
+#: of their peak (4e-6 at 1e-8; tests/numerics/test_fit.py), far below any measured noise, at a third
+#: of the cost of the pair's default 3e-10; looser, the forward differences of the Jacobian go wrong
+#: where contacts open (by up to 15 % with LSODA at 1e-7).
+FIT_RTOL = 1e-9
 
 #: Relative step of the forward differences of the Jacobian.  Truncation error ~ step (1e-4
 #: of a column); the runs of one Jacobian share their integration steps, so their
@@ -162,7 +164,7 @@ def simulate_parameter_sets(chains, speeds, dropped, t_grid, rings, *, rtol=FIT_
     x0 = np.concatenate([x for x, _ in states])
     u0 = np.concatenate([u for _, u in states])
     batch = simulate_batch(Network.stack([chain.network() for chain, _ in runs]), t_grid[-1], initial=(x0, u0),
-                           **options)  # fmt: skip
+                           shared_steps=True, **options)  # fmt: skip
     for b, (chain, r) in enumerate(runs):
         sim = Simulation(t=t_grid, x=batch.x[b], u=batch.u[b], dissipated=batch.dissipated[b], g=batch.g, chain=chain,
                          impact_velocity=float(speeds.flat[b]))  # fmt: skip
@@ -603,6 +605,8 @@ def fit_traces(
     chain : Chain
         The model (power-law or dual-spring), with the starting values of the free
         parameters and the values of the fixed ones; gravity acts on ``chain.m_gravity``.
+        Its striker (``striker_mass``) follows the fitted m in the paper's convention, and
+        keeps its mass when given in kg (``"m0"``: a rigid ring of known mass).
     drop_height : float, optional
         Free-fall height of ring 0, m (impact speed sqrt(2 g h)).
     impact_velocity : float or sequence, optional
@@ -663,6 +667,11 @@ def fit_traces(
     - "h0" free, one offset of all the heights: one drop cannot separate m and K, but
       several drops from different heights can (sqrt(h_i + h0) cannot follow one common
       factor alpha).
+
+    The symmetry scales the striker with the rings, as the paper's convention does (the
+    striker is a ring of mass m).  A striker of known mass (``striker_mass`` in kg, "m0")
+    does not scale, so it breaks the symmetry too; and the values a known impact gives are
+    those of the striker assumed: the impact's energy m_s v0^2/2 sets the amplitude.
 
     The book's chapter "From measurements to parameters" shows the three cases.
     """
@@ -756,6 +765,8 @@ def fit_traces(
     if not chain.uniform:
         notes.append("the chain changes along its length: each chain parameter (free or fixed) is given at ring 0 "
                      "(contact 0); a free one scales its whole profile")  # fmt: skip
+    if chain.striker_mass is not None:  # a striker given in kg (a rigid ring) keeps its mass while m is fitted
+        fixed["striker_mass"] = chain.striker_mass
     for r in range(R):
         if not problem.free_t0:
             fixed[problem.name("t0", r)] = problem.fixed_t0[r]

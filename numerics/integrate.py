@@ -22,21 +22,23 @@ The model contract (what :func:`simulate_batch` calls):
 Any other initial state (a wave packet on a pre-stretched chain, say) is given as
 ``initial=(x0, u0)``.
 
-Methods.  ``method`` is "odeint" (the default: ODEPACK's LSODA driven by
-:func:`scipy.integrate.odeint`, whose stepping loop runs in Fortran), a method of
-:func:`scipy.integrate.solve_ivp` ("LSODA", the same integrator stepped from Python, or
-"DOP853", "RK45", "RK23"), all on the model's vectorised right-hand side, or "verlet":
-fixed-step velocity Verlet (symplectic, second order) for long undamped chains.  "odeint"
-and "LSODA" take the same steps (same right-hand-side count to a few per cent); "odeint" is
-2-3x faster on the paper's 20-ring chain because solve_ivp's per-step Python overhead is
-gone.  The absolute tolerances are ``atol`` (default ``rtol``) times each run's own scales
-(``dynamics.scales``): displacements of micrometres and velocities of metres per second
-cannot share one absolute tolerance.  SciPy's error norm is a root mean square over the
-whole state, so in a very long chain, where the pulse occupies a few of many rings, the
-control is looser per active ring than ``rtol`` suggests; Verlet has no such effect.  A batch
-of runs (of one model, or of a :meth:`~ringchain.numerics.Network.stack` of models, one run
-each) is integrated as one array problem; a record longer than :data:`CHUNK_BYTES` of states
-is integrated in consecutive chunks of samples.
+Methods.  The compiled ones (:mod:`ringchain.numerics.kernels`, their whole time loop in
+Numba): "dopri5" (the default: Dormand and Prince's 5(4) pair with its continuous extension,
+the error measured in the max norm over the components, so that components at rest or runs
+repeated in a batch never change the steps a run takes; each run of a batch with its own
+steps) and "verlet" (fixed-step velocity Verlet, symplectic, second order, for long undamped
+chains).  The SciPy ones, the independent reference the tests compare against, on the model's
+vectorised NumPy right-hand side: "odeint" (ODEPACK's LSODA driven by
+:func:`scipy.integrate.odeint`, whose stepping loop runs in Fortran) and the methods of
+:func:`scipy.integrate.solve_ivp` ("LSODA", the same integrator stepped from Python, "DOP853",
+"RK45", "RK23").  The absolute tolerances are ``atol`` (default ``rtol``) times each run's own
+scales (``dynamics.scales``): displacements of micrometres and velocities of metres per second
+cannot share one absolute tolerance.  SciPy's error norm is a root mean square over the whole
+state, so in a very long chain, where the pulse occupies a few of many rings, the control is
+looser per active ring than ``rtol`` suggests; the compiled pair's max norm has no such effect.
+A batch of runs (of one model, or of a :meth:`~ringchain.numerics.Network.stack` of models, one
+run each) is one call; for SciPy a record longer than :data:`CHUNK_BYTES` of states is
+integrated in consecutive chunks of samples.
 
 Checks.  The settings are validated before any work: ``dt`` must lie below the stability
 limit 2/omega_max of velocity Verlet (``dynamics.max_frequency``), ``steps_per_period``
@@ -60,7 +62,6 @@ from dataclasses import dataclass
 import numpy as np
 from ringchain.theory import STANDARD_GRAVITY, impact_speed
 from ringchain.theory import _validate as v
-from scipy.integrate import ODEintWarning, odeint, solve_ivp
 
 __all__ = [
     "simulate",
@@ -74,6 +75,7 @@ __all__ = [
     "COMPILED_METHODS",
     "DEFAULT_METHOD",
     "DEFAULT_RTOL",
+    "DEFAULT_TOLERANCES",
     "VERLET_STEPS_PER_PERIOD",
     "TOLERANCE_RANGE",
     "ENERGY_DRIFT_LIMIT",
@@ -88,13 +90,20 @@ __all__ = [
     "EnergyWatch",
 ]
 
-#: Default integrator (see benchmarks/bench_paper_recipe.py for the choice).
-DEFAULT_METHOD = "odeint"
+#: Default integrator: the compiled Dormand-Prince 5(4) pair, the fastest method that keeps the accuracy
+#: of the earlier default (LSODA at rtol 1e-9): sensor forces of the paper's chain within 1.3e-5 of their
+#: peak against a tight reference (1.1e-5 for LSODA), 5-11x faster (benchmarks/bench_kernels.py).
+DEFAULT_METHOD = "dopri5"
 
-#: Default relative tolerance of the adaptive methods; the absolute tolerances are this
-#: times the displacement, velocity and energy scales of the impact (``dynamics.scales``).
-#: Chosen by the convergence test in tests/numerics/test_integrate.py.
-DEFAULT_RTOL = 1e-9
+#: Default relative tolerance of each adaptive method; the absolute tolerances are this times the
+#: displacement, velocity and energy scales of the impact (``dynamics.scales``).  The pair's 3e-10 gives
+#: the accuracy LSODA gives at 1e-9 (its error control in the max norm over components and its
+#: continuous extension differ from LSODA's RMS norm and interpolation): measured on the paper's chains,
+#: both models, both stiffness sources (tests/numerics/test_kernels.py).
+DEFAULT_TOLERANCES = {"dopri5": 3e-10, "odeint": 1e-9, "LSODA": 1e-9, "DOP853": 1e-9, "RK45": 1e-9, "RK23": 1e-9}
+
+#: The default relative tolerance of :data:`DEFAULT_METHOD`.
+DEFAULT_RTOL = DEFAULT_TOLERANCES[DEFAULT_METHOD]
 
 #: Verlet steps per period of the fastest linearised lattice mode at four times the
 #: estimated peak force; chosen by the convergence test in tests/numerics/test_integrate.py.
@@ -151,6 +160,8 @@ _SETUP_BYTES_PER_SITE = 160
 
 # Most LSODA steps between two samples (odeint's mxstep); a run that needs more fails.
 _MAX_STEPS_PER_SAMPLE = 1_000_000
+#: Steps the compiled dopri5 may take per run before it stops with "too many steps".
+_MAX_DOPRI5_STEPS = 10_000_000
 
 
 class IntegrationError(ValueError):
@@ -169,6 +180,8 @@ def _odeint(rhs, y0, t0, times, rtol, atol, bandwidth):
     when they start later and its row dropped.  The Jacobian is banded, as for solve_ivp's
     LSODA.  A failure raises :class:`IntegrationError` with ODEPACK's reason.
     """
+    from scipy.integrate import ODEintWarning, odeint
+
     lower, upper = bandwidth
     prepend = times[0] > t0
     grid = np.concatenate([[t0], times]) if prepend else times
@@ -189,6 +202,8 @@ def _odeint(rhs, y0, t0, times, rtol, atol, bandwidth):
 
 def _solve_ivp(rhs, method, y0, t0, times, rtol, atol, bandwidth):
     """A :func:`scipy.integrate.solve_ivp` method from ``y0`` at ``t0``: (states at ``times``, nfev)."""
+    from scipy.integrate import solve_ivp
+
     band = dict(zip(("lband", "uband"), bandwidth, strict=True)) if method == "LSODA" else {}
     sol = solve_ivp(rhs, (t0, times[-1]), y0, method=method, t_eval=times, rtol=rtol, atol=atol, **band)
     if not sol.success:
@@ -237,7 +252,7 @@ def _adaptive(method, dyn, x0, u0, scales, t_eval, rtol, atol, g, keep, watch):
     return xs, us, dissipated, {"method": method, "rtol": rtol, "nfev": nfev}
 
 
-def _compiled(method, dyn, x0, u0, scales, t_eval, t_end, rtol, atol, dt, g, keep, watch):
+def _compiled(method, dyn, x0, u0, scales, t_eval, t_end, rtol, atol, dt, g, keep, watch, shared=False):
     """A compiled method (:mod:`ringchain.numerics.kernels`): x and u of ``keep`` (B, T, K), W (B, T) and stats.
 
     The kernels check that the state stays finite; the energy watch reads the final state.
@@ -259,7 +274,8 @@ def _compiled(method, dyn, x0, u0, scales, t_eval, t_end, rtol, atol, dt, g, kee
         columns.append(E[:, None])
         state.append(np.zeros((B, 1)))
     xs, us, w, final, status, counts = kernels.dopri5(packed, np.hstack(state), t_eval, rtol,
-                                                      atol * np.hstack(columns), keep, g)  # fmt: skip
+                                                      atol * np.hstack(columns), keep, g, shared=shared,
+                                                      max_steps=_MAX_DOPRI5_STEPS)  # fmt: skip
     _check_status(method, status, t_end, rtol)
     watch(t_end, final[:, :N], final[:, N : 2 * N], final[:, 2 * N] if dyn.damped else 0.0)
     return xs, us, w, {"method": method, "rtol": rtol, "nfev": int(counts[:, 0].sum()),
@@ -303,10 +319,13 @@ class EnergyWatch:
         if self.limit is None:
             return
         total = self.dyn.energy(x, u, self.x0, self.g, dissipated).total
-        drift = float(np.max(np.abs(total - self.initial) / self.scale))
+        drifts = np.atleast_1d(np.abs(total - self.initial) / self.scale)
+        worst = int(np.argmax(np.where(np.isnan(drifts), np.inf, drifts)))
+        drift = float(drifts[worst])
         if not drift <= self.limit:
+            where = f" in run {worst}" if drifts.size > 1 else ""
             raise IntegrationError(
-                f"the total energy drifted by {drift:.3g} times the impact energy by t = {t:g} s "
+                f"the total energy drifted by {drift:.3g} times the impact energy by t = {t:g} s{where} "
                 f"(max_energy_drift = {self.limit:g}): the integration is unstable or inaccurate; {self.advice}"
             )
 
@@ -544,7 +563,7 @@ def _prepare(model, t_end, impact_velocities, drop_heights, gravity, t_eval, n_s
         steps = max(1, math.ceil(t_end / dt))
         solver = 8 * 12 * B * N  # state, accelerations, work arrays of the stepper
     else:
-        rtol = _rtol(rtol)
+        rtol = _rtol(DEFAULT_TOLERANCES[method] if rtol is None else rtol)
         atol = rtol if atol is None else float(v.in_range("atol", atol, 0.0, TOLERANCE_RANGE[1]))
         n_state = 2 * B * N + (B if dyn.damped else 0)
         solver = 8 * n_state * (2 * min(T, max(1, CHUNK_BYTES // (8 * n_state))) + 30)  # output, copies, LSODA
@@ -557,7 +576,7 @@ def _prepare(model, t_end, impact_velocities, drop_heights, gravity, t_eval, n_s
 
 
 def estimate_run(model, t_end, *, impact_velocities=None, drop_heights=None, gravity=True, t_eval=None,
-                 n_samples=DEFAULT_SAMPLES, method=DEFAULT_METHOD, rtol=DEFAULT_RTOL, atol=None, dt=None,
+                 n_samples=DEFAULT_SAMPLES, method=DEFAULT_METHOD, rtol=None, atol=None, dt=None,
                  steps_per_period=VERLET_STEPS_PER_PERIOD, g=STANDARD_GRAVITY, rings=None,
                  initial=None) -> RunEstimate:  # fmt: skip
     """Size, memory and (for Verlet) work and rough duration of a run, before running it.
@@ -614,7 +633,7 @@ def simulate_batch(
     t_eval=None,
     n_samples=DEFAULT_SAMPLES,
     method=DEFAULT_METHOD,
-    rtol=DEFAULT_RTOL,
+    rtol=None,
     atol=None,
     dt=None,
     steps_per_period=VERLET_STEPS_PER_PERIOD,
@@ -624,15 +643,17 @@ def simulate_batch(
     max_seconds=DEFAULT_MAX_SECONDS,
     max_energy_drift=ENERGY_DRIFT_LIMIT,
     initial=None,
+    shared_steps=False,
 ):
-    """Integrate B runs of one model together, as one vectorised array problem.
+    """Integrate B runs of one model together, as one array problem.
 
-    The B states are stacked into one array of shape (B, n_coords) and advanced by one
-    integrator, so the cost per step is that of one right-hand side over B x n_coords
-    coordinates.  With an adaptive method the runs share their steps, chosen for the error
-    norm of the whole batch, so each run is at least as accurate as its own tolerance
-    asks (scipy's RMS error norm over the batch can only be dominated by the most
-    demanding run); the numbers agree with separate :func:`simulate` runs to the
+    The compiled methods advance each run with its own steps (each run of the pair "dopri5" chooses
+    its step sizes for its own error; the runs share Numba's threads), so a run's result does not
+    depend on the batch it is in; ``shared_steps=True`` makes "dopri5" step the batch together, one
+    step size for the error of all (forward differences between the runs then share their steps, as
+    the trace fit's Jacobian needs).  The SciPy methods integrate the B x n_coords states as one
+    system, whose steps are shared (the RMS error norm over the batch can only be dominated by the
+    most demanding run).  Either way the numbers agree with separate :func:`simulate` runs to the
     solver tolerance.
 
     Parameters
@@ -652,6 +673,8 @@ max_energy_drift
         each of shape (n_coords,) or (B, n_coords) (one run per row; a single row is shared);
         ``gravity`` then only says whether gravity acts.  Not together with
         ``impact_velocities`` or ``drop_heights``.
+    shared_steps : bool, optional
+        "dopri5" only: one step size for the whole batch (see above).  Default False.
 
     Returns
     -------
@@ -681,7 +704,8 @@ max_energy_drift
     with np.errstate(over="ignore", invalid="ignore"):  # an unstable run is reported by the watch
         if method in COMPILED_METHODS:
             xs, us, dissipated, stats = _compiled(method, dyn, x0, u0, run["scales"], t_eval, run["t_end"], run["rtol"],
-                                                  run["atol"], run["dt"], g_dyn, run["keep"], watch)  # fmt: skip
+                                                  run["atol"], run["dt"], g_dyn, run["keep"], watch,
+                                                  shared=v.flag("shared_steps", shared_steps))  # fmt: skip
         else:
             xs, us, dissipated, stats = _adaptive(method, dyn, x0, u0, run["scales"], t_eval, run["rtol"],
                                                   run["atol"], g_dyn, run["keep"], watch)  # fmt: skip
@@ -721,13 +745,14 @@ def simulate(model, t_end, *, impact_velocity=None, drop_height=None, gravity=Tr
     ----------------
     n_samples : int, optional
         Number of samples when ``t_eval`` is not given; default :data:`DEFAULT_SAMPLES`.
-    method : {"odeint", "LSODA", "DOP853", "RK45", "RK23", "verlet"}, optional
-        Adaptive integrator: "odeint" (default, :data:`DEFAULT_METHOD`: LSODA stepped in
-        Fortran) or a :func:`scipy.integrate.solve_ivp` method; or fixed-step velocity
-        Verlet (undamped chains only).
+    method : {"dopri5", "odeint", "LSODA", "DOP853", "RK45", "RK23", "verlet"}, optional
+        Adaptive integrator: "dopri5" (default, :data:`DEFAULT_METHOD`: Dormand-Prince 5(4),
+        compiled, error in the max norm over the components), "odeint" (LSODA stepped in
+        Fortran) or a :func:`scipy.integrate.solve_ivp` method, the independent reference; or
+        fixed-step velocity Verlet (compiled; undamped chains only).
     rtol : float, optional
-        Relative tolerance of the adaptive methods, in :data:`TOLERANCE_RANGE`; default
-        :data:`DEFAULT_RTOL`.
+        Relative tolerance of the adaptive methods, in :data:`TOLERANCE_RANGE`; default the
+        method's (:data:`DEFAULT_TOLERANCES`).
     atol : float, optional
         Absolute tolerance relative to the run's displacement, velocity and energy
         scales, at most 1e-3 (default ``rtol``).

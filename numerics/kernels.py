@@ -13,8 +13,8 @@ ever, with the disk cache) and not once per chain:
 - a network: per link its two sites (``-1`` for the support), its law's kind and parameters (a row of
   ``PARAMETERS`` numbers: K, n, gamma for :class:`~ringchain.numerics.laws.PowerLaw`; K, gamma for
   :class:`~ringchain.numerics.laws.LinearSpring`; gamma for :class:`~ringchain.numerics.laws.Dashpot`),
-  per site its inverse mass and the acceleration of gravity; in two or three dimensions the rest
-  positions, the anchors and the rest lengths;
+  per site its inverse mass and the acceleration of gravity; in two or three dimensions the links' rest
+  vectors (site i to the far end, a periodic image or an anchor), their spans and prestretches;
 - the ring-resolved chain: one ring's coupling matrix -M^-1 K, the columns of M^-1 at its two contact
   points, its rigid translation, and the Hertz contact.
 
@@ -119,9 +119,9 @@ class Packed(NamedTuple):
     lj: np.ndarray  # (L,) int64, -1 for the support
     kind: np.ndarray  # (L,) int64
     par: np.ndarray  # (Bp, L, PARAMETERS)
-    positions: np.ndarray  # (S, dim)
-    anchors: np.ndarray  # (L, dim)
-    rest: np.ndarray  # (L,)
+    rest_vectors: np.ndarray  # (L, dim): from site i to the link's far end at rest (Network.rest_vectors)
+    spans: np.ndarray  # (L,): their lengths (Network.spans)
+    prestretch: np.ndarray  # (L,): the links' extensions at rest (Network.prestretch)
     coupling: np.ndarray  # (n, n)
     inv_top: np.ndarray  # (n,)
     inv_bottom: np.ndarray  # (n,)
@@ -163,13 +163,15 @@ def pack_network(net) -> Packed:
     per_unit_g = np.zeros((*batch, S, d))  # gravity acts on the weight masses, along -axis (the last component)
     per_unit_g[..., -1] = net.weight_mass / net.mass
     gravity = np.atleast_2d(per_unit_g.reshape(*batch, S * d))
-    positions = np.zeros((S, d)) if net.positions is None else np.asarray(net.positions, dtype=float)
-    rest = np.zeros(L) if net.rest_lengths is None or d == 1 else np.asarray(net.rest_lengths, dtype=float)
+    planar = net.positions is not None and d > 1
+    rest_vectors = np.asarray(net.rest_vectors, dtype=float) if planar else np.zeros((L, d))
+    spans = np.asarray(net.spans, dtype=float) if planar else np.zeros(L)
+    prestretch = np.asarray(net.prestretch, dtype=float) if planar else np.zeros(L)
     path = d == 1 and np.array_equal(net.i, np.arange(L))  # a chain: link k joins site k to k + 1 (or the support)
     ints = np.array([0, d, net.n_coords, int(net.damped), S, L, 0, 0, 0, int(path)], dtype=np.int64)
     return Packed(ints, _empty(2), np.ascontiguousarray(1.0 / mass), np.ascontiguousarray(gravity, dtype=float),
-                  net.i.astype(np.int64), net.j.astype(np.int64), kind, par, np.ascontiguousarray(positions),
-                  np.ascontiguousarray(net.anchor_positions, dtype=float), rest, _empty(0, 0), _empty(0),
+                  net.i.astype(np.int64), net.j.astype(np.int64), kind, par, np.ascontiguousarray(rest_vectors),
+                  np.ascontiguousarray(spans), np.ascontiguousarray(prestretch), _empty(0, 0), _empty(0),
                   _empty(0))  # fmt: skip
 
 
@@ -180,13 +182,13 @@ def pack_ring_chain(chain) -> Packed:
     ints = np.array([1, 1, N * n, 0, 0, 0, N, n, int(chain.support == "fixed"), 0], dtype=np.int64)
     return Packed(ints, np.array([chain.K_c, chain.n]), _empty(1, 0), np.atleast_2d(ring.rigid.astype(float)),
                   _empty(0, dtype=np.int64), _empty(0, dtype=np.int64), _empty(0, dtype=np.int64),
-                  _empty(1, 0, PARAMETERS), _empty(0, 1), _empty(0, 1), _empty(0),
+                  _empty(1, 0, PARAMETERS), _empty(0, 1), _empty(0), _empty(0),
                   np.ascontiguousarray(coupling), np.ascontiguousarray(ring.inverse_mass[:, 1]),
                   np.ascontiguousarray(ring.inverse_mass[:, 0]))  # fmt: skip
 
 
 # -- the laws --------------------------------------------------------------------------------------------------
-@_jit(inline="always")
+@_jit()
 def _law(kind, p0, p1, p2, e, rate):
     """(force, elastic force) of one link: the :mod:`ringchain.numerics.laws` of kind ``kind``, parameters p0-p2."""
     if kind == 0:  # PowerLaw: [K delta^n + gamma delta_dot]_+ where engaged (K, n, gamma)
@@ -202,7 +204,7 @@ def _law(kind, p0, p1, p2, e, rate):
 
 
 # -- right-hand sides ----------------------------------------------------------------------------------------
-@_jit(inline="always")
+@_jit()
 def _network_accelerations(m, b, g, x, u, out):
     """Accelerations of member ``b`` of a packed network under gravity ``g`` into ``out``; returns the power its
     dashpots take out."""
@@ -244,29 +246,31 @@ def _network_accelerations(m, b, g, x, u, out):
             if j >= 0:
                 out[j] -= force
     else:
+        # The extension as Network.extensions computes it: |b + w| - |b| = (2 b.w + w.w)/(|b + w| + |b|),
+        # from the rest vector b and the relative displacement w of the ends, free of the cancellation of
+        # two lengths of order |b|, plus the prestretch.
         for k in range(L):
             i, j = li[k], lj[k]
             length2 = 0.0
+            stretch = 0.0
             for c in range(d):
-                ri = m.positions[i, c] + x[i * d + c]
-                rj = m.anchors[k, c] if j < 0 else m.positions[j, c] + x[j * d + c]
-                length2 += (rj - ri) ** 2
+                w = (0.0 if j < 0 else x[j * d + c]) - x[i * d + c]
+                length2 += (m.rest_vectors[k, c] + w) ** 2
+                stretch += (2.0 * m.rest_vectors[k, c] + w) * w
             length = math.sqrt(length2)
-            e = length - m.rest[k]
+            e = stretch / (length + m.spans[k]) + m.prestretch[k]
             rate = 0.0
             if damped:
                 for c in range(d):
-                    ri = m.positions[i, c] + x[i * d + c]
-                    rj = m.anchors[k, c] if j < 0 else m.positions[j, c] + x[j * d + c]
+                    w = (0.0 if j < 0 else x[j * d + c]) - x[i * d + c]
                     du = (0.0 if j < 0 else u[j * d + c]) - u[i * d + c]
-                    rate += du * (rj - ri) / length
+                    rate += du * (m.rest_vectors[k, c] + w) / length
             force, elastic = _law(kind[k], par[k, 0], par[k, 1], par[k, 2], e, rate)
             if damped:
                 power += (force - elastic) * rate
             for c in range(d):
-                ri = m.positions[i, c] + x[i * d + c]
-                rj = m.anchors[k, c] if j < 0 else m.positions[j, c] + x[j * d + c]
-                component = force * (rj - ri) / length
+                w = (0.0 if j < 0 else x[j * d + c]) - x[i * d + c]
+                component = force * (m.rest_vectors[k, c] + w) / length
                 out[i * d + c] += component
                 if j >= 0:
                     out[j * d + c] -= component
@@ -276,7 +280,7 @@ def _network_accelerations(m, b, g, x, u, out):
     return power
 
 
-@_jit(inline="always")
+@_jit()
 def _ring_accelerations(m, x, out):
     """Accelerations of the ring-resolved chain without gravity (:meth:`~ringchain.numerics.RingChain.stepper`)."""
     N, n, fixed = m.ints[6], m.ints[7], m.ints[8]
@@ -303,7 +307,7 @@ def _ring_accelerations(m, x, out):
                 out[(r + 1) * n + a] -= force * m.inv_bottom[a]  # the ring above pulled down at its bottom
 
 
-@_jit(inline="always")
+@_jit()
 def _accelerations(m, b, g, x, u, out):
     """Accelerations of member ``b`` of either kind of model (the packed kind says which)."""
     if m.ints[0] == 0:
@@ -317,7 +321,7 @@ def _accelerations(m, b, g, x, u, out):
     return 0.0
 
 
-@_jit(inline="always")
+@_jit()
 def _derivative(m, b, g, y, dy, N):
     """dy/dt of the state y = [x (N), u (N), W (dissipated energy, if damped)]."""
     power = _accelerations(m, b, g, y[:N], y[N : 2 * N], dy[N : 2 * N])
@@ -348,7 +352,7 @@ def _error_norm(err, y, y_new, atol, rtol):
     return worst
 
 
-@_jit(inline="always")
+@_jit()
 def _group_derivative(m, members, g, y, dy, N, n):
     """dy/dt of a group of members stepped together: their states one after the other in ``y``."""
     if members.size == 1:

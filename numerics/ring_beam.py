@@ -37,7 +37,6 @@ from ringchain.theory import Material, Ring, get_material
 from ringchain.theory import _validate as v
 from ringchain.theory.curved_beam import element_matrices, element_shape_functions
 from ringchain.theory.curved_beam import plane_kind as _kind
-from scipy.linalg import eigh
 
 __all__ = [
     "RingModel",
@@ -195,6 +194,8 @@ class RingModel:
         return self._cached(("spectrum", kind), lambda: self._fourier_spectrum(kind))
 
     def _fourier_spectrum(self, kind):
+        from scipy.linalg import eigh
+
         el = self.element(kind)
         K, M = el.stiffness, el.mass
         beta = self.element_angle
@@ -359,6 +360,8 @@ class RingModel:
         -------
         ReducedRing
         """
+        from scipy.linalg import eigh
+
         _, K, M, sensor = self._symmetric
         n_s = K.shape[0]
         rigid = np.zeros(n_s)

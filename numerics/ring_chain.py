@@ -29,7 +29,6 @@ from dataclasses import dataclass
 import numpy as np
 from ringchain.theory import STANDARD_GRAVITY, Ring
 from ringchain.theory import _validate as v
-from scipy.linalg import eigh
 
 from .chain import ring_index
 from .integrate import impact_speeds, simulate
@@ -138,6 +137,8 @@ class RingChain:
             omega = q sqrt(k_s/m) with 1/k_s = 1/k_contact + 1/K_b, whatever the ring's inner
             structure: the series law of paper Eq. (3) with the whole ring mass.
         """
+        from scipy.linalg import eigh
+
         q = np.atleast_1d(v.as_float("wavenumber", wavenumber))
         tension = float(v.positive("tension", tension, "N"))
         k = self.n * self.K_c ** (1.0 / self.n) * tension ** ((self.n - 1.0) / self.n)
@@ -337,6 +338,8 @@ class RingChain:
     def max_frequency(self, X) -> float:
         """The fastest mode of a ring held at both contacts by twice the contact stiffness at four
         times the force of extension X (a bound for the chain), rad/s."""
+        from scipy.linalg import eigh
+
         force = 4.0 * self.K_c * X**self.n
         k_contact = self.n * self.K_c ** (1.0 / self.n) * force ** ((self.n - 1.0) / self.n)
         ring = self.ring

@@ -44,9 +44,9 @@ from ringchain.theory import PAPER_TUBE_RADIUS, Ring, impact_speed, paper_data
 from ringchain.theory import _validate as v
 
 from . import signals
-from .chain import MODELS, Chain, sensor_pair
+from .chain import MODELS, Chain, sensor_pair, striker_convention
 from .chain_file import ChainFile, vary
-from .executors import InlineExecutor, default_executor
+from .executors import InlineExecutor, run_tasks
 from .experiment import MAX_DOUBLINGS, default_t_end
 from .integrate import DEFAULT_MAX_SECONDS, RunTooLargeError, estimate_run, format_duration, simulate_batch
 
@@ -111,6 +111,11 @@ class Point:
         for the static theory only.
     sensors : tuple of int
         Two sensor rings counted from the impact, near first (default rings 6 and 12).
+    striker_mass : {"m_eff", "m0"} or float
+        Inertial mass of the struck ring 0 (:class:`~ringchain.numerics.Chain`): the lattice's
+        m_eff (default, the paper's convention), the ring's mass m0 (a rigid ring in free
+        fall), or a mass in kg.  The row says which (``striker_mass``) and how much
+        (``striker_mass_kg``).
 
     Examples
     --------
@@ -129,9 +134,11 @@ class Point:
     drop_height: float | None = None
     impact_velocity: float | None = None
     sensors: tuple = paper_data.SENSOR_RINGS
+    striker_mass: str | float = "m_eff"
 
     def __post_init__(self):
         set_ = functools.partial(object.__setattr__, self)
+        set_("striker_mass", striker_convention(self.striker_mass))
         set_("R_over_r", float(v.positive("R/r", self.R_over_r)))
         set_("r", float(v.positive("r", self.r, "m")))
         set_("angle", float(v.as_float("angle", self.angle)))
@@ -164,7 +171,8 @@ class Point:
 
     def chain(self) -> Chain:
         """The hanging chain of this point (:meth:`Chain.from_ring`)."""
-        return Chain.from_ring(self.ring, self.n_rings, self.model, m_eff_ratio=self.m_eff_ratio)
+        return Chain.from_ring(self.ring, self.n_rings, self.model, m_eff_ratio=self.m_eff_ratio,
+                               striker_mass=self.striker_mass)  # fmt: skip
 
     @property
     def speed(self) -> float | None:
@@ -193,6 +201,7 @@ class Point:
             "model": self.model,
             "n_rings": self.n_rings,
             "m_eff_ratio": self.m_eff_ratio,
+            **_striker_columns(self.striker_mass, self.m_eff_ratio * ring.mass, ring.mass),
             "drop_height_m": self.drop_height,
             "impact_velocity_m_s": self.speed,
             "ring_mass_kg": ring.mass,
@@ -222,6 +231,8 @@ class FilePoint:
     drop_height, impact_velocity : float, optional
         The impact (m, or m/s).
     sensors : (int, int)
+    striker_mass : {"m_eff", "m0"} or float
+        As in :class:`Point` (``"m0"``: the mass of ring 0 of the chain).
     """
 
     description: ChainFile
@@ -232,15 +243,19 @@ class FilePoint:
     drop_height: float | None = None
     impact_velocity: float | None = None
     sensors: tuple = paper_data.SENSOR_RINGS
+    striker_mass: str | float = "m_eff"
 
     dynamic = True
+
+    def __post_init__(self):
+        object.__setattr__(self, "striker_mass", striker_convention(self.striker_mass))
 
     @functools.cached_property
     def varied(self) -> ChainFile:
         return self.description if self.field is None else vary(self.description, self.field, self.value)
 
     def chain(self) -> Chain:
-        chain = self.varied.chain(self.model, self.m_eff_ratio)
+        chain = self.varied.chain(self.model, self.m_eff_ratio, striker_mass=self.striker_mass)
         sensor_pair(self.sensors, chain.n_rings)
         return chain
 
@@ -251,14 +266,24 @@ class FilePoint:
     @property
     def chain_key(self) -> tuple:
         kind = "drop" if self.drop_height is not None else "velocity"
-        return (self.description, self.field, self.value, self.model, self.m_eff_ratio, self.sensors, kind)
+        return (self.description, self.field, self.value, self.model, self.m_eff_ratio, self.sensors,
+                self.striker_mass, kind)  # fmt: skip
 
     def columns(self) -> dict:
         row = {} if self.field is None else {self.field: self.value}
-        row |= {"n_rings": self.varied.n_rings, "model": self.model, "impact_velocity_m_s": self.speed}
+        m0 = self.varied.rings()[0].mass  # ring 0, the struck ring
+        row |= {"n_rings": self.varied.n_rings, "model": self.model, "m_eff_ratio": self.m_eff_ratio,
+                **_striker_columns(self.striker_mass, self.m_eff_ratio * m0, m0),
+                "impact_velocity_m_s": self.speed}  # fmt: skip
         if self.drop_height is not None:
             row["drop_height_m"] = self.drop_height
         return row
+
+
+def _striker_columns(striker, m_eff: float, m0: float) -> dict:
+    """The striker's columns of a row: its convention ("m_eff", "m0", or "kg" for a given mass) and its mass, kg."""
+    mass = {"m_eff": m_eff, "m0": m0}.get(striker, striker)
+    return {"striker_mass": striker if isinstance(striker, str) else "kg", "striker_mass_kg": mass}
 
 
 _IMPACT = ("drop_height", "impact_velocity")
@@ -482,8 +507,6 @@ def sweep(
     >>> [round(row["n_fit"], 3) for row in rows]
     [1.225, 1.107]
     """
-    from tqdm import tqdm
-
     try:
         batch_size = v.count("batch_size", batch_size, 1)
     except ValueError:
@@ -498,26 +521,13 @@ def sweep(
     tasks = [idx[k : k + batch_size] for idx in groups.values() for k in range(0, len(idx), batch_size)]
     options = {"t_end": t_end, "n_samples": n_samples, "method": method, "max_seconds": max_seconds, **solver}
     _check_work([[points[i] for i in task] for task in tasks], options)
-    own = executor is None
-    if own:
-        executor = default_executor(len(tasks), max_workers)
+    results = run_tasks(run_points, [([points[i] for i in task],) for task in tasks], executor, options=options,
+                        max_workers=max_workers, progress=progress, sizes=[len(task) for task in tasks], name="sweep",
+                        unit="point")  # fmt: skip
     rows: list[dict | None] = [None] * len(points)
-    try:
-        futures = {executor.submit(run_points, [points[i] for i in task], **options): task for task in tasks}
-        with tqdm(total=len(points), disable=not progress, unit="point", desc="sweep") as bar:
-            for future in cf.as_completed(futures):
-                task = futures[future]
-                for i, row in zip(task, future.result(), strict=True):
-                    rows[i] = row
-                bar.update(len(task))
-    except cf.BrokenExecutor as exc:
-        raise RuntimeError(
-            f"a worker of the sweep died ({exc}); a process may have run out of memory. "
-            "Run with max_workers=0 to see the error in this process."
-        ) from exc
-    finally:
-        if own:
-            executor.shutdown(cancel_futures=True)
+    for task, result in zip(tasks, results, strict=True):
+        for i, row in zip(task, result, strict=True):
+            rows[i] = row
     return rows
 
 
@@ -588,7 +598,7 @@ def _cell(value) -> str:
 
 def sweep_chain_file(description: ChainFile, field=None, values=(None,), *, model="dual-spring", m_eff_ratio=1.0,
                      drop_heights=None, impact_velocities=None, sensors=paper_data.SENSOR_RINGS, executor=None,
-                     **options) -> list[dict]:  # fmt: skip
+                     striker_mass="m_eff", **options) -> list[dict]:  # fmt: skip
     """One row per value of ``field`` (:func:`~ringchain.numerics.chain_file.vary`) and impact, through :func:`sweep`.
 
     Parameters
@@ -598,7 +608,7 @@ def sweep_chain_file(description: ChainFile, field=None, values=(None,), *, mode
         The varied field (``"2.R.last"``...); None runs ``description`` as it is.
     values : sequence
         Its values (m, degrees or ring counts).
-    model, m_eff_ratio
+    model, m_eff_ratio, striker_mass
         As in :meth:`~ringchain.numerics.chain_file.ChainFile.chain`.
     drop_heights, impact_velocities : sequence of float
         The impacts (m, or m/s), integrated together as one batch per chain.
@@ -612,14 +622,15 @@ def sweep_chain_file(description: ChainFile, field=None, values=(None,), *, mode
     Returns
     -------
     list of dict
-        Columns: the varied field's value, the chain's length and model, the impact, and the
+        Columns: the varied field's value, the chain's length, model, m_eff/m0 and striker, the impact, and the
         :data:`DYNAMIC_COLUMNS` (Eq. (8) only for a chain that does not change along its length).
     """
     if (drop_heights is None) == (impact_velocities is None):
         raise ValueError("give drop_heights or impact_velocities")
     impacts = [{"drop_height": h} for h in drop_heights] if drop_heights is not None else [
         {"impact_velocity": u} for u in impact_velocities]  # fmt: skip
-    points = [FilePoint(description, field, value, model, m_eff_ratio, sensors=tuple(sensors), **impact)
+    points = [FilePoint(description, field, value, model, m_eff_ratio, sensors=tuple(sensors),
+                        striker_mass=striker_mass, **impact)
               for value in values for impact in impacts]  # fmt: skip
     return sweep(points, executor, **options)
 

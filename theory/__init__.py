@@ -83,7 +83,15 @@ keyword-only, in the one order ``F_0, K, n, m, a, K_c, K_b``::
     V_s = solitary_wave_speed(F_m, K=K, n=n, m=m, a=a)
     c_0 = sound_speed(F_0, model="power-law", K=K, n=n, m=m, a=a)
 
-A static contact force is spelled ``F_0`` everywhere.
+A static contact force is spelled ``F_0`` everywhere.  Parameters outside that order are keyword-only
+too, placed by what they are (each module's docstring says where): Thornton's memory ``delta_max`` and
+constant ``delta_y`` after ``K_c``; the yield strength ``Y`` after the contact's ``angle``; a sheet's link
+tension ``T`` where ``F_0`` stands and its stiffness ``k`` where ``K`` stands; the spreads of a disordered
+chain (``sigma_K``, ``sigma_m``, ``correlation``, ``sigma_Z``) after the chain's parameters::
+
+    F_y = first_yield(R, r, E, nu, angle, Y=Y).force
+    F = thornton_unloading_force(delta, delta_max=delta_max, K_c=K_c, delta_y=delta_y)
+    c = effective_medium_speed(k=k, m=m, a=a)
 """
 
 from . import curved_beam, paper_data

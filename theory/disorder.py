@@ -100,6 +100,20 @@ the formed wave's rate gives over 10 rings.  It needs weak disorder (sigma_Z^2 s
 strong disorder gives the power-law decay of Ponson et al., Phys. Rev. E 82, 021301
 (2010)) and a decay slow on the scale of the wave (ell much longer than its support).
 
+Signatures follow the package's convention (:mod:`ringchain.theory`): what a function is evaluated at
+comes first and may be positional (the force F_m, the frequency omega, the distance); everything else is
+keyword-only.  The chain's parameters come in the package's one order K, n, m, a, with k (the stiffness of
+a linear contact, the prefactor of the n = 1 law) where K stands; the choice ``estimate=`` first, as
+``model=`` in :func:`~ringchain.theory.dispersion`; the wave's own speed V0 before the chain's parameters,
+as F_m before K in :func:`~ringchain.theory.solitary_wave_profile`.  What describes the disorder comes last:
+the spreads sigma_K (or sigma_k), sigma_m in the order of K and m, the correlation, sigma_Z, and
+attenuation_length.  These are not in the package's list of chain parameters, and are keyword-only for the
+same reason: two relative spreads (or a spread and a spacing) have the same sign and range, so a swapped
+positional call would answer silently.  Functions of the chain alone (:func:`effective_medium_speed`,
+:func:`harmonic_mean_speed`, :func:`disorder_speed_shift`, :func:`impedance_spread`,
+:func:`chain_impedance_spread`, :func:`disorder_attenuation_length`) take keywords only, like
+:func:`~ringchain.theory.solitary_wave_width`.
+
 Numeric functions: :func:`effective_medium_speed`, :func:`harmonic_mean_speed`,
 :func:`disordered_solitary_wave_speed`, :func:`disorder_speed_shift`,
 :func:`impedance_spread`, :func:`chain_impedance_spread`, :func:`localization_length`,
@@ -1072,19 +1086,19 @@ def _result(value, what, inputs):
 _CELLS = "per-ring spacings, masses and contacts"
 
 
-def effective_medium_speed(a, m, k):
+def effective_medium_speed(*, k, m, a):
     """Speed of long linear waves in a chain whose rings differ: the effective (homogenised) medium, m/s.
 
     Parameters
     ----------
-    a : array_like
-        Spacing of each ring from the next (centre to centre), m, > 0.  The last axis runs
-        over the rings; leading axes are separate chains and broadcast.
+    k : array_like
+        Stiffness of each contact, N/m, > 0.  The last axis runs over the contacts; leading axes
+        are separate chains and broadcast.  For a power-law chain under a static force F_0 the
+        slope n K_j^(1/n) F_0^((n-1)/n) (:func:`~ringchain.theory.linear.contact_stiffness`).
     m : array_like
         Mass of each ring, kg, > 0 (last axis: rings).
-    k : array_like
-        Stiffness of each contact, N/m, > 0 (last axis: contacts); for a power-law chain under
-        a static force F_0 the slope n K_j^(1/n) F_0^((n-1)/n) (:func:`~ringchain.theory.linear.contact_stiffness`).
+    a : array_like
+        Spacing of each ring from the next (centre to centre), m, > 0 (last axis: rings).
 
     Returns
     -------
@@ -1103,7 +1117,7 @@ def effective_medium_speed(a, m, k):
 
     Examples
     --------
-    >>> round(float(effective_medium_speed([1.0, 1.0], [1.0, 1.0], [1.0, 0.25])), 12)  # <1/k> = 5/2: sqrt(2/5)
+    >>> round(float(effective_medium_speed(k=[1.0, 0.25], m=[1.0, 1.0], a=[1.0, 1.0])), 12)  # <1/k> = 5/2: sqrt(2/5)
     0.632455532034
     """
     a, m, k = _rings("a", a, "m"), _rings("m", m, "kg"), _rings("k", k, "N/m")
@@ -1114,12 +1128,12 @@ def effective_medium_speed(a, m, k):
     return _result(speed, "the effective-medium speed", _CELLS)
 
 
-def harmonic_mean_speed(a, m, k):
+def harmonic_mean_speed(*, k, m, a):
     """Speed of long linear waves crossing each ring at its own local speed: <a>/<sqrt(m/k)>, m/s.
 
     Parameters
     ----------
-    a, m, k : array_like
+    k, m, a : array_like
         As in :func:`effective_medium_speed`; here m and k pair up cell by cell (ring j and
         the contact from it to ring j + 1), so their last axes must match.
 
@@ -1138,7 +1152,7 @@ def harmonic_mean_speed(a, m, k):
 
     Examples
     --------
-    >>> round(float(harmonic_mean_speed([1.0, 1.0], [1.0, 1.0], [1.0, 0.25])), 12)  # times 1 and 2: 2/3
+    >>> round(float(harmonic_mean_speed(k=[1.0, 0.25], m=[1.0, 1.0], a=[1.0, 1.0])), 12)  # times 1 and 2: 2/3
     0.666666666667
     """
     a, m, k = _rings("a", a, "m"), _rings("m", m, "kg"), _rings("k", k, "N/m")
@@ -1152,27 +1166,27 @@ def harmonic_mean_speed(a, m, k):
     return _result(speed, "the harmonic-mean speed", _CELLS)
 
 
-def disordered_solitary_wave_speed(F_m, K, n, a, m, *, estimate):
+def disordered_solitary_wave_speed(F_m, *, estimate, K, n, m, a):
     """Mean speed of the compact solitary wave of peak force F_m over a chain whose rings differ, m/s.
 
     Parameters
     ----------
     F_m : array_like
         Peak contact force of the wave, N, > 0; broadcast over the leading axes.
-    K : array_like
-        Power-law prefactor of each contact, N/m^n (last axis: contacts).
-    n : array_like
-        The common exponent, > 1 (one per chain: broadcast over the leading axes, not per ring).
-    a : array_like
-        Spacing of each ring, m (last axis: rings).
-    m : array_like
-        Mass of each ring, kg (last axis: rings; it pairs with K cell by cell for the
-        harmonic mean, so its last axis must match K's there).
     estimate : {"effective-medium", "harmonic-mean"}
         ``"effective-medium"``: Eq. (8) on the homogenised chain, <a> sqrt(2/(n+1))
         F_m^((n-1)/(2n))/sqrt(<m> <K^(-1/n)>) (:func:`effective_solitary_speed`).
         ``"harmonic-mean"``: <a>/<a/V_s>, each cell crossed at its own Eq. (8) speed,
         <a> sqrt(2/(n+1)) F_m^((n-1)/(2n))/<sqrt(m) K^(-1/(2n))> (:func:`harmonic_solitary_speed`).
+    K : array_like
+        Power-law prefactor of each contact, N/m^n (last axis: contacts).
+    n : array_like
+        The common exponent, > 1 (one per chain: broadcast over the leading axes, not per ring).
+    m : array_like
+        Mass of each ring, kg (last axis: rings; it pairs with K cell by cell for the
+        harmonic mean, so its last axis must match K's there).
+    a : array_like
+        Spacing of each ring, m (last axis: rings).
 
     Returns
     -------
@@ -1193,9 +1207,9 @@ def disordered_solitary_wave_speed(F_m, K, n, a, m, *, estimate):
     Examples
     --------
     >>> K = [1.0, 4.0]  # K^(-1/2) = 1, 1/2
-    >>> round(float(disordered_solitary_wave_speed(1.0, K, 2.0, 1.0, 1.0, estimate="effective-medium")), 6)
+    >>> round(float(disordered_solitary_wave_speed(1.0, estimate="effective-medium", K=K, n=2.0, m=1.0, a=1.0)), 6)
     0.942809
-    >>> round(float(disordered_solitary_wave_speed(1.0, K, 2.0, 1.0, 1.0, estimate="harmonic-mean")), 6)
+    >>> round(float(disordered_solitary_wave_speed(1.0, estimate="harmonic-mean", K=K, n=2.0, m=1.0, a=1.0)), 6)
     0.956585
     """
     estimate = _estimate(estimate)
@@ -1217,11 +1231,13 @@ def disordered_solitary_wave_speed(F_m, K, n, a, m, *, estimate):
     return _result(speed, "the mean speed", "force and per-ring chain parameters")
 
 
-def disorder_speed_shift(n, sigma_K, sigma_m=0.0, correlation=0.0, *, estimate):
+def disorder_speed_shift(*, estimate, n, sigma_K, sigma_m=0.0, correlation=0.0):
     """Relative change of the mean wave speed that weak disorder brings, at a given force (second order).
 
     Parameters
     ----------
+    estimate : {"effective-medium", "harmonic-mean"}
+        As in :func:`disordered_solitary_wave_speed`.
     n : array_like
         Contact exponent, > 0: the compact wave (n > 1) or the linear waves of a power-law
         chain pre-stretched by a static force (any n; both shift alike); a chain of linear
@@ -1233,8 +1249,6 @@ def disorder_speed_shift(n, sigma_K, sigma_m=0.0, correlation=0.0, *, estimate):
     correlation : array_like, optional
         Correlation of a ring's mass with the prefactor of its contact (the one towards the
         next ring), in [-1, 1].
-    estimate : {"effective-medium", "harmonic-mean"}
-        As in :func:`disordered_solitary_wave_speed`.
 
     Returns
     -------
@@ -1254,9 +1268,9 @@ def disorder_speed_shift(n, sigma_K, sigma_m=0.0, correlation=0.0, *, estimate):
 
     Examples
     --------
-    >>> round(float(disorder_speed_shift(1.0, 0.1, estimate="effective-medium")), 12)
+    >>> round(float(disorder_speed_shift(estimate="effective-medium", n=1.0, sigma_K=0.1)), 12)
     -0.005
-    >>> round(float(disorder_speed_shift(1.0, 0.1, 0.1, estimate="harmonic-mean")), 12)  # -3/800 + 1/800
+    >>> round(float(disorder_speed_shift(estimate="harmonic-mean", n=1.0, sigma_K=0.1, sigma_m=0.1)), 12)  # (-3+1)/800
     -0.0025
     """
     estimate = _estimate(estimate)
@@ -1272,7 +1286,7 @@ def disorder_speed_shift(n, sigma_K, sigma_m=0.0, correlation=0.0, *, estimate):
     return _result(shift, "the speed shift", "exponent and spreads")
 
 
-def impedance_spread(n, sigma_K, sigma_m=0.0, correlation=0.0):
+def impedance_spread(*, n, sigma_K, sigma_m=0.0, correlation=0.0):
     """Standard deviation sigma_Z of ln Z, Z = sqrt(m k) the impedance of a cell, for independent cells.
 
     Parameters
@@ -1296,7 +1310,7 @@ def impedance_spread(n, sigma_K, sigma_m=0.0, correlation=0.0):
 
     Examples
     --------
-    >>> round(float(impedance_spread(1.0, 0.2, 0.2)), 12)  # sqrt(0.04 + 0.04)/2
+    >>> round(float(impedance_spread(n=1.0, sigma_K=0.2, sigma_m=0.2)), 12)  # sqrt(0.04 + 0.04)/2
     0.141421356237
     """
     n = _exponent(n, low=0.0)
@@ -1307,18 +1321,18 @@ def impedance_spread(n, sigma_K, sigma_m=0.0, correlation=0.0):
     return _result(spread, "sigma_Z", "exponent and spreads")
 
 
-def chain_impedance_spread(m, K, n, *, lags=1):
+def chain_impedance_spread(*, K, n, m, lags=1):
     """sigma_Z of a given chain: the long-wave spread of ln Z estimated from its rings, neighbour correlations included.
 
     Parameters
     ----------
-    m : array_like
-        Mass of each ring, kg (last axis: N rings).
     K : array_like
         Prefactor of each contact, N/m^n (last axis: N - 1 contacts, or N); contact j
         pairs with ring j.
     n : array_like
         The common exponent, > 0 (1 for linear springs K = k), one per chain.
+    m : array_like
+        Mass of each ring, kg (last axis: N rings).
     lags : int, optional
         Neighbour correlations kept: a contact that depends on its two rings correlates
         cells one apart (lags=1); independent cells need lags=0.
@@ -1333,7 +1347,8 @@ def chain_impedance_spread(m, K, n, *, lags=1):
 
     Examples
     --------
-    >>> round(float(chain_impedance_spread([1.0, 4.0, 1.0, 4.0], [1.0, 1.0, 1.0, 1.0], 1.0, lags=0)), 12)  # ln(2)/2
+    >>> m = [1.0, 4.0, 1.0, 4.0]
+    >>> round(float(chain_impedance_spread(K=[1.0, 1.0, 1.0, 1.0], n=1.0, m=m, lags=0)), 12)  # ln(2)/2
     0.34657359028
     """
     if isinstance(lags, bool) or not isinstance(lags, (int, np.integer)) or lags < 0:
@@ -1350,24 +1365,28 @@ def chain_impedance_spread(m, K, n, *, lags=1):
         raise ValueError(f"lags must be smaller than the number of cells ({cells}), got {lags}")
     with np.errstate(all="ignore"):
         logs = 0.5 * np.log(m[..., :cells]) + np.log(K) / (2 * n[..., None])
-    deviation = logs - logs.mean(axis=-1, keepdims=True)
-    variance = np.mean(deviation**2, axis=-1)
-    for lag in range(1, lags + 1):
-        variance = variance + 2 * np.sum(deviation[..., lag:] * deviation[..., :-lag], axis=-1) / cells
-    return _result(np.sqrt(np.maximum(variance, 0.0)), "sigma_Z", "per-ring masses and contacts")
+        deviation = logs - logs.mean(axis=-1, keepdims=True)
+        # In units of the largest deviation, so that no square overflows (ln K/(2n) is huge for n -> 0).
+        scale = np.max(np.abs(deviation), axis=-1, keepdims=True)
+        deviation = deviation / np.where(scale > 0, scale, 1.0)
+        variance = np.mean(deviation**2, axis=-1)
+        for lag in range(1, lags + 1):
+            variance = variance + 2 * np.sum(deviation[..., lag:] * deviation[..., :-lag], axis=-1) / cells
+        spread = scale[..., 0] * np.sqrt(np.maximum(variance, 0.0))
+    return _result(spread, "sigma_Z", "per-ring masses and contacts")
 
 
-def localization_length(omega, m, k, a, sigma_m, sigma_k, correlation=0.0):
+def localization_length(omega, *, k, m, a, sigma_k, sigma_m, correlation=0.0):
     """Localization length of harmonic linear waves in a weakly disordered chain: the energy falls by e over ell, m.
 
     Parameters
     ----------
     omega : array_like
         Angular frequency, rad/s, inside the band of the mean chain: 0 < omega < 2 sqrt(k/m).
-    m, k, a : array_like
-        Mean ring mass (kg), mean contact stiffness (N/m) and mean spacing (m).
-    sigma_m, sigma_k : array_like
-        Relative standard deviations of the masses and stiffnesses, >= 0 (independent cells).
+    k, m, a : array_like
+        Mean contact stiffness (N/m), mean ring mass (kg) and mean spacing (m).
+    sigma_k, sigma_m : array_like
+        Relative standard deviations of the stiffnesses and masses, >= 0 (independent cells).
     correlation : array_like, optional
         Correlation of a ring's mass with the stiffness of its contact, in [-1, 1].
 
@@ -1389,7 +1408,7 @@ def localization_length(omega, m, k, a, sigma_m, sigma_k, correlation=0.0):
 
     Examples
     --------
-    >>> round(float(localization_length(np.sqrt(2.0), 1.0, 1.0, 1.0, 0.1, 0.0)), 6)  # theta = pi/2
+    >>> round(float(localization_length(np.sqrt(2.0), k=1.0, m=1.0, a=1.0, sigma_k=0.0, sigma_m=0.1)), 6)  # theta: pi/2
     100.0
     """
     omega = v.positive("omega", omega, "rad/s")
@@ -1410,7 +1429,7 @@ def localization_length(omega, m, k, a, sigma_m, sigma_k, correlation=0.0):
     return np.where(none, np.inf, finite)
 
 
-def disorder_pulse_spread(distance, a, sigma_Z):
+def disorder_pulse_spread(distance, *, a, sigma_Z):
     """Rms width of the Gaussian that weak disorder convolves a long linear pulse with after a distance, m.
 
     Parameters
@@ -1441,7 +1460,7 @@ def disorder_pulse_spread(distance, a, sigma_Z):
 
     Examples
     --------
-    >>> round(float(disorder_pulse_spread(100.0, 1.0, 0.1)), 12)  # 0.1 sqrt(100)
+    >>> round(float(disorder_pulse_spread(100.0, a=1.0, sigma_Z=0.1)), 12)  # 0.1 sqrt(100)
     1.0
     """
     distance = v.nonnegative("distance", distance, "m")
@@ -1458,7 +1477,7 @@ def disorder_pulse_spread(distance, a, sigma_Z):
 _ATTENUATION_EXPONENTS = (1.0, 5.0)
 
 
-def disorder_attenuation_length(n, a, sigma_Z):
+def disorder_attenuation_length(*, n, a, sigma_Z):
     """Distance over which weak disorder makes the compact wave's peak force fall by e, m.
 
     Parameters
@@ -1492,7 +1511,7 @@ def disorder_attenuation_length(n, a, sigma_Z):
 
     Examples
     --------
-    >>> round(float(disorder_attenuation_length(1.5, 1.0, 0.1)), 3)  # about 180 rings
+    >>> round(float(disorder_attenuation_length(n=1.5, a=1.0, sigma_Z=0.1)), 3)  # about 180 rings
     182.292
     """
     n = _exponent(n, *_ATTENUATION_EXPONENTS)
@@ -1506,7 +1525,7 @@ def disorder_attenuation_length(n, a, sigma_Z):
     return np.where(none, np.inf, finite)
 
 
-def attenuated_travel_time(distance, V0, n, attenuation_length):
+def attenuated_travel_time(distance, *, V0, n, attenuation_length):
     """Time the compact wave takes to cross a distance while its peak force decays, s.
 
     Parameters
@@ -1535,9 +1554,9 @@ def attenuated_travel_time(distance, V0, n, attenuation_length):
 
     Examples
     --------
-    >>> float(attenuated_travel_time(0.0, 1.0, 1.5, 10.0))
+    >>> float(attenuated_travel_time(0.0, V0=1.0, n=1.5, attenuation_length=10.0))
     0.0
-    >>> float(attenuated_travel_time(2.0, 1.0, 1.5, np.inf))
+    >>> float(attenuated_travel_time(2.0, V0=1.0, n=1.5, attenuation_length=np.inf))
     2.0
     """
     distance = v.nonnegative("distance", distance, "m")

@@ -65,6 +65,18 @@ the growth of the contact beyond Hertz's radius (a numerical capped-pressure con
 force at the same approach, the ratio growing with delta/delta_y).  Read e as a lower bound
 and the plastic loss as an upper bound.
 
+Signatures follow the package's convention (:mod:`ringchain.theory`).  The force law is evaluated at the
+approach delta (first, positional); its memory delta_max and its constants K_c and delta_y are keyword-only,
+the state before the law as F_0 before K in the package's order, and delta_y after K_c (it is the law's
+second constant, found from K_c and the yield force).  All are positive lengths or stiffnesses, so a
+swapped positional call would answer silently.  The functions of two tori take their geometry and material
+R, r, E, nu, angle by position, as :func:`~ringchain.theory.hertz_stiffness` does, and the yield strength Y
+keyword-only after them: Y and E are both positive pressures, and with Y between nu and angle (as it was) a
+copied ``hertz_stiffness(R, r, E, nu, angle)`` passed the angle as a yield strength of about 1 Pa.  The
+reduced mass m of a colliding pair follows Y (a chain parameter, keyword-only).  The numbers are evaluated
+in the approaches themselves, not in delta/delta_y, and V_y through its logarithm, so that they stay within
+double precision wherever the result does (``_largest``, ``_yield_speed``, ``_restitution``).
+
 Numeric functions: :func:`thornton_loading_force`, :func:`thornton_unloading_force`,
 :func:`thornton_residual_indentation`, :func:`thornton_energy`, :func:`plastic_stiffness`,
 :func:`equivalent_radius`, :func:`yield_velocity`, :func:`restitution_coefficient`.
@@ -78,6 +90,7 @@ import numpy as np
 
 from . import _validate
 from ._codegen import derived, sp
+from ._forms import log_monomial
 from .contact import contact_modulus, hertz_stiffness
 from .subsurface import first_yield
 
@@ -249,36 +262,71 @@ def impact():
 
 @derived
 def _loading():
+    """(F, slope) beyond the yield point in the approach itself, F = K_c sqrt(delta_y) (3 delta - delta_y)/2:
+    through x = delta/delta_y it needed delta_y^(3/2), which underflows for delta_y below 1e-205 m."""
     s = symbols()
     F, slope = loading_force()
-    return (s["x"], s["K_c"], s["delta_y"]), (F, slope)
+    return (s["delta"], s["K_c"], s["delta_y"]), (sp.factor(F.subs(s["x"], s["delta"] / s["delta_y"])), slope)
 
 
 @derived
-def _residual():
+def _largest():
+    """(delta_p, w, W_load) at the largest approach delta_m > delta_y, in delta_m and delta_y themselves.
+
+    delta_p = (sqrt(delta_m) - sqrt(delta_y))^2 (1 + sqrt(delta_y/delta_m)/2) the residual approach,
+    w = delta_m - delta_p = sqrt(delta_y) (3 delta_m - delta_y)/(2 sqrt(delta_m)) and W_load the work of loading,
+    each checked against steps 4-5.  In x_m = delta_m/delta_y they needed x_m^(3/2) and x_m^2 (overflowing for
+    x_m beyond 1e205 and 1e154), and w came as the difference of two nearly equal approaches (all digits lost
+    for x_m beyond 1e32).  The numbers use, besides, that with F_m the loading force at delta_m (:func:`_loading`)
+    the unloading curve is F = F_m (u/w)^(3/2) (it passes through (delta_m, F_m), checked) and returns
+    W_unload = 2/5 F_m w (checked).
+    """
     s = symbols()
+    D, dy, K_c = sp.Symbol("delta_m", positive=True), s["delta_y"], s["K_c"]
+    at = {s["x_m"]: D / dy}
+    F_m = sp.factor(loading_force()[0].subs(s["x"], D / dy))
     _, delta_p = unloading_force()
-    return (s["x_m"], s["delta_y"]), delta_p
+    W_load, W_unload, _ = energies()
+    root_m, root_y = sp.sqrt(D), sp.sqrt(dy)
+    residual = (root_m - root_y) ** 2 * (1 + root_y / (2 * root_m))
+    span = root_y * (3 * D - dy) / (2 * root_m)
+    checks = [
+        (residual, delta_p.subs(at)),
+        (span, D - delta_p.subs(at)),
+        (unloading_coefficient().subs(at) * span ** sp.Rational(3, 2), F_m),
+        (sp.Rational(2, 5) * F_m * span, W_unload.subs(at)),
+    ]
+    for stable, exact in checks:
+        if sp.simplify(sp.powdenest(stable - exact, force=True)) != 0:  # pragma: no cover - derivation check
+            raise RuntimeError(f"{stable} is not {exact}")
+    return (D, K_c, dy), (residual, span, sp.factor(W_load.subs(at)))
 
 
 @derived
-def _unloading():
+def _yield_speed():
+    """ln V_y: V_y is a monomial in K_c, delta_y and m, evaluated as the exponential of its logarithm (its
+    delta_y^(5/4) underflows where V_y does not)."""
     s = symbols()
-    return (s["u"], s["x_m"], s["K_c"]), unloading_coefficient() * s["u"] ** sp.Rational(3, 2)
+    V_y, _, _ = impact()
+    logs = {name: sp.Symbol(f"log_{name}", real=True) for name in ("K_c", "delta_y", "m")}
+    logarithm = log_monomial(V_y).subs({sp.log(s[name]): log for name, log in logs.items()})
+    if logarithm.has(*(s[name] for name in logs)):  # pragma: no cover - derivation check
+        raise RuntimeError(f"V_y = {V_y} is not a monomial of K_c, delta_y and m")
+    return tuple(logs.values()), logarithm
 
 
 @derived
-def _energies():
+def _restitution():
+    """e(v) for v = V/V_y >= 1 written without v^2: e = sqrt(6/5 (1 - 1/(6 v^2))) x_m^(-1/4),
+    x_m = (1 + 2 v sqrt((6 - 1/v^2)/5))/3 (checked against step 6); 6 v^2 - 1 overflowed for v beyond 1e154."""
     s = symbols()
-    W_load, W_unload, stored = energies()
-    return (s["u"], s["x_m"], s["K_c"], s["delta_y"]), (W_load - W_unload, stored)
-
-
-@derived
-def _impact():
-    s = symbols()
-    V_y, _, e = impact()
-    return (s["v"], s["K_c"], s["delta_y"], s["m"]), (V_y, e)
+    v = s["v"]
+    _, _, e = impact()
+    x_m = (1 + 2 * v * sp.sqrt((6 - 1 / v**2) / 5)) / 3
+    stable = sp.sqrt(sp.Rational(6, 5) * (1 - 1 / (6 * v**2))) / x_m ** sp.Rational(1, 4)
+    if sp.simplify(stable**4 - e**4) != 0:  # both positive: equal fourth powers  # pragma: no cover
+        raise RuntimeError(f"{stable} is not Thornton's e = {e}")
+    return (v,), stable
 
 
 def _law(K_c, delta_y, **arrays):
@@ -288,12 +336,29 @@ def _law(K_c, delta_y, **arrays):
     return K_c, delta_y
 
 
-def _largest(delta, delta_max, delta_y):
-    """x_m = max(1, delta/delta_y, delta_max/delta_y): the memory, with the current approach counted."""
-    return np.maximum(np.maximum(delta, delta_max) / delta_y, 1.0)
+def _hertz(K_c, delta):
+    """K_c delta^(3/2), zero for delta <= 0."""
+    return K_c * np.maximum(delta, 0.0) ** 1.5
 
 
-def thornton_loading_force(delta, K_c, delta_y):
+def _memory(delta, delta_max, K_c, delta_y):
+    """Thornton's law with memory at the approach delta: (F, u, plastic, F_m, span, W_load).
+
+    delta_m = max(delta_y, delta, delta_max) (the memory, with the current approach counted); ``plastic`` where
+    delta_m > delta_y; u = delta - delta_p the elastic approach on the current curve (w exactly at delta_m, delta
+    on the Hertz curve); F = F_m (u/w)^(3/2) there, K_c delta^(3/2) on the Hertz curve, zero where u <= 0.
+    """
+    delta_m = np.maximum(np.maximum(delta, delta_max), delta_y)
+    plastic = delta_m > delta_y
+    F_m, _ = _loading(delta_m, K_c, delta_y)
+    delta_p, span, W_load = (np.asarray(x, dtype=float) for x in _largest(delta_m, K_c, delta_y))
+    u = np.where(plastic, np.where(delta >= delta_m, span, delta - delta_p), delta)
+    ratio = np.maximum(u, 0.0) / span
+    F = np.where(plastic, F_m * ratio**1.5, _hertz(K_c, delta))
+    return F, u, plastic, F_m, span, W_load
+
+
+def thornton_loading_force(delta, *, K_c, delta_y):
     """Force of Thornton's elastic-perfectly plastic contact on first loading, N.
 
     Parameters
@@ -318,19 +383,18 @@ def thornton_loading_force(delta, K_c, delta_y):
 
     Examples
     --------
-    >>> [float(f) for f in thornton_loading_force([0.5, 1.0, 2.0], 1.0, 1.0)]  # K_c = delta_y = 1
+    >>> [float(f) for f in thornton_loading_force([0.5, 1.0, 2.0], K_c=1.0, delta_y=1.0)]
     [0.3535533905932738, 1.0, 2.5]
     """
     delta = _validate.as_float("delta", delta)
     K_c, delta_y = _law(K_c, delta_y, delta=delta)
     with np.errstate(all="ignore"):
-        x = np.maximum(delta, 0.0) / delta_y
-        F_plastic, _ = _loading(np.maximum(x, 1.0), K_c, delta_y)
-        F = np.where(x > 1.0, F_plastic, K_c * np.maximum(delta, 0.0) ** 1.5)
+        F_plastic, _ = _loading(np.maximum(delta, delta_y), K_c, delta_y)
+        F = np.where(delta > delta_y, F_plastic, _hertz(K_c, delta))
     return _validate.finite_result(F, "the contact force", "approach and contact constants")
 
 
-def thornton_unloading_force(delta, delta_max, K_c, delta_y):
+def thornton_unloading_force(delta, *, delta_max, K_c, delta_y):
     """Force of Thornton's contact with memory: unloading and reloading below the largest approach delta_max, N.
 
     Parameters
@@ -359,21 +423,18 @@ def thornton_unloading_force(delta, delta_max, K_c, delta_y):
 
     Examples
     --------
-    >>> [round(float(f), 4) for f in thornton_unloading_force([0.5, 1.0, 3.0], 3.0, 1.0, 1.0)]  # from 3 delta_y
+    >>> [round(float(f), 4) for f in thornton_unloading_force([0.5, 1.0, 3.0], delta_max=3.0, K_c=1.0, delta_y=1.0)]
     [0.0, 0.1962, 4.0]
     """
     delta = _validate.as_float("delta", delta)
     delta_max = _validate.nonnegative("delta_max", delta_max, "m")
     K_c, delta_y = _law(K_c, delta_y, delta=delta, delta_max=delta_max)
     with np.errstate(all="ignore"):
-        x_m = _largest(delta, delta_max, delta_y)
-        delta_p = np.maximum(_residual(x_m, delta_y), 0.0)
-        u = np.minimum(delta, x_m * delta_y) - delta_p
-        F = np.where(u > 0, _unloading(np.maximum(u, 0.0), x_m, K_c), 0.0)
+        F, *_ = _memory(delta, delta_max, K_c, delta_y)
     return _validate.finite_result(F, "the contact force", "approach and contact constants")
 
 
-def thornton_residual_indentation(delta_max, delta_y):
+def thornton_residual_indentation(delta_max, *, delta_y):
     """Approach delta_p at which a contact unloaded from delta_max opens (the permanent flattening), m.
 
     Parameters
@@ -391,19 +452,20 @@ def thornton_residual_indentation(delta_max, delta_y):
 
     Examples
     --------
-    >>> float(thornton_residual_indentation(4.0, 1.0))  # 4 - 11/4
+    >>> float(thornton_residual_indentation(4.0, delta_y=1.0))  # 4 - 11/4
     1.25
     """
     delta_max = _validate.nonnegative("delta_max", delta_max, "m")
     delta_y = _validate.positive("delta_y", delta_y, "m")
     _validate.broadcast_shape(delta_max=delta_max, delta_y=delta_y)
     with np.errstate(all="ignore"):
-        x_m = _largest(0.0, delta_max, delta_y)
-        delta_p = _residual(x_m, delta_y)
-    return _validate.finite_result(np.maximum(delta_p, 0.0), "the residual approach", "approaches")
+        delta_m = np.maximum(delta_max, delta_y)
+        delta_p, _, _ = _largest(delta_m, 1.0, delta_y)
+        delta_p = np.where(delta_m > delta_y, delta_p, 0.0)
+    return _validate.finite_result(delta_p, "the residual approach", "approaches")
 
 
-def thornton_energy(delta, delta_max, K_c, delta_y):
+def thornton_energy(delta, *, delta_max, K_c, delta_y):
     """Elastic energy stored in Thornton's contact and the plastic work done on it so far, J.
 
     Parameters
@@ -428,30 +490,38 @@ def thornton_energy(delta, delta_max, K_c, delta_y):
 
     Examples
     --------
-    >>> [round(float(w), 4) for w in thornton_energy(3.0, 3.0, 1.0, 1.0)]  # top of a loading to 3 delta_y
+    >>> [round(float(w), 4) for w in thornton_energy(3.0, delta_max=3.0, K_c=1.0, delta_y=1.0)]
     [3.695, 1.705]
     """
     delta = _validate.as_float("delta", delta)
     delta_max = _validate.nonnegative("delta_max", delta_max, "m")
     K_c, delta_y = _law(K_c, delta_y, delta=delta, delta_max=delta_max)
     with np.errstate(all="ignore"):
-        x_m = _largest(delta, delta_max, delta_y)
-        delta_p = np.maximum(_residual(x_m, delta_y), 0.0)
-        u = np.minimum(delta, x_m * delta_y) - delta_p
-        dissipated, stored = _energies(np.maximum(u, 0.0), x_m, K_c, delta_y)
-        stored = np.where(u > 0, stored, 0.0)
-        dissipated = np.where(x_m > 1.0, dissipated, 0.0)
+        F, u, plastic, F_m, span, W_load = _memory(delta, delta_max, K_c, delta_y)
+        stored = 0.4 * F * np.maximum(u, 0.0)  # the integral of C t^(3/2) from 0 to u: 2/5 F u
+        dissipated = np.where(plastic, W_load - 0.4 * F_m * span, 0.0)  # W_load - W_unload
     what = "the contact energy", "approach and contact constants"
     return _validate.finite_result(stored, *what), _validate.finite_result(dissipated, *what)
 
 
 def _contact(R, r, E, nu, Y, angle):
-    """(K_c, delta_y, F_y) of the torus contact (validated)."""
-    y = first_yield(R, r, E, nu, Y, angle)
-    return hertz_stiffness(R, r, E, nu, angle), y.indentation, y.force
+    """(K_c, delta_y) of the torus contact (validated), delta_y refused below the normal doubles.
+
+    A subnormal delta_y keeps a few digits or none (it is 0 below 5e-324), and every quantity built on it would
+    carry that error silently: zero, or an infinite v/V_y.
+    """
+    y = first_yield(R, r, E, nu, angle, Y=Y)
+    delta_y = np.asarray(y.indentation, dtype=float)
+    if delta_y.size and not np.min(delta_y) >= np.finfo(float).tiny:
+        raise ValueError(
+            f"the approach at first yield, delta_y = {_validate.show(np.min(delta_y))} m, lies below the normal range "
+            "of double precision for these radii, elastic constants and yield strength; they lie far outside any "
+            "physical range"
+        )
+    return hertz_stiffness(R, r, E, nu, angle), delta_y
 
 
-def plastic_stiffness(R, r, E, nu, Y, angle=np.pi / 2):
+def plastic_stiffness(R, r, E, nu, angle=np.pi / 2, *, Y):
     """Slope of Thornton's loading line, pi p_y R_e = 3/2 K_c sqrt(delta_y), N/m.
 
     Parameters
@@ -460,10 +530,10 @@ def plastic_stiffness(R, r, E, nu, Y, angle=np.pi / 2):
         Major and tube radius of the tori, m (R > 2 r).
     E, nu : array_like
         Young's modulus (Pa) and Poisson's ratio.
-    Y : array_like
-        Yield strength, Pa.
     angle : array_like, optional
         Contact angle between the ring planes, rad; default pi/2.
+    Y : array_like
+        Yield strength, Pa.
 
     Returns
     -------
@@ -473,12 +543,12 @@ def plastic_stiffness(R, r, E, nu, Y, angle=np.pi / 2):
 
     Examples
     --------
-    >>> round(float(plastic_stiffness(22.5e-3, 2.5e-3, 193e9, 0.29, 215e6)) / 1e6, 3)  # MN/m
+    >>> round(float(plastic_stiffness(22.5e-3, 2.5e-3, 193e9, 0.29, Y=215e6)) / 1e6, 3)  # MN/m
     3.089
     """
-    K_c, delta_y, _ = _contact(R, r, E, nu, Y, angle)
+    K_c, delta_y = _contact(R, r, E, nu, Y, angle)
     with np.errstate(all="ignore"):
-        _, slope = _loading(1.0, K_c, delta_y)
+        _, slope = _loading(delta_y, K_c, delta_y)
     return _validate.finite_result(slope, "the plastic stiffness", "radii, elastic constants and yield strength")
 
 
@@ -509,7 +579,7 @@ def equivalent_radius(R, r, angle=np.pi / 2):
     return _validate.finite_result(R_e, "the equivalent radius", "radii")
 
 
-def yield_velocity(R, r, E, nu, Y, m, angle=np.pi / 2):
+def yield_velocity(R, r, E, nu, angle=np.pi / 2, *, Y, m):
     """Relative impact speed at which the contact of two colliding rings just yields, m/s.
 
     Parameters
@@ -518,12 +588,12 @@ def yield_velocity(R, r, E, nu, Y, m, angle=np.pi / 2):
         Major and tube radius of the tori, m (R > 2 r).
     E, nu : array_like
         Young's modulus (Pa) and Poisson's ratio.
+    angle : array_like, optional
+        Contact angle between the ring planes, rad; default pi/2.
     Y : array_like
         Yield strength, Pa.
     m : array_like
         Reduced mass of the pair, kg (m0/2 for two equal free rings of mass m0).
-    angle : array_like, optional
-        Contact angle between the ring planes, rad; default pi/2.
 
     Returns
     -------
@@ -534,18 +604,18 @@ def yield_velocity(R, r, E, nu, Y, m, angle=np.pi / 2):
     Examples
     --------
     >>> m = 8000.0 * 2 * np.pi**2 * 22.5e-3 * 2.5e-3**2 / 2  # two of the paper's rings
-    >>> round(float(yield_velocity(22.5e-3, 2.5e-3, 193e9, 0.29, 215e6, m)) * 1e3, 3)  # mm/s
+    >>> round(float(yield_velocity(22.5e-3, 2.5e-3, 193e9, 0.29, Y=215e6, m=m)) * 1e3, 3)  # mm/s
     0.916
     """
     m = _validate.positive("m", m, "kg")
-    K_c, delta_y, _ = _contact(R, r, E, nu, Y, angle)
+    K_c, delta_y = _contact(R, r, E, nu, Y, angle)
     _validate.broadcast_shape(m=m, K_c=K_c)
     with np.errstate(all="ignore"):
-        V_y, _ = _impact(1.0, K_c, delta_y, m)
+        V_y = np.exp(_yield_speed(np.log(K_c), np.log(delta_y), np.log(m)))
     return _validate.finite_result(V_y, "the yield speed", "radii, elastic constants, yield strength and mass")
 
 
-def restitution_coefficient(v, R, r, E, nu, Y, m, angle=np.pi / 2):
+def restitution_coefficient(v, R, r, E, nu, angle=np.pi / 2, *, Y, m):
     """Coefficient of restitution of two rings colliding at relative speed v with Thornton's contact.
 
     Parameters
@@ -556,12 +626,12 @@ def restitution_coefficient(v, R, r, E, nu, Y, m, angle=np.pi / 2):
         Major and tube radius of the tori, m (R > 2 r).
     E, nu : array_like
         Young's modulus (Pa) and Poisson's ratio.
+    angle : array_like, optional
+        Contact angle between the ring planes, rad; default pi/2.
     Y : array_like
         Yield strength, Pa.
     m : array_like
         Reduced mass of the pair, kg.
-    angle : array_like, optional
-        Contact angle between the ring planes, rad; default pi/2.
 
     Returns
     -------
@@ -578,16 +648,22 @@ def restitution_coefficient(v, R, r, E, nu, Y, m, angle=np.pi / 2):
     --------
     >>> m = 8000.0 * 2 * np.pi**2 * 22.5e-3 * 2.5e-3**2 / 2
     >>> v0 = np.sqrt(2 * 9.80665 * 0.05)  # a 5 cm drop
-    >>> round(float(restitution_coefficient(v0, 22.5e-3, 2.5e-3, 193e9, 0.29, 215e6, m)), 3)
+    >>> round(float(restitution_coefficient(v0, 22.5e-3, 2.5e-3, 193e9, 0.29, Y=215e6, m=m)), 3)
     0.207
     """
     speed = _validate.nonnegative("v", v, "m/s")
     m = _validate.positive("m", m, "kg")
-    K_c, delta_y, _ = _contact(R, r, E, nu, Y, angle)
+    K_c, delta_y = _contact(R, r, E, nu, Y, angle)
     _validate.broadcast_shape(v=speed, m=m, K_c=K_c)
     with np.errstate(all="ignore"):
-        V_y, _ = _impact(1.0, K_c, delta_y, m)
-        ratio = speed / V_y
-        _, e = _impact(np.maximum(ratio, 1.0), K_c, delta_y, m)
-        e = np.where(ratio > 1.0, e, 1.0)
+        V_y = np.exp(_yield_speed(np.log(K_c), np.log(delta_y), np.log(m)))
+        ratio = np.where(speed > 0, speed / V_y, 0.0)
+    if not np.all(ratio < np.inf):
+        raise ValueError(
+            "the speed in units of the yield speed V_y (v/V_y) is beyond double precision for these speed, radii, "
+            f"elastic constants, yield strength and mass (V_y = {_validate.show(np.min(V_y))} m/s); they lie far "
+            "outside any physical range"
+        )
+    with np.errstate(all="ignore"):
+        e = np.where(ratio > 1.0, _restitution(np.maximum(ratio, 1.0)), 1.0)
     return _validate.finite_result(e, "the coefficient of restitution", "speed, radii, elastic constants and mass")

@@ -385,9 +385,12 @@ def series_stiffness_for_power_law(*, K, n, F_min=DEFAULT_FORCE_WINDOW[0], F_max
                          f"[{F_min:g}, {F_max:g}] N")  # fmt: skip
     log_crossover = brentq(lambda x: float(fitted(x)[1]) - n, low, high, xtol=1e-13, rtol=1e-15)
     K_unit = float(fitted(log_crossover)[0])
-    K_b = (K / K_unit) ** (1.0 / n)
-    K_c = math.sqrt(K_b**3 / math.exp(log_crossover))
-    if not (math.isfinite(K_c) and math.isfinite(K_b)):
+    # In logarithms: K_b^3 overflows for K beyond about 1e100 N/m^n where K_c itself does not.
+    log_K_b = (math.log(K) - math.log(K_unit)) / n
+    with np.errstate(over="ignore"):
+        K_b = float(np.exp(log_K_b))
+        K_c = float(np.exp(1.5 * log_K_b - 0.5 * log_crossover))
+    if not (0.0 < K_c < math.inf and 0.0 < K_b < math.inf):  # beyond the largest double, or below the smallest
         raise ValueError(f"the springs of K = {K:g} N/m^n, n = {n:g} are not representable in double precision")
     return K_c, K_b
 

@@ -58,6 +58,14 @@ loaded at 4 or 6 contacts, and its body's response is a 4 x 4 or 6 x 6 complianc
 not one spring per link; the sheet here is the power-law model (one site per ring, Eq. (7)), whose link
 stiffness k may be the tangent of any static law of the contact, the series law of Eq. (3) included.
 
+Signatures follow the package's convention (:mod:`ringchain.theory`): the wavevector (qx, qy) or the
+direction comes first; everything else is keyword-only.  The choice ``pattern=`` first, as ``model=`` in
+:func:`~ringchain.theory.dispersion`; then T, k, m, a: the link tension T is the static force of the
+contact and stands where F_0 stands in the package's order F_0, K, n, m, a, and the axial stiffness k, the
+slope of the contact law at T, where K stands.  The long-wave speeds are computed from k a^2/m and T a/m
+scaled by the largest of them (``_tensor_in_speeds``), and long waves of the dispersion as q times
+those speeds, so that neither squares nor sin^2 of a tiny phase leave the doubles where omega does not.
+
 Numeric functions: :func:`sheet_dispersion`, :func:`sheet_sound_speeds`.
 """
 
@@ -360,18 +368,35 @@ def _triangular_matrix():
     return (s["q_x"], s["q_y"], s["m"], *_family_arguments("triangular")), sp.Tuple(D[0, 0], D[1, 1], D[0, 1])
 
 
+def _tensor_in_speeds(pattern):
+    """The long-wave tensor in theta and, per family, kappa_f = k_f a_f^2/m and tau_f = T_f a_f/m (m^2/s^2).
+
+    The mass and the lengths cancel (checked): every entry is a sum of the kappa_f and tau_f times functions
+    of theta, so the numbers may scale them all by one factor.  In k, T, m and a its entries overflowed
+    (k a^2 beyond 1e308 for a above 1e154 m) where the speeds, their square roots, did not.
+    """
+    s = symbols()
+    C = long_wave_tensor(pattern)
+    fams = families(pattern)
+    kappas = [sp.Symbol(f"kappa_{i}", nonnegative=True) for i in range(len(fams))]
+    taus = [sp.Symbol(f"tau_{i}", nonnegative=True) for i in range(len(fams))]
+    speeds = {}
+    for f, kappa, tau in zip(fams, kappas, taus, strict=True):
+        speeds.update({f.k: kappa * s["m"] / f.length**2, f.T: tau * s["m"] / f.length})
+    C = C.subs(speeds).applyfunc(sp.simplify)
+    if C.has(s["m"], *(f.length for f in fams)):  # pragma: no cover - derivation check
+        raise RuntimeError(f"the long-wave tensor of the {pattern} sheet is not a function of k a^2/m and T a/m")
+    return (s["theta"], *kappas, *taus), sp.Tuple(C[0, 0], C[1, 1], C[0, 1])
+
+
 @derived
 def _square_tensor():
-    s = symbols()
-    C = long_wave_tensor("square")
-    return (s["theta"], s["m"], *_family_arguments("square")), sp.Tuple(C[0, 0], C[1, 1], C[0, 1])
+    return _tensor_in_speeds("square")
 
 
 @derived
 def _triangular_tensor():
-    s = symbols()
-    C = long_wave_tensor("triangular")
-    return (s["theta"], s["m"], *_family_arguments("triangular")), sp.Tuple(C[0, 0], C[1, 1], C[0, 1])
+    return _tensor_in_speeds("triangular")
 
 
 _MATRIX = {"square": _square_matrix, "triangular": _triangular_matrix}
@@ -421,6 +446,31 @@ def _sheet(pattern, k, T, m, a):
     return m, [*ks, *Ts, *lengths]
 
 
+def _speeds_squared(pattern, angle, m, params):
+    """(xx, yy, xy, log_scale): the long-wave tensor along ``angle`` divided by exp(log_scale), entries at most 3.
+
+    kappa_f = k_f a_f^2/m and tau_f = T_f a_f/m (:func:`_tensor_in_speeds`) are formed from logarithms and divided
+    by the largest of them, so that neither they nor the entries leave the doubles; no stiffness and no tension
+    leave a zero tensor.
+    """
+    count = len(FAMILY_NAMES[pattern])
+    ks, Ts, lengths = params[:count], params[count : 2 * count], params[2 * count :]
+    lengths = lengths * count if len(lengths) == 1 else lengths
+    log_m = np.log(m)
+    logs = [np.log(k) + 2 * np.log(a) - log_m for k, a in zip(ks, lengths, strict=True)]
+    logs += [np.log(T) + np.log(a) - log_m for T, a in zip(Ts, lengths, strict=True)]
+    log_scale = functools.reduce(np.maximum, logs)
+    log_scale = np.where(log_scale > -np.inf, log_scale, 0.0)
+    scaled = [np.exp(x - log_scale) for x in logs]
+    xx, yy, xy = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in _TENSOR[pattern](angle, *scaled)))
+    return xx, yy, xy, log_scale
+
+
+#: Below this phase q a/2 per bond sin^2 equals its argument's square to double precision (relative 3e-17), and
+#: the dispersion is the long-wave tensor times q^2 (:func:`sheet_dispersion`).
+_LONG_WAVE_PHASE = 1e-8
+
+
 def _named(pattern, values):
     """The per-family arrays with their parameter names, for shape messages."""
     names = FAMILY_NAMES[pattern]
@@ -444,7 +494,7 @@ def _ascending(xx, yy, xy):
     return np.maximum(lower, 0.0), upper
 
 
-def sheet_dispersion(qx, qy, *, pattern, k, T, m, a):
+def sheet_dispersion(qx, qy, *, pattern, T, k, m, a):
     """Angular frequencies of the in-plane waves of a pretensioned sheet of interlinked rings, rad/s.
 
     Parameters
@@ -455,13 +505,13 @@ def sheet_dispersion(qx, qy, *, pattern, k, T, m, a):
         ``"square"``: each ring linked to 4 neighbours along x and y (4-in-1 chain mail), bond vectors
         (a_x, 0) and (0, a_y).  ``"triangular"``: 6 neighbours at 0, 60 and 120 degrees from x (6-in-1),
         bonds of one length a.
+    T : array_like or tuple
+        Static tension of a link, N, >= 0 (links carry tension only).  A tuple gives one value per
+        link family, (T_x, T_y) for the square sheet and (T_0, T_60, T_120) for the triangular one;
+        any other array_like (a number, a list, an ndarray) is the same for every family and broadcasts.
     k : array_like or tuple
         Axial stiffness of a link at its static tension, N/m, >= 0: k = dF/d delta of the contact law
-        (for the power law F = K delta^n, k = n K^(1/n) T^((n-1)/n)).  A tuple gives one value per
-        link family, (k_x, k_y) for the square sheet and (k_0, k_60, k_120) for the triangular one;
-        any other array_like (a number, a list, an ndarray) is the same for every family and broadcasts.
-    T : array_like or tuple
-        Static tension of a link, N, >= 0 (links carry tension only); per family as ``k``.
+        (for the power law F = K delta^n, k = n K^(1/n) T^((n-1)/n)); per family as ``T``.
     m : array_like
         Inertial mass of a ring (one site per ring), kg.
     a : array_like or tuple
@@ -471,7 +521,7 @@ def sheet_dispersion(qx, qy, *, pattern, k, T, m, a):
     Returns
     -------
     ndarray
-        omega, rad/s, of shape broadcast(qx, qy, k, T, m, a) + (2,): the two in-plane branches on the
+        omega, rad/s, of shape broadcast(qx, qy, T, k, m, a) + (2,): the two in-plane branches on the
         last axis, ascending (so a branch is not one polarisation: where they cross the labels swap).
         Along a lattice direction of the square sheet the branches are the longitudinal wave (the 1D
         chain's) and the transverse wave (the string's, with the geometric stiffness T/a); for rings
@@ -489,9 +539,9 @@ def sheet_dispersion(qx, qy, *, pattern, k, T, m, a):
 
     Examples
     --------
-    >>> sheet_dispersion(np.pi, 0.0, pattern="square", k=1.0, T=0.25, m=1.0, a=1.0).tolist()  # T/a, k
+    >>> sheet_dispersion(np.pi, 0.0, pattern="square", T=0.25, k=1.0, m=1.0, a=1.0).tolist()  # T/a, k
     [1.0, 2.0]
-    >>> sheet_dispersion([0.1, 0.2], 0.0, pattern="triangular", k=1.0, T=0.0, m=1.0, a=1.0).shape
+    >>> sheet_dispersion([0.1, 0.2], 0.0, pattern="triangular", T=0.0, k=1.0, m=1.0, a=1.0).shape
     (2, 2)
     """
     m, params = _sheet(pattern, k, T, m, a)
@@ -500,6 +550,15 @@ def sheet_dispersion(qx, qy, *, pattern, k, T, m, a):
     with np.errstate(all="ignore"):  # overflow is reported below, by value
         lower, upper = _ascending(*_MATRIX[pattern](qx, qy, m, *params))
         omega = np.stack([np.sqrt(lower), np.sqrt(upper)], axis=-1)
+        # Long waves as q^2 times the long-wave tensor: sin^2(q a/2) underflows for q a below 1e-154, and with it
+        # omega, where the geometric stiffness T/a is large enough to keep omega far above the smallest double.
+        q = np.hypot(qx, qy)
+        long = q * functools.reduce(np.maximum, params[2 * len(FAMILY_NAMES[pattern]) :]) / 2 < _LONG_WAVE_PHASE
+        if np.any(long):
+            xx, yy, xy, log_scale = _speeds_squared(pattern, np.arctan2(qy, qx), m, params)
+            speeds = np.stack([np.sqrt(c) for c in _ascending(xx, yy, xy)], axis=-1)
+            speeds = speeds * np.exp(0.5 * log_scale)[..., None]
+            omega = np.where(long[..., None], q[..., None] * speeds, omega)
     return v.finite_result(omega, "omega", _SHEET)
 
 
@@ -510,14 +569,14 @@ class SheetSpeeds(NamedTuple):
     transverse: np.ndarray
 
 
-def sheet_sound_speeds(angle, *, pattern, k, T, m, a):
+def sheet_sound_speeds(angle, *, pattern, T, k, m, a):
     """Speeds of long in-plane waves of a pretensioned sheet along a direction, m/s.
 
     Parameters
     ----------
     angle : array_like
         Direction of propagation, rad, from the x axis (the first lattice direction).
-    pattern, k, T, m, a
+    pattern, T, k, m, a
         As in :func:`sheet_dispersion`.
 
     Returns
@@ -528,7 +587,7 @@ def sheet_sound_speeds(angle, *, pattern, k, T, m, a):
         Where its polarisations are not along n and its normal (the square sheet off its axes and
         diagonals, or a biaxially pretensioned triangular one) the waves are quasi-longitudinal and
         quasi-transverse: ``longitudinal`` is the branch polarised nearer n; where both are 45 degrees
-        from n it is the faster.  Arrays of shape broadcast(angle, k, T, m, a).
+        from n it is the faster.  Arrays of shape broadcast(angle, T, k, m, a).
 
     Notes
     -----
@@ -539,7 +598,7 @@ def sheet_sound_speeds(angle, *, pattern, k, T, m, a):
 
     Examples
     --------
-    >>> c = sheet_sound_speeds(0.0, pattern="triangular", k=8.0, T=0.0, m=9.0, a=1.0)
+    >>> c = sheet_sound_speeds(0.0, pattern="triangular", T=0.0, k=8.0, m=9.0, a=1.0)
     >>> round(float(c.longitudinal), 12), round(float(c.transverse) ** 2, 12)
     (1.0, 0.333333333333)
     """
@@ -547,7 +606,7 @@ def sheet_sound_speeds(angle, *, pattern, k, T, m, a):
     angle = v.as_float("angle", angle)
     v.broadcast_shape(angle=angle, m=m, **_named(pattern, params))
     with np.errstate(all="ignore"):  # overflow is reported below, by value
-        xx, yy, xy = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in _TENSOR[pattern](angle, m, *params)))
+        xx, yy, xy, log_scale = _speeds_squared(pattern, angle, m, params)
         lower, upper = _ascending(xx, yy, xy)
         # n.C n - t.C t: positive when the faster branch is polarised nearer n (the polarisation of the
         # larger eigenvalue makes the angle psi with tan(2 psi) = 2 xy/(xx - yy)).  Zero when both are 45
@@ -555,8 +614,9 @@ def sheet_sound_speeds(angle, *, pattern, k, T, m, a):
         # term: cos(pi/2) is 6e-17 in double) that counts as zero, and the faster branch is longitudinal.
         nearer_n = (xx - yy) * np.cos(2 * angle) + 2 * xy * np.sin(2 * angle)
         nearer = nearer_n >= -8 * np.finfo(float).eps * (np.abs(xx - yy) + 2 * np.abs(xy))
-        longitudinal = np.sqrt(np.where(nearer, upper, lower))
-        transverse = np.sqrt(np.where(nearer, lower, upper))
+        scale = np.exp(0.5 * log_scale)
+        longitudinal = np.sqrt(np.where(nearer, upper, lower)) * scale
+        transverse = np.sqrt(np.where(nearer, lower, upper)) * scale
     return SheetSpeeds(
         v.finite_result(longitudinal, "the longitudinal speed", _SHEET),
         v.finite_result(transverse, "the transverse speed", _SHEET),

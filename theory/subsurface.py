@@ -55,6 +55,15 @@ The maximum of von Mises stress on the axis is the maximum in the body for the H
 contact of metals (Johnson Sec. 3.4, 4.2; Thomas and Hoersch): the tests check it against
 a search off the axis for nu = 0.29 at 90 and 60 degrees.
 
+Signatures follow the package's convention (:mod:`ringchain.theory`): the geometry and material of the
+contact R, r, E, nu, angle by position, as for :func:`~ringchain.theory.hertz_stiffness`, and the yield
+strength Y keyword-only after them (Y and E are both positive pressures; with Y between nu and angle, as
+it was, a copied ``hertz_stiffness(R, r, E, nu, angle)`` passed the angle as Y).  :func:`subsurface_stress`
+is evaluated at the depth z (first) and takes the force F keyword-only, as
+:func:`~ringchain.theory.contact_semi_axes` does.  The load and the semi-axes at a pressure are evaluated
+through their logarithms (``_log_load_at_pressure``): A^2 E^2 leaves the doubles for tori far smaller
+than any ring where the load does not.
+
 Numeric functions: :func:`subsurface_stress`, :func:`first_yield` (:class:`FirstYield`),
 :func:`yield_force`.
 """
@@ -74,7 +83,6 @@ from .contact import (
     effective_modulus,
     elliptic_placeholders,
     hertz_stiffness,
-    relative_curvatures,
 )
 from .contact import symbols as contact_symbols
 from .special import carlson_rd, carlson_rf
@@ -489,28 +497,26 @@ def _elliptical_axis():
 
 
 @derived
-def _load_at_pressure():
-    """(P, a) of the elliptical contact at peak pressure p0, in p0, A, E, nu, m_1 (Carlson's forms)."""
+def _log_load_at_pressure():
+    """(ln P, ln a) of the elliptical contact at peak pressure p0, in ln p0, ln A, ln E, nu and m_1 (Carlson's forms).
+
+    P = P_1 p0^3/(A^2 E^2) and a = a_1 p0/(A E) with P_1, a_1 functions of nu and m_1 alone (checked): in
+    logarithms no power of p0, A or E leaves the doubles on the way (A^2 E^2 overflowed for r below 1e-140 m,
+    and the yield force came out as zero).  The circle is m_1 = 1, A = 1/(2 R').
+    """
     s, c = symbols(), contact_symbols()
+    p0, A, E, nu, m_1 = s["p0"], c["A"], c["E"], c["nu"], s["m_1"]
     P, a, _ = yield_relations()
     material = {sp.Symbol("E^*", positive=True): effective_modulus()}
-    exprs = [_with_carlson(e.subs(material), s["m_1"]) for e in (P, a)]
-    return (s["p0"], c["A"], c["E"], c["nu"], s["m_1"]), tuple(exprs)
-
-
-@derived
-def _load_at_pressure_circular():
-    """(P, a) of the circular contact of two perpendicular tori at peak pressure p0, in p0, R, r, E, nu."""
-    s, c = symbols(), contact_symbols()
-    P, a, _ = yield_relations()
-    A, _ = relative_curvatures()
-    circle = {
-        s["m_1"]: 1,
-        elliptic_placeholders()[1]: sp.pi / 4,  # D(0) = lim (K - E)/m = pi/4
-        c["A"]: sp.factor(A.subs(c["theta"], sp.pi / 2)),
-        sp.Symbol("E^*", positive=True): effective_modulus(),
-    }
-    return (s["p0"], c["R"], c["r"], c["E"], c["nu"]), tuple(sp.simplify(e.subs(circle)) for e in (P, a))
+    P, a = (_with_carlson(e.subs(material), m_1) for e in (P, a))
+    unit = {p0: 1, A: 1, E: 1}
+    P_1, a_1 = P.subs(unit), a.subs(unit)
+    if sp.simplify(P - P_1 * p0**3 / (A * E) ** 2) != 0 or sp.simplify(a - a_1 * p0 / (A * E)) != 0:  # pragma: no cover
+        raise RuntimeError("the load and the semi-axis are not P_1 p0^3/(A E)^2 and a_1 p0/(A E)")
+    logs = sp.symbols("log_p0 log_A log_E", real=True)
+    log_P = 3 * logs[0] - 2 * logs[1] - 2 * logs[2] + sp.log(P_1)
+    log_a = logs[0] - logs[1] - logs[2] + sp.log(a_1)
+    return (*logs, nu, m_1), (log_P, log_a)
 
 
 #: Depths (zeta = z/b) scanned for the largest von Mises stress before the bisection: the maximum lies
@@ -608,7 +614,7 @@ class FirstYield(NamedTuple):
     depth_ratio: np.ndarray
 
 
-def first_yield(R, r, E, nu, Y, angle=np.pi / 2) -> FirstYield:
+def first_yield(R, r, E, nu, angle=np.pi / 2, *, Y) -> FirstYield:
     """Force, approach, pressure and depth at which the contact of two identical tori first yields.
 
     Parameters
@@ -619,10 +625,10 @@ def first_yield(R, r, E, nu, Y, angle=np.pi / 2) -> FirstYield:
         Young's modulus, Pa.
     nu : array_like
         Poisson's ratio, in (-1, 0.5).
-    Y : array_like
-        Yield strength in uniaxial tension (von Mises), Pa.
     angle : array_like, optional
         Contact angle theta between the ring planes, rad, in (theta_min, pi/2]; default pi/2.
+    Y : array_like
+        Yield strength in uniaxial tension (von Mises), Pa.
 
     Returns
     -------
@@ -641,34 +647,28 @@ def first_yield(R, r, E, nu, Y, angle=np.pi / 2) -> FirstYield:
 
     Examples
     --------
-    >>> y = first_yield(22.5e-3, 2.5e-3, 193e9, 0.29, 215e6)  # the paper's ring, annealed AISI 304
+    >>> y = first_yield(22.5e-3, 2.5e-3, 193e9, 0.29, Y=215e6)  # the paper's ring, annealed AISI 304
     >>> round(float(y.pressure_ratio), 3), round(float(y.depth_ratio), 3), round(float(y.force), 3)
     (1.601, 0.478, 0.155)
     """
     Y, A, m, K_c = _check_yield_inputs(R, r, E, nu, Y, angle)
-    R, r, E = (v.as_float(name, value) for name, value in (("R", R), ("r", r), ("E", E)))
-    nu = v.as_float("nu", nu)
-    angle = v.as_float("angle", angle)
+    E, nu, angle = (v.as_float(name, value) for name, value in (("E", E), ("nu", nu), ("angle", angle)))
+    m_1 = _shape(m)  # 1 for the circle
     with np.errstate(all="ignore"):
-        if angle.size and angle.min() == np.pi / 2:  # all perpendicular: the circle in closed form
+        if angle.size and angle.min() == np.pi / 2:  # all perpendicular: the circle's stresses in closed form
             peak, zeta = _maximum(_circle_values, _circle_slope, nu)
-            p0 = Y / peak
-            force, a = _load_at_pressure_circular(p0, R, r, E, nu)
-            b = a
         else:
-            m_1 = _shape(m)
             peak, zeta = _maximum(_ellipse_values, _ellipse_slope, m_1, nu)
-            p0 = Y / peak
-            force, a = _load_at_pressure(p0, A, E, nu, m_1)
-            b = a * np.sqrt(m_1)
-        force = v.finite_result(force, "the yield force", "radii, elastic constants and yield strength")
-        indentation = (force / K_c) ** (2.0 / 3.0)
-        depth = zeta * b
+        p0 = Y / peak
+        log_force, log_a = _log_load_at_pressure(np.log(p0), np.log(A), np.log(E), nu, m_1)
+        force = v.finite_result(np.exp(log_force), "the yield force", "radii, elastic constants and yield strength")
+        indentation = np.exp(2.0 / 3.0 * (log_force - np.log(K_c)))  # (F_y/K_c)^(2/3), which may underflow
+        depth = zeta * np.exp(log_a) * np.sqrt(m_1)
     v.finite_result((indentation, depth), "the approach at first yield", "radii and elastic constants")
     return FirstYield(force, indentation, p0, depth, 1.0 / peak, zeta)
 
 
-def yield_force(R, r, E, nu, Y, angle=np.pi / 2):
+def yield_force(R, r, E, nu, angle=np.pi / 2, *, Y):
     """Contact force at which the Hertz contact of two identical tori first yields, N.
 
     Parameters
@@ -679,10 +679,10 @@ def yield_force(R, r, E, nu, Y, angle=np.pi / 2):
         Young's modulus, Pa.
     nu : array_like
         Poisson's ratio, in (-1, 0.5).
-    Y : array_like
-        Yield strength (von Mises), Pa.
     angle : array_like, optional
         Contact angle theta between the ring planes, rad, in (theta_min, pi/2]; default pi/2.
+    Y : array_like
+        Yield strength (von Mises), Pa.
 
     Returns
     -------
@@ -691,21 +691,19 @@ def yield_force(R, r, E, nu, Y, angle=np.pi / 2):
 
     Examples
     --------
-    >>> round(float(yield_force(22.5e-3, 2.5e-3, 193e9, 0.29, 1e9)), 2)  # cold-drawn AISI 304 wire
+    >>> round(float(yield_force(22.5e-3, 2.5e-3, 193e9, 0.29, Y=1e9)), 2)  # cold-drawn AISI 304 wire
     15.59
     """
-    return first_yield(R, r, E, nu, Y, angle).force
+    return first_yield(R, r, E, nu, angle, Y=Y).force
 
 
-def subsurface_stress(z, F, R, r, E, nu, angle=np.pi / 2):
+def subsurface_stress(z, R, r, E, nu, angle=np.pi / 2, *, F):
     """Stresses on the axis of the elastic Hertz contact of two tori, at depth z under the contact force F.
 
     Parameters
     ----------
     z : array_like
         Depth below the contact's centre, m, >= 0.
-    F : array_like
-        Contact force, N, > 0.
     R, r : array_like
         Major and tube radius of the tori, m (R > 2 r).
     E : array_like
@@ -714,6 +712,8 @@ def subsurface_stress(z, F, R, r, E, nu, angle=np.pi / 2):
         Poisson's ratio, in (-1, 0.5).
     angle : array_like, optional
         Contact angle theta between the ring planes, rad, in (theta_min, pi/2]; default pi/2.
+    F : array_like
+        Contact force, N, > 0 (keyword-only, as in :func:`~ringchain.theory.contact_semi_axes`).
 
     Returns
     -------
@@ -733,7 +733,7 @@ def subsurface_stress(z, F, R, r, E, nu, angle=np.pi / 2):
 
     Examples
     --------
-    >>> sx, sy, sz, vm = subsurface_stress(0.0, 10.0, 22.5e-3, 2.5e-3, 193e9, 0.29)
+    >>> sx, sy, sz, vm = subsurface_stress(0.0, 22.5e-3, 2.5e-3, 193e9, 0.29, F=10.0)
     >>> round(float(-sz / 1e9), 3)  # GPa: the peak pressure p0 at the surface
     1.381
     """
@@ -746,9 +746,10 @@ def subsurface_stress(z, F, R, r, E, nu, angle=np.pi / 2):
     m_1 = _shape(m)
     with np.errstate(all="ignore"):
         # p0 from the load: P is p0^3 times a factor free of p0 (yield_relations), so scale a unit pressure.
-        unit_load, unit_a = _load_at_pressure(1.0, A, E, nu, m_1)
-        p0 = np.cbrt(F / unit_load)
-        b = unit_a * p0 * np.sqrt(m_1)
+        log_unit_load, log_unit_a = _log_load_at_pressure(0.0, np.log(A), np.log(E), nu, m_1)
+        log_p0 = (np.log(F) - log_unit_load) / 3
+        p0 = np.exp(log_p0)
+        b = np.exp(log_unit_a + log_p0) * np.sqrt(m_1)
         sx, sy, sz, *_ = _elliptical_axis(z / b, m_1, nu)
         stresses = tuple(p0 * component for component in (sx, sy, sz))
         stresses = (*stresses, _von_mises(*stresses))

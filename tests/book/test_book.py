@@ -60,6 +60,8 @@ def test_every_chapter_is_in_the_table_of_contents_and_back():
         "linear_waves",
         "rings_that_bend",
         "designing",
+        "disorder",
+        "sheets",
         "fitting",
         "paper_notes",
         "bibliography",

@@ -268,9 +268,10 @@ def test_paper_refuses_a_negative_drop_height(capsys, tmp_path):
 # -- the parser and the console script ------------------------------------------------------------------
 def test_help_exits_0_and_no_subcommand_exits_2(capsys):
     code, out, _ = run(capsys, "--help")
-    assert code == 0 and all(name in out for name in ("paper", "ring", "simulate", "sweep", "cache"))
+    assert code == 0 and all(name in out for name in ("paper", "ring", "simulate", "sweep", "ensemble", "cache"))
     code, out, err = run(capsys)
-    assert_one_line_error(code, out, err, "the following arguments are required: {paper,ring,simulate,sweep,cache,fit}")
+    required = "the following arguments are required: {paper,ring,simulate,sweep,ensemble,cache,fit,sheet}"
+    assert_one_line_error(code, out, err, required)
 
 
 def test_version_is_the_package_version_in_one_line(capsys):

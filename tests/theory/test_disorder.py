@@ -260,20 +260,23 @@ def _diatomic_long_wave_speed(a1, a2, m1, m2, k1, k2):
 def test_two_phase_chain_against_its_bloch_limit(seed):
     rng = np.random.default_rng(seed)
     a1, a2, m1, m2, k1, k2 = rng.uniform(0.2, 5.0, 6)
-    c = effective_medium_speed([a1, a2], [m1, m2], [k1, k2])
+    c = effective_medium_speed(k=[k1, k2], m=[m1, m2], a=[a1, a2])
     # Richardson leaves O(q^4) ~ 1e-12 and the root keeps its digits: 1e-9 is rounding with margin.
     assert c == pytest.approx(_diatomic_long_wave_speed(a1, a2, m1, m2, k1, k2), rel=1e-9)
-    assert harmonic_mean_speed([a1, a2], [m1, m2], [k1, k2]) > c
+    assert harmonic_mean_speed(k=[k1, k2], m=[m1, m2], a=[a1, a2]) > c
 
 
 def test_harmonic_mean_equals_effective_medium_only_at_constant_impedance():
     a_ = [1.0, 1.0]
     # m proportional to 1/k: the impedance sqrt(m k) is the same in both cells, nothing scatters.
-    same = (effective_medium_speed(a_, [4.0, 1.0], [1.0, 4.0]), harmonic_mean_speed(a_, [4.0, 1.0], [1.0, 4.0]))
+    same = (
+        effective_medium_speed(k=[1.0, 4.0], m=[4.0, 1.0], a=a_),
+        harmonic_mean_speed(k=[1.0, 4.0], m=[4.0, 1.0], a=a_),
+    )
     assert same[0] == pytest.approx(same[1], rel=1e-15)  # both 0.8 exactly, up to rounding
     # m proportional to k: every local speed is 1, yet the effective medium is slower, 1/sqrt(<k><1/k>) = 0.8.
-    assert harmonic_mean_speed(a_, [1.0, 4.0], [1.0, 4.0]) == pytest.approx(1.0, rel=1e-15)
-    assert effective_medium_speed(a_, [1.0, 4.0], [1.0, 4.0]) == pytest.approx(0.8, rel=1e-15)
+    assert harmonic_mean_speed(k=[1.0, 4.0], m=[1.0, 4.0], a=a_) == pytest.approx(1.0, rel=1e-15)
+    assert effective_medium_speed(k=[1.0, 4.0], m=[1.0, 4.0], a=a_) == pytest.approx(0.8, rel=1e-15)
 
 
 def test_random_periodic_chain_against_transfer_matrices():
@@ -289,7 +292,7 @@ def test_random_periodic_chain_against_transfer_matrices():
         speeds.append((w * a_.sum() / qL) ** 2)
     c = np.sqrt((4 * speeds[1] - speeds[0]) / 3)
     # arccos near 1 loses half the digits: qL ~ 1e-3 has a relative error ~ 1e-16/1e-6; 1e-8 covers it.
-    assert effective_medium_speed(a_, m_, k_) == pytest.approx(c, rel=1e-8)
+    assert effective_medium_speed(k=k_, m=m_, a=a_) == pytest.approx(c, rel=1e-8)
 
 
 # --- numeric: the second-order expansions against exact evaluation on seeded samples ---------------------
@@ -330,15 +333,19 @@ def test_speed_shifts_against_exact_evaluation(symmetric, order, n_value):
         speeds = {}
         for estimate in disorder.ESTIMATES:
             if n_value > 1:
-                exact = disordered_solitary_wave_speed(1.5, K_, n_value, a_, m_, estimate=estimate) / uniform - 1
+                exact = (
+                    disordered_solitary_wave_speed(1.5, estimate=estimate, K=K_, n=n_value, m=m_, a=a_) / uniform - 1
+                )
             else:  # the linear chain: K is the stiffness k
                 speed = effective_medium_speed if estimate == "effective-medium" else harmonic_mean_speed
-                exact = speed(a_, m_, K_) / (a_.mean() * np.sqrt(K_.mean() / m_.mean())) - 1
+                exact = speed(k=K_, m=m_, a=a_) / (a_.mean() * np.sqrt(K_.mean() / m_.mean())) - 1
             speeds[estimate] = exact
-            predicted = disorder_speed_shift(n_value, sK, sm, corr, estimate=estimate)
+            predicted = disorder_speed_shift(estimate=estimate, n=n_value, sigma_K=sK, sigma_m=sm, correlation=corr)
             errors[estimate].append(exact - predicted)
         contrast = (1 + speeds["harmonic-mean"]) / (1 + speeds["effective-medium"]) - 1
-        contrast_errors.append(contrast - impedance_spread(n_value, sK, sm, corr) ** 2 / 2)
+        contrast_errors.append(
+            contrast - impedance_spread(n=n_value, sigma_K=sK, sigma_m=sm, correlation=corr) ** 2 / 2
+        )
     for estimate in disorder.ESTIMATES:
         error = np.array(errors[estimate])
         assert np.all(np.abs(error) < 0.2 * spreads**2)  # beyond second order: small beside sigma^2
@@ -353,7 +360,7 @@ def test_effective_medium_ignores_mass_and_spacing_spreads():
     rng = np.random.default_rng(3)
     K_ = np.full(50, 2.0)
     m_, a_ = rng.uniform(0.1, 0.5, 50), rng.uniform(0.01, 0.1, 50)
-    exact = disordered_solitary_wave_speed(2.0, K_, 1.4, a_, m_, estimate="effective-medium")
+    exact = disordered_solitary_wave_speed(2.0, estimate="effective-medium", K=K_, n=1.4, m=m_, a=a_)
     assert exact == pytest.approx(
         solitary_wave_speed(2.0, K=2.0, n=1.4, a=a_.mean(), m=m_.mean()), rel=1e-14
     )  # rounding
@@ -367,7 +374,7 @@ def test_chain_impedance_spread_of_independent_and_shared_contacts():
     chains, rings, s = 200, 400, 0.1
     m_ = np.exp(s * rng.standard_normal((chains, rings)))
     K_ = np.exp(s * rng.standard_normal((chains, rings - 1)))
-    pooled = np.sqrt(np.mean(chain_impedance_spread(m_, K_, 1.5, lags=0) ** 2))
+    pooled = np.sqrt(np.mean(chain_impedance_spread(K=K_, n=1.5, m=m_, lags=0) ** 2))
     expected = np.sqrt(s**2 / 4 + s**2 / (4 * 1.5**2))  # Var(ln m/2 + ln K/(2n)), independent
     # 200 x 399 cells: the pooled variance has a relative standard error sqrt(2/79800) = 0.5 %, bias 1/399.
     assert pooled == pytest.approx(expected, rel=0.01)
@@ -376,8 +383,8 @@ def test_chain_impedance_spread_of_independent_and_shared_contacts():
     g = np.exp(s * rng.standard_normal((chains, rings)))
     shared = np.sqrt(g[:, :-1] * g[:, 1:])
     one = np.ones((chains, rings))
-    with_lag = np.sqrt(np.mean(chain_impedance_spread(one, shared, 1.0, lags=1) ** 2))
-    without = np.sqrt(np.mean(chain_impedance_spread(one, shared, 1.0, lags=0) ** 2))
+    with_lag = np.sqrt(np.mean(chain_impedance_spread(K=shared, n=1.0, m=one, lags=1) ** 2))
+    without = np.sqrt(np.mean(chain_impedance_spread(K=shared, n=1.0, m=one, lags=0) ** 2))
     assert with_lag == pytest.approx(s / 2, rel=0.02)  # ln Z = ln K/2: sd s/2; estimator error about 1 %
     assert without == pytest.approx(s / 2 / np.sqrt(2), rel=0.02)
 
@@ -455,7 +462,7 @@ def test_localization_length_against_lyapunov_exponents(s_m, s_k, correlation, b
     w = 2 * np.sin(theta_values / 2)
     rate = _lyapunov(w, m_, k_)  # per ring, amplitude: 1/(2 ell) with ell in rings (a = 1)
     measured, error = rate.mean(axis=0), rate.std(axis=0) / np.sqrt(chains)
-    predicted = 1 / (2 * localization_length(w, 1.0, 1.0, 1.0, s_m, s_k, correlation))
+    predicted = 1 / (2 * localization_length(w, k=1.0, m=1.0, a=1.0, sigma_k=s_k, sigma_m=s_m, correlation=correlation))
     # Three standard errors of the mean over the chains, plus the Born order.
     assert np.all(np.abs(measured / predicted - 1) < born_error + 3 * error / predicted)
 
@@ -493,9 +500,9 @@ def test_long_pulse_through_a_random_chain(s, rings):
     width = 10.0  # rms duration in ring transit times: a pulse about 10 rings wide
     run = _pulse_through_random_chains(s, rings, width, seed=7)
     m_, k_, w = run["m"], run["k"], run["w"]
-    sigma = np.sqrt(np.mean(chain_impedance_spread(m_, k_, 1.0, lags=0) ** 2))  # pooled over the chains
+    sigma = np.sqrt(np.mean(chain_impedance_spread(K=k_, n=1.0, m=m_, lags=0) ** 2))  # pooled over the chains
     # Peak: the ordered output convolved with the Gaussian of disorder_pulse_spread (q = theta/a).
-    spread = disorder_pulse_spread(rings, 1.0, sigma)
+    spread = disorder_pulse_spread(rings, a=1.0, sigma_Z=sigma)
     smoothed = run["signal"](run["ordered_spectrum"] * np.exp(-((run["theta"] * spread) ** 2) / 2))
     peak = run["disordered"].max(axis=1) / run["ordered"].max()
     predicted_loss = 1 - smoothed.max() / run["ordered"].max()
@@ -509,8 +516,8 @@ def test_long_pulse_through_a_random_chain(s, rings):
     # order in x/ell, about 9 % here: the statistic of the localization length is the logarithm.)
     weight = run["spectrum"] ** 2 / np.sum(run["spectrum"] ** 2)
     log_loss = -np.sum(np.log(np.abs(run["t"]) ** 2) * weight, axis=1)
-    relative = (m_.std() / m_.mean(), k_.std() / k_.mean())  # the relative spreads of the samples
-    predicted_log_loss = np.sum(rings / localization_length(w, 1.0, 1.0, 1.0, *relative) * weight)
+    spreads = dict(sigma_k=k_.std() / k_.mean(), sigma_m=m_.std() / m_.mean())  # the relative spreads of the samples
+    predicted_log_loss = np.sum(rings / localization_length(w, k=1.0, m=1.0, a=1.0, **spreads) * weight)
     log_error = log_loss.std() / np.sqrt(log_loss.size)
     assert abs(log_loss.mean() / predicted_log_loss - 1) < 3 * log_error / predicted_log_loss + edges + 4 * s**2
     energy = np.sum(np.abs(run["t"]) ** 2 * weight, axis=1)
@@ -519,8 +526,8 @@ def test_long_pulse_through_a_random_chain(s, rings):
     assert incoherent > 0.99 and 1 - energy.mean() < 0.1 * incoherent
     # Arrival: each chain's effective-medium time sqrt(sum m sum 1/k), not its harmonic (ray) time sum sqrt(m/k).
     delay = run["time"][run["disordered"].argmax(axis=1)] - run["time"][run["ordered"].argmax()]
-    effective = rings / effective_medium_speed(np.ones(rings), m_, k_) - rings
-    harmonic = rings / harmonic_mean_speed(np.ones(rings), m_, k_) - rings
+    effective = rings / effective_medium_speed(k=k_, m=m_, a=np.ones(rings)) - rings
+    harmonic = rings / harmonic_mean_speed(k=k_, m=m_, a=np.ones(rings)) - rings
     gap = np.mean(effective - harmonic)  # rings sigma_Z^2/2: 10 transit times for both parameter sets
     assert gap == pytest.approx(rings * sigma**2 / 2, rel=0.1)  # second order, sigma_Z^2 <= 0.02
     # The sampling step is 0.5 and the pulse 10 wide: the argmax of each chain is good to a few tenths.
@@ -576,8 +583,8 @@ def test_compact_wave_in_a_random_power_law_chain(n_value):
     # Attenuation: the slope of ln(F_m/F_m,ordered) ring by ring (the ordered wave's own formation divides out).
     relative = np.log(peak[:, first:last] / ordered[0, first:last])
     slopes = np.array([np.polyfit(contacts, relative[c], 1)[0] for c in range(chains)])
-    sigma = np.sqrt(np.mean(chain_impedance_spread(m_, K_, n_value, lags=0) ** 2))
-    ratio = -1 / slopes.mean() / disorder_attenuation_length(n_value, 1.0, sigma)
+    sigma = np.sqrt(np.mean(chain_impedance_spread(K=K_, n=n_value, m=m_, lags=0) ** 2))
+    ratio = -1 / slopes.mean() / disorder_attenuation_length(n=n_value, a=1.0, sigma_Z=sigma)
     ratio_error = abs(ratio) * slopes.std() / np.sqrt(chains) / abs(slopes.mean())
     # A leading-order estimate in a^2 <q^2> (0.48 for n = 1.2, 0.91 for n = 1.5): measured 1.08 and 1.10 here, each
     # +- 0.03; the documented 0.9-1.25 with 3 standard errors.
@@ -600,9 +607,13 @@ def test_compact_wave_in_a_random_power_law_chain(n_value):
         force = np.exp(np.polyval(np.polyfit(contacts, np.log(peak[c, first:last]), 1), contacts))
         K_c, m_c = K_[c, first:last], m_[c, first:last]
         # Harmonic mean: each cell at its own speed (one-ring "chains", one per cell, at that cell's force).
-        local = disordered_solitary_wave_speed(force, K_c[:, None], n_value, 1, m_c[:, None], estimate="harmonic-mean")
+        local = disordered_solitary_wave_speed(
+            force, estimate="harmonic-mean", K=K_c[:, None], n=n_value, m=m_c[:, None], a=1
+        )
         # Effective medium: the homogenised cells crossed, at the force of each step.
-        medium = disordered_solitary_wave_speed(force[:, None], K_c, n_value, 1.0, m_c, estimate="effective-medium")
+        medium = disordered_solitary_wave_speed(
+            force[:, None], estimate="effective-medium", K=K_c, n=n_value, m=m_c, a=1.0
+        )
         took = time[c, last] - time[c, first]
         excess["harmonic-mean"][c] = took / (base * np.sum(1 / local)) - 1
         excess["effective-medium"][c] = took / (base * np.sum(1 / medium)) - 1
@@ -620,60 +631,99 @@ def test_compact_wave_in_a_random_power_law_chain(n_value):
 
 def test_attenuation_length_and_travel_time_numbers():
     # ell = a (n+1)^2 (5-n)/(24 (n-1) sigma_Z^2): n = 1.5, a = 2 mm, sigma_Z = 0.1 -> 6.25 * 3.5/12 * 0.2 m.
-    assert disorder_attenuation_length(1.5, 2e-3, 0.1) == pytest.approx(6.25 * 3.5 / 12 * 2e-3 / 0.01, rel=1e-14)
-    assert np.isinf(disorder_attenuation_length(1.2, 1.0, 0.0))
+    assert disorder_attenuation_length(n=1.5, a=2e-3, sigma_Z=0.1) == pytest.approx(
+        6.25 * 3.5 / 12 * 2e-3 / 0.01, rel=1e-14
+    )
+    assert np.isinf(disorder_attenuation_length(n=1.2, a=1.0, sigma_Z=0.0))
     V0, n_value, ell = 3.0, 1.25, 0.4
     for x in (1e-9, 0.05, 1.0, 7.0):
         numeric = quad(lambda y: np.exp((n_value - 1) / (2 * n_value) * y / ell) / V0, 0, x, epsabs=0, epsrel=1e-13)[0]
-        assert attenuated_travel_time(x, V0, n_value, ell) == pytest.approx(numeric, rel=1e-12)  # quad's tolerance
+        assert attenuated_travel_time(x, V0=V0, n=n_value, attenuation_length=ell) == pytest.approx(
+            numeric, rel=1e-12
+        )  # quad's tolerance
     # No decay, or n -> 1 (no amplitude dependence of the speed): x/V0 to rounding, through expm1.
-    assert attenuated_travel_time(2.0, 4.0, 1.3, np.inf) == 0.5
-    assert attenuated_travel_time(2.0, 4.0, 1 + 1e-12, 1e-3) == pytest.approx(0.5 * np.expm1(1e-9) / 1e-9, rel=1e-12)
+    assert attenuated_travel_time(2.0, V0=4.0, n=1.3, attenuation_length=np.inf) == 0.5
+    assert attenuated_travel_time(2.0, V0=4.0, n=1 + 1e-12, attenuation_length=1e-3) == pytest.approx(
+        0.5 * np.expm1(1e-9) / 1e-9, rel=1e-12
+    )
 
 
 def test_pulse_spread_and_localization_numbers():
-    assert disorder_pulse_spread([0.0, 4.0], 1e-2, 0.05) == pytest.approx([0.0, 0.05 * np.sqrt(4e-2)], rel=1e-14)
+    assert disorder_pulse_spread([0.0, 4.0], a=1e-2, sigma_Z=0.05) == pytest.approx(
+        [0.0, 0.05 * np.sqrt(4e-2)], rel=1e-14
+    )
     # theta = pi/2 (omega = sqrt(2 k/m)): tan^2 = 1, cos = 0 -> ell = a/(sigma_m^2 + sigma_k^2).
-    assert localization_length(np.sqrt(2.0), 1.0, 1.0, 0.02, 0.1, 0.2, 0.7) == pytest.approx(0.02 / 0.05, rel=1e-13)
-    assert np.isinf(localization_length(1.0, 1.0, 1.0, 1.0, 0.0, 0.0))
+    assert localization_length(
+        np.sqrt(2.0), k=1.0, m=1.0, a=0.02, sigma_k=0.2, sigma_m=0.1, correlation=0.7
+    ) == pytest.approx(0.02 / 0.05, rel=1e-13)
+    assert np.isinf(localization_length(1.0, k=1.0, m=1.0, a=1.0, sigma_k=0.0, sigma_m=0.0))
     # Fully anticorrelated equal spreads: the impedance is constant to first order; what is left scatters as
     # 2 sigma^2 (1 - cos theta) tan^2(theta/2), of order theta^4 at long waves.
-    small = localization_length(1e-2, 1.0, 1.0, 1.0, 0.1, 0.1, -1.0)
+    small = localization_length(1e-2, k=1.0, m=1.0, a=1.0, sigma_k=0.1, sigma_m=0.1, correlation=-1.0)
     assert small == pytest.approx(1 / (0.01 * (1e-2) ** 4 / 4), rel=1e-3)  # theta = 1e-2 up to O(theta^2)
-    assert impedance_spread(1.0, 0.1, 0.1, -1.0) == 0.0  # exactly, the sum-of-squares form
+    assert (
+        impedance_spread(n=1.0, sigma_K=0.1, sigma_m=0.1, correlation=-1.0) == 0.0
+    )  # exactly, the sum-of-squares form
 
 
 def test_shapes_broadcast_over_chains():
     rng = np.random.default_rng(9)
     K_, m_, a_ = rng.uniform(1.0, 2.0, (3, 4, 20)), rng.uniform(1.0, 2.0, (1, 4, 21)), rng.uniform(1.0, 2.0, 21)
-    speed = disordered_solitary_wave_speed([[1.0], [2.0], [3.0]], K_, 1.3, a_, m_, estimate="effective-medium")
+    speed = disordered_solitary_wave_speed([[1.0], [2.0], [3.0]], estimate="effective-medium", K=K_, n=1.3, m=m_, a=a_)
     assert speed.shape == (3, 4)
-    one = disordered_solitary_wave_speed(2.0, K_[1, 2], 1.3, a_, m_[0, 2], estimate="effective-medium")
+    one = disordered_solitary_wave_speed(2.0, estimate="effective-medium", K=K_[1, 2], n=1.3, m=m_[0, 2], a=a_)
     assert speed[1, 2] == pytest.approx(one, rel=1e-14)
-    assert effective_medium_speed(a_, m_, K_).shape == (3, 4)
-    assert chain_impedance_spread(m_, K_, 1.3).shape == (3, 4)
-    assert disorder_speed_shift([1.0, 1.5], 0.1, [[0.0], [0.1]], estimate="effective-medium").shape == (2, 2)
+    assert effective_medium_speed(k=K_, m=m_, a=a_).shape == (3, 4)
+    assert chain_impedance_spread(K=K_, n=1.3, m=m_).shape == (3, 4)
+    assert disorder_speed_shift(
+        estimate="effective-medium", n=[1.0, 1.5], sigma_K=0.1, sigma_m=[[0.0], [0.1]]
+    ).shape == (2, 2)
     with pytest.raises(ValueError, match="cannot be broadcast"):
-        harmonic_mean_speed(a_, m_, K_)  # 21 rings against 20 contacts: the harmonic mean pairs them
+        harmonic_mean_speed(k=K_, m=m_, a=a_)  # 21 rings against 20 contacts: the harmonic mean pairs them
+
+
+@pytest.mark.parametrize("n_value", [1e-150, 1e-300])
+def test_chain_impedance_spread_of_a_tiny_exponent(n_value):
+    # ln K/(2n) is huge for n -> 0: its squared deviations overflowed (a RuntimeWarning, an error in this suite).
+    # With equal masses sigma_Z is exactly proportional to 1/n.
+    K_, m_ = [1.0, 2.0, 4.0, 3.0], [1.0, 1.0, 1.0, 1.0]
+    for lags in (0, 1):
+        unit = float(chain_impedance_spread(K=K_, n=1.0, m=m_, lags=lags))
+        assert float(chain_impedance_spread(K=K_, n=n_value, m=m_, lags=lags)) == pytest.approx(unit / n_value)
 
 
 @pytest.mark.parametrize(
     ("call", "message"),
     [
-        (lambda: effective_medium_speed([], [1.0], [1.0]), "at least one ring"),
-        (lambda: effective_medium_speed([1.0], [-1.0], [1.0]), "m must be positive"),
-        (lambda: disordered_solitary_wave_speed(1.0, 1.0, 1.0, 1.0, 1.0, estimate="harmonic-mean"), "n > 1"),
-        (lambda: disordered_solitary_wave_speed(1.0, 1.0, 1.5, 1.0, 1.0, estimate="ray"), "estimate must be one of"),
-        (lambda: disorder_speed_shift(1.0, 0.1, correlation=1.5, estimate="harmonic-mean"), "correlation"),
-        (lambda: disorder_speed_shift(0.0, 0.1, estimate="effective-medium"), "n > 0"),
-        (lambda: disorder_speed_shift(1.0, -0.1, estimate="effective-medium"), "sigma_K must be non-negative"),
-        (lambda: localization_length(2.0, 1.0, 1.0, 1.0, 0.1, 0.1), "inside the band"),
-        (lambda: disorder_attenuation_length(5.0, 1.0, 0.1), "cusp"),
-        (lambda: attenuated_travel_time(1.0, 1.0, 1.5, 0.0), "attenuation_length must be positive"),
-        (lambda: attenuated_travel_time(1.0, 1.0, 1.5, np.nan), "attenuation_length must be positive"),
-        (lambda: chain_impedance_spread([1.0, 2.0], [1.0, 2.0, 3.0], 1.0), "give N rings"),
-        (lambda: chain_impedance_spread([1.0, 2.0], [1.0], 1.0), "lags must be smaller"),
-        (lambda: chain_impedance_spread([1.0, 2.0], [1.0], 1.0, lags=True), "lags must be a non-negative integer"),
+        (lambda: effective_medium_speed(k=[1.0], m=[1.0], a=[]), "at least one ring"),
+        (lambda: effective_medium_speed(k=[1.0], m=[-1.0], a=[1.0]), "m must be positive"),
+        (lambda: disordered_solitary_wave_speed(1.0, estimate="harmonic-mean", K=1.0, n=1.0, m=1.0, a=1.0), "n > 1"),
+        (
+            lambda: disordered_solitary_wave_speed(1.0, estimate="ray", K=1.0, n=1.5, m=1.0, a=1.0),
+            "estimate must be one of",
+        ),
+        (lambda: disorder_speed_shift(estimate="harmonic-mean", n=1.0, sigma_K=0.1, correlation=1.5), "correlation"),
+        (lambda: disorder_speed_shift(estimate="effective-medium", n=0.0, sigma_K=0.1), "n > 0"),
+        (
+            lambda: disorder_speed_shift(estimate="effective-medium", n=1.0, sigma_K=-0.1),
+            "sigma_K must be non-negative",
+        ),
+        (lambda: localization_length(2.0, k=1.0, m=1.0, a=1.0, sigma_k=0.1, sigma_m=0.1), "inside the band"),
+        (lambda: disorder_attenuation_length(n=5.0, a=1.0, sigma_Z=0.1), "cusp"),
+        (
+            lambda: attenuated_travel_time(1.0, V0=1.0, n=1.5, attenuation_length=0.0),
+            "attenuation_length must be positive",
+        ),
+        (
+            lambda: attenuated_travel_time(1.0, V0=1.0, n=1.5, attenuation_length=np.nan),
+            "attenuation_length must be positive",
+        ),
+        (lambda: chain_impedance_spread(K=[1.0, 2.0, 3.0], n=1.0, m=[1.0, 2.0]), "give N rings"),
+        (lambda: chain_impedance_spread(K=[1.0], n=1.0, m=[1.0, 2.0]), "lags must be smaller"),
+        (
+            lambda: chain_impedance_spread(K=[1.0], n=1.0, m=[1.0, 2.0], lags=True),
+            "lags must be a non-negative integer",
+        ),
     ],
 )
 def test_bad_input(call, message):

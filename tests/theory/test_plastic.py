@@ -97,16 +97,16 @@ def test_restitution_closed_form_is_thorntons():
 @pytest.mark.parametrize("ratio", [2.0, 10.0, 100.0])
 def test_restitution_coefficient_against_thornton(ratio):
     m = M0 / 2
-    V_y = float(yield_velocity(R, r, E, NU, 215e6, m))
-    e = float(restitution_coefficient(ratio * V_y, R, r, E, NU, 215e6, m))
+    V_y = float(yield_velocity(R, r, E, NU, Y=215e6, m=m))
+    e = float(restitution_coefficient(ratio * V_y, R, r, E, NU, Y=215e6, m=m))
     # The issue asks for 0.5 %; derivation and Thornton's printed formula agree to rounding.
     assert e == pytest.approx(float(thornton_e(1 / ratio)), rel=1e-12)
 
 
 def test_restitution_is_one_below_the_yield_speed_and_continuous():
     m = M0 / 2
-    V_y = float(yield_velocity(R, r, E, NU, 215e6, m))
-    e = restitution_coefficient(V_y * np.array([0.0, 0.5, 1.0, 1.0 + 1e-9, 2.0]), R, r, E, NU, 215e6, m)
+    V_y = float(yield_velocity(R, r, E, NU, Y=215e6, m=m))
+    e = restitution_coefficient(V_y * np.array([0.0, 0.5, 1.0, 1.0 + 1e-9, 2.0]), R, r, E, NU, Y=215e6, m=m)
     assert np.all(e[:3] == 1.0)
     assert e[3] == pytest.approx(1.0, abs=1e-8)  # de/dv is finite at v = V_y
     assert e[4] < 1.0
@@ -114,18 +114,18 @@ def test_restitution_is_one_below_the_yield_speed_and_continuous():
 
 def test_yield_velocity_is_the_hertz_energy():
     m = M0 / 2
-    y = first_yield(R, r, E, NU, 215e6)
-    V_y = float(yield_velocity(R, r, E, NU, 215e6, m))
+    y = first_yield(R, r, E, NU, Y=215e6)
+    V_y = float(yield_velocity(R, r, E, NU, Y=215e6, m=m))
     assert m * V_y**2 / 2 == pytest.approx(0.4 * float(y.force) * float(y.indentation), rel=1e-12)
 
 
 def test_paper_ring_numbers():
     m = M0 / 2  # two free rings of the paper's chain
-    annealed = float(restitution_coefficient(DROP, R, r, E, NU, 215e6, m))
-    cold = float(restitution_coefficient(DROP, R, r, E, NU, 1e9, m))
+    annealed = float(restitution_coefficient(DROP, R, r, E, NU, Y=215e6, m=m))
+    cold = float(restitution_coefficient(DROP, R, r, E, NU, Y=1e9, m=m))
     assert annealed == pytest.approx(0.21, abs=0.005)  # the issue's "about 0.21 at a 5 cm drop"
     assert annealed < cold < 1.0
-    assert float(yield_velocity(R, r, E, NU, 215e6, m)) < 1e-3  # m/s: any drop yields the annealed contact
+    assert float(yield_velocity(R, r, E, NU, Y=215e6, m=m)) < 1e-3  # m/s: any drop yields the annealed contact
 
 
 # --- the force law ---------------------------------------------------------------------------------------------
@@ -134,7 +134,7 @@ def test_paper_ring_numbers():
 def test_force_law_shape():
     K, dy = 2.0, 1e-6
     deltas = np.linspace(-dy, 5 * dy, 601)
-    load = thornton_loading_force(deltas, K, dy)
+    load = thornton_loading_force(deltas, K_c=K, delta_y=dy)
     assert np.all(load[deltas <= 0] == 0)
     hertz = deltas <= dy
     np.testing.assert_allclose(load[hertz & (deltas > 0)], K * deltas[hertz & (deltas > 0)] ** 1.5, rtol=1e-14)
@@ -142,38 +142,42 @@ def test_force_law_shape():
     np.testing.assert_allclose(slope, 1.5 * K * np.sqrt(dy), rtol=1e-9)  # a straight line (rounding of diff)
     # Unloading from 4 delta_y: starts at the loading force, opens at delta_p, retraced on reloading.
     top = 4 * dy
-    unload = thornton_unloading_force(deltas, top, K, dy)
-    delta_p = float(thornton_residual_indentation(top, dy))
+    unload = thornton_unloading_force(deltas, delta_max=top, K_c=K, delta_y=dy)
+    delta_p = float(thornton_residual_indentation(top, delta_y=dy))
     assert delta_p == pytest.approx(top - dy * 11 / 4, rel=1e-14)  # (3 x_m - 1)/(2 sqrt(x_m)) = 11/4 at x_m = 4
     assert np.all(unload[deltas <= delta_p] == 0)
-    assert float(thornton_unloading_force(top, top, K, dy)) == pytest.approx(float(thornton_loading_force(top, K, dy)))
+    assert float(thornton_unloading_force(top, delta_max=top, K_c=K, delta_y=dy)) == pytest.approx(
+        float(thornton_loading_force(top, K_c=K, delta_y=dy))
+    )
     beyond = deltas >= top
     np.testing.assert_allclose(unload[beyond], load[beyond], rtol=1e-14)  # past the memory: the loading curve
     assert np.all(unload[(deltas > delta_p) & (deltas < top)] < load[(deltas > delta_p) & (deltas < top)])
     # Below the yield point nothing is remembered: the Hertz curve both ways.
-    np.testing.assert_allclose(thornton_unloading_force(deltas, 0.5 * dy, K, dy)[hertz], load[hertz], rtol=1e-14)
-    assert float(thornton_residual_indentation(0.5 * dy, dy)) == 0.0
+    np.testing.assert_allclose(
+        thornton_unloading_force(deltas, delta_max=0.5 * dy, K_c=K, delta_y=dy)[hertz], load[hertz], rtol=1e-14
+    )
+    assert float(thornton_residual_indentation(0.5 * dy, delta_y=dy)) == 0.0
 
 
 def test_energies():
     K, dy = 3.0, 2e-6
     top = 7 * dy
-    delta_p = float(thornton_residual_indentation(top, dy))
+    delta_p = float(thornton_residual_indentation(top, delta_y=dy))
     grid = np.linspace(delta_p, top, 2001)
-    stored, dissipated = thornton_energy(grid, top, K, dy)
-    force = thornton_unloading_force(grid, top, K, dy)
+    stored, dissipated = thornton_energy(grid, delta_max=top, K_c=K, delta_y=dy)
+    force = thornton_unloading_force(grid, delta_max=top, K_c=K, delta_y=dy)
     # The force is the derivative of the stored energy (trapezoidal rule: error ~ h^2 F''/12 ~ 1e-7 relative).
     work = np.concatenate([[0.0], np.cumsum(0.5 * (force[1:] + force[:-1]) * np.diff(grid))])
     np.testing.assert_allclose(stored, work, rtol=1e-6, atol=1e-7 * stored[-1])
     assert np.all(dissipated == dissipated[0])  # the plastic work depends on the memory only
     # Along the loading curve stored + dissipated is the work of loading.
     load_grid = np.linspace(0.0, top, 4001)
-    load = thornton_loading_force(load_grid, K, dy)
+    load = thornton_loading_force(load_grid, K_c=K, delta_y=dy)
     loading_work = np.sum(0.5 * (load[1:] + load[:-1]) * np.diff(load_grid))
-    s_top, d_top = thornton_energy(top, top, K, dy)
+    s_top, d_top = thornton_energy(top, delta_max=top, K_c=K, delta_y=dy)
     assert float(s_top + d_top) == pytest.approx(loading_work, rel=1e-6)  # trapezoid over the Hertz part's kink
-    assert float(thornton_energy(0.5 * dy, 0.0, K, dy)[1]) == 0.0
-    assert float(thornton_energy(-dy, top, K, dy)[0]) == 0.0
+    assert float(thornton_energy(0.5 * dy, delta_max=0.0, K_c=K, delta_y=dy)[1]) == 0.0
+    assert float(thornton_energy(-dy, delta_max=top, K_c=K, delta_y=dy)[0]) == 0.0
 
 
 # --- integrated collisions -------------------------------------------------------------------------------
@@ -214,8 +218,8 @@ def collide(V, m, contact_force, top_event=True):
 def contact_law(K, dy):
     def force(delta_, top):
         if top is None:
-            return float(thornton_loading_force(delta_, K, dy))
-        return float(thornton_unloading_force(delta_, top, K, dy))
+            return float(thornton_loading_force(delta_, K_c=K, delta_y=dy))
+        return float(thornton_unloading_force(delta_, delta_max=top, K_c=K, delta_y=dy))
 
     return force
 
@@ -224,12 +228,12 @@ def contact_law(K, dy):
 def test_integrated_collision_gives_thorntons_restitution(ratio):
     m = M0 / 2
     K = float(hertz_stiffness(R, r, E, NU))
-    dy = float(first_yield(R, r, E, NU, 215e6).indentation)
-    V_y = float(yield_velocity(R, r, E, NU, 215e6, m))
+    dy = float(first_yield(R, r, E, NU, Y=215e6).indentation)
+    V_y = float(yield_velocity(R, r, E, NU, Y=215e6, m=m))
     e, top = collide(ratio * V_y, m, contact_law(K, dy))
     # The issue asks for 1 %; the integration (rtol 1e-11, events located to ~1e-12) resolves e to ~1e-7.
-    assert e == pytest.approx(float(restitution_coefficient(ratio * V_y, R, r, E, NU, 215e6, m)), rel=1e-6)
-    stored, dissipated = thornton_energy(top, top, K, dy)
+    assert e == pytest.approx(float(restitution_coefficient(ratio * V_y, R, r, E, NU, Y=215e6, m=m)), rel=1e-6)
+    stored, dissipated = thornton_energy(top, delta_max=top, K_c=K, delta_y=dy)
     assert float(stored + dissipated) == pytest.approx(m * (ratio * V_y) ** 2 / 2, rel=1e-7)  # energy at the top
 
 
@@ -242,8 +246,8 @@ def series_law(K, dy, K_b):
     def contact_of_force(F, top_c):
         if top_c is None:  # the loading curve inverted
             return (F / K) ** (2 / 3) if F <= F_y else dy * (2 * F / F_y + 1) / 3
-        F_m = float(thornton_loading_force(top_c, K, dy))
-        d_p = float(thornton_residual_indentation(top_c, dy))
+        F_m = float(thornton_loading_force(top_c, K_c=K, delta_y=dy))
+        d_p = float(thornton_residual_indentation(top_c, delta_y=dy))
         return d_p + (top_c - d_p) * (F / F_m) ** (2 / 3)
 
     state = {}
@@ -273,14 +277,14 @@ def test_bending_spring_in_series_raises_the_restitution():
     K_b = float(bending_stiffness(R, r, E, NU))
     results = {}
     for Y in (215e6, 1e9):
-        dy = float(first_yield(R, r, E, NU, Y).indentation)
-        alone = float(restitution_coefficient(DROP, R, r, E, NU, Y, m))
+        dy = float(first_yield(R, r, E, NU, Y=Y).indentation)
+        alone = float(restitution_coefficient(DROP, R, r, E, NU, Y=Y, m=m))
         law, state = series_law(K, dy, K_b)
         e, _ = collide(DROP, m, law)
         # The energy account of the series contact predicts e: the contact reaches the force F_m with
         # m V^2/2 = W_load(contact) + F_m^2/(2 K_b), and returns W_unload(contact) + F_m^2/(2 K_b).
         F_m, top_c = state["F_m"], state["top_c"]
-        stored, dissipated = (float(w) for w in thornton_energy(top_c, top_c, K, dy))
+        stored, dissipated = (float(w) for w in thornton_energy(top_c, delta_max=top_c, K_c=K, delta_y=dy))
         spring = F_m**2 / (2 * K_b)
         assert stored + dissipated + spring == pytest.approx(m * DROP**2 / 2, rel=1e-7)  # integration accuracy
         assert e == pytest.approx(np.sqrt((stored + spring) / (m * DROP**2 / 2)), rel=1e-6)
@@ -293,7 +297,7 @@ def test_bending_spring_in_series_raises_the_restitution():
     assert results[1e9][0] == pytest.approx(0.537, abs=5e-4)
     assert results[1e9][1] == pytest.approx(0.945, abs=5e-4)
     # "The plastic slope is close to K_b": within 10 % for annealed 304, so the series slope is about half.
-    assert float(plastic_stiffness(R, r, E, NU, 215e6)) == pytest.approx(K_b, rel=0.1)
+    assert float(plastic_stiffness(R, r, E, NU, Y=215e6)) == pytest.approx(K_b, rel=0.1)
 
 
 # --- the equivalent sphere of the elliptical contact --------------------------------------------------------------
@@ -310,21 +314,64 @@ def test_equivalent_sphere_is_thorntons_construction_on_the_ellipse(angle_deg, o
     angle = np.radians(angle_deg)
     A, B, m = (float(q) for q in contact_ellipse(R, r, angle))
     E_star = float(contact_modulus(E, NU))
-    y = first_yield(R, r, E, NU, 215e6, angle)
+    y = first_yield(R, r, E, NU, angle, Y=215e6)
     K_m, E_m = ellipk(m), ellipe(m)
     p0 = float(y.pressure)
     semi_a = p0 * np.sqrt(1 - m) * (K_m - E_m) / (m * A * E_star)  # Johnson Sec. 4.2: A = p0 b (K - E)/(E* a^2 m)
     semi_b = semi_a * np.sqrt(1 - m)
     dy = float(y.indentation)
     # (iii) F = pi a b (p_y - p_y^3/(3 p0(delta)^2)) with a b ~ delta and p0^2 ~ delta: slope pi p_y a b/delta.
-    assert np.pi * p0 * semi_a * semi_b / dy == pytest.approx(float(plastic_stiffness(R, r, E, NU, 215e6, angle)))
+    assert np.pi * p0 * semi_a * semi_b / dy == pytest.approx(float(plastic_stiffness(R, r, E, NU, angle, Y=215e6)))
     # (iv) flat elliptical punch (Johnson Sec. 3.6): stiffness pi E* a/K(m), at the contact of 5 delta_y.
     a5 = semi_a * np.sqrt(5)  # the Hertz semi-axes grow as sqrt(delta)
     R_e = float(equivalent_radius(R, r, angle))
     assert np.pi * E_star * a5 / K_m == pytest.approx(2 * E_star * np.sqrt(R_e * 5 * dy), rel=1e-9)
     # R_e against the geometric mean of the principal relative radii 1/(2A), 1/(2B) (the docstring's numbers).
     assert R_e * 2 * np.sqrt(A * B) == pytest.approx(over_mean, abs=1e-4)
-    assert float(yield_force(R, r, E, NU, 215e6, angle)) == pytest.approx(2 / 3 * np.pi * semi_a * semi_b * p0)
+    assert float(yield_force(R, r, E, NU, angle, Y=215e6)) == pytest.approx(2 / 3 * np.pi * semi_a * semi_b * p0)
+
+
+# --- far from the paper's numbers: the law in forms that stay within double precision ---------------------------
+
+
+def test_thornton_law_far_beyond_the_yield_point():
+    """Each of these came out wrong when the law was evaluated in x_m = delta_m/delta_y (issue 24 extreme arguments)."""
+    K, dy = 7.5e9, 7.5e-7
+    # At delta_max = 1e40 delta_y the unloading curve's u = delta_m - delta_p was a difference of two equal
+    # doubles: the force at delta_max, the loading force 1.5 K sqrt(dy) (delta - dy/3), came out as 0.
+    top = 1e40 * dy
+    load = 1.5 * K * np.sqrt(dy) * (top - dy / 3)
+    assert float(thornton_unloading_force(top, delta_max=top, K_c=K, delta_y=dy)) == pytest.approx(load, rel=1e-14)
+    assert float(thornton_loading_force(top, K_c=K, delta_y=dy)) == pytest.approx(load, rel=1e-14)
+    # x_m^(3/2) overflowed (a refusal) for delta_max/delta_y beyond 1e205: delta_p = delta_m - 3/2 sqrt(dy delta_m).
+    far = 1e300
+    assert float(thornton_residual_indentation(far, delta_y=dy)) == pytest.approx(far - 1.5 * np.sqrt(dy * far))
+    # delta_y^(3/2) and delta_y^(5/2) underflowed for a tiny delta_y (a zero force and a zero plastic work):
+    # the force is 3/2 K sqrt(dy) delta and the work 3/4 K sqrt(dy) delta_m^2 to leading order.
+    tiny = 1e-300
+    assert float(thornton_loading_force(2e-6, K_c=K, delta_y=tiny)) == pytest.approx(1.5 * K * 1e-150 * 2e-6)
+    stored, dissipated = thornton_energy(2e-6, delta_max=3e-6, K_c=K, delta_y=tiny)
+    assert float(stored) == 0.0 and float(dissipated) == pytest.approx(0.75 * K * 1e-150 * 9e-12)
+    # x_m^2 overflowed in the work of loading at delta = 1e150 m, which is 4.9e306 J.
+    _, work = thornton_energy(1e150, delta_max=0.0, K_c=K, delta_y=dy)
+    assert float(work) == pytest.approx(0.75 * K * np.sqrt(dy) * 1e300, rel=1e-12)
+
+
+def test_impact_far_beyond_the_yield_speed_and_at_extreme_moduli():
+    m = M0 / 2
+    V_y = float(yield_velocity(R, r, E, NU, Y=215e6, m=m))
+    # 6 v^2 - 1 overflowed for v = V/V_y beyond 1e154 (a refusal); e ~ sqrt(6/5) (2/3 sqrt(6/5) v)^(-1/4).
+    e = float(restitution_coefficient(1e200 * V_y, R, r, E, NU, Y=215e6, m=m))
+    assert e == pytest.approx(np.sqrt(1.2) * (2 / 3 * np.sqrt(1.2) * 1e200) ** -0.25, rel=1e-12)
+    # A stiff material: F_y/K_c = 2e-427 underflowed on the way to delta_y = (F_y/K_c)^(2/3) = 3e-285 m, and V_y and
+    # the plastic slope came out as 0.  V_y scales as 1/E^2 at a fixed nu; the plastic slope pi p_y R_e not at all.
+    stiff = 1e150
+    assert float(yield_velocity(R, r, stiff, NU, Y=215e6, m=m)) == pytest.approx(V_y * (E / stiff) ** 2, rel=1e-11)
+    slope = float(plastic_stiffness(R, r, E, NU, Y=215e6))
+    assert float(plastic_stiffness(R, r, stiff, NU, Y=215e6)) == pytest.approx(slope, rel=1e-11)
+    # Where delta_y itself leaves the doubles the contact functions say so instead of answering 0 or refusing e.
+    with pytest.raises(ValueError, match=r"approach at first yield, delta_y = 0\.0 m, lies below the normal range"):
+        restitution_coefficient(DROP, R, r, E, NU, Y=1e-150, m=m)
 
 
 # --- inputs --------------------------------------------------------------------------------------------------
@@ -333,14 +380,17 @@ def test_equivalent_sphere_is_thorntons_construction_on_the_ellipse(angle_deg, o
 @pytest.mark.parametrize(
     ("call", "message"),
     [
-        (lambda: thornton_loading_force(1e-6, -1.0, 1e-6), "K_c must be positive"),
-        (lambda: thornton_loading_force(np.nan, 1.0, 1e-6), "delta must be finite"),
-        (lambda: thornton_unloading_force(1e-6, -1e-6, 1.0, 1e-6), "delta_max must be non-negative"),
-        (lambda: thornton_residual_indentation(1e-6, 0.0), "delta_y must be positive"),
-        (lambda: thornton_energy([1.0, 2.0], [1.0, 2.0, 3.0], 1.0, 1.0), "cannot be broadcast"),
-        (lambda: yield_velocity(R, r, E, NU, 215e6, 0.0), "m must be positive"),
-        (lambda: restitution_coefficient(-1.0, R, r, E, NU, 215e6, 0.01), "v must be non-negative"),
-        (lambda: plastic_stiffness(R, r, E, NU, 0.0), "Y must be positive"),
+        (lambda: thornton_loading_force(1e-6, K_c=-1.0, delta_y=1e-6), "K_c must be positive"),
+        (lambda: thornton_loading_force(np.nan, K_c=1.0, delta_y=1e-6), "delta must be finite"),
+        (
+            lambda: thornton_unloading_force(1e-6, delta_max=-1e-6, K_c=1.0, delta_y=1e-6),
+            "delta_max must be non-negative",
+        ),
+        (lambda: thornton_residual_indentation(1e-6, delta_y=0.0), "delta_y must be positive"),
+        (lambda: thornton_energy([1.0, 2.0], delta_max=[1.0, 2.0, 3.0], K_c=1.0, delta_y=1.0), "cannot be broadcast"),
+        (lambda: yield_velocity(R, r, E, NU, Y=215e6, m=0.0), "m must be positive"),
+        (lambda: restitution_coefficient(-1.0, R, r, E, NU, Y=215e6, m=0.01), "v must be non-negative"),
+        (lambda: plastic_stiffness(R, r, E, NU, Y=0.0), "Y must be positive"),
         (lambda: equivalent_radius(R, 0.6 * R), "R must exceed 2 r"),
     ],
 )

@@ -626,22 +626,22 @@ YIELD_COVERED = {
 @SETTINGS
 @given(ANY, ANY, ANY, ANY, ANY, ANY, ANY)
 def test_yield_any_input(R, r, E, nu, Y, angle, extra):
-    finite_or_refused(lambda: theory.first_yield(R, r, E, nu, Y, angle))
-    finite_or_refused(lambda: theory.yield_force(R, r, E, nu, Y))
-    finite_or_refused(lambda: theory.subsurface_stress(extra, Y, R, r, E, nu, angle))
-    finite_or_refused(lambda: theory.plastic_stiffness(R, r, E, nu, Y, angle))
+    finite_or_refused(lambda: theory.first_yield(R, r, E, nu, angle, Y=Y))
+    finite_or_refused(lambda: theory.yield_force(R, r, E, nu, Y=Y))
+    finite_or_refused(lambda: theory.subsurface_stress(extra, R, r, E, nu, angle, F=Y))
+    finite_or_refused(lambda: theory.plastic_stiffness(R, r, E, nu, angle, Y=Y))
     finite_or_refused(lambda: theory.equivalent_radius(R, r, angle))
-    finite_or_refused(lambda: theory.yield_velocity(R, r, E, nu, Y, extra, angle))
-    finite_or_refused(lambda: theory.restitution_coefficient(extra, R, r, E, nu, Y, 0.01, angle))
+    finite_or_refused(lambda: theory.yield_velocity(R, r, E, nu, angle, Y=Y, m=extra))
+    finite_or_refused(lambda: theory.restitution_coefficient(extra, R, r, E, nu, angle, Y=Y, m=0.01))
 
 
 @SETTINGS
 @given(ANY, ANY, ANY, ANY)
 def test_thornton_any_input(delta, delta_max, K_c, delta_y):
-    finite_or_refused(lambda: theory.thornton_loading_force(delta, K_c, delta_y))
-    finite_or_refused(lambda: theory.thornton_unloading_force(delta, delta_max, K_c, delta_y))
-    finite_or_refused(lambda: theory.thornton_residual_indentation(delta_max, delta_y))
-    finite_or_refused(lambda: theory.thornton_energy(delta, delta_max, K_c, delta_y))
+    finite_or_refused(lambda: theory.thornton_loading_force(delta, K_c=K_c, delta_y=delta_y))
+    finite_or_refused(lambda: theory.thornton_unloading_force(delta, delta_max=delta_max, K_c=K_c, delta_y=delta_y))
+    finite_or_refused(lambda: theory.thornton_residual_indentation(delta_max, delta_y=delta_y))
+    finite_or_refused(lambda: theory.thornton_energy(delta, delta_max=delta_max, K_c=K_c, delta_y=delta_y))
 
 
 @SETTINGS
@@ -659,22 +659,22 @@ def test_yield_admissible_range(r, aspect, E, nu, strain, fraction, depth, speed
     R, Y = aspect * r, strain * E
     lowest = float(theory.minimum_contact_angle(R, r))
     angle = min(lowest + fraction * (np.pi / 2 - lowest), np.pi / 2)
-    y = finite_or_refused(lambda: theory.first_yield(R, r, E, nu, Y, angle))
+    y = finite_or_refused(lambda: theory.first_yield(R, r, E, nu, angle, Y=Y))
     if y is None:
         return
     assert y.force > 0 and y.indentation > 0 and y.depth >= 0
     # p0/Y runs from 1/3 (a needle contact of an auxetic material, nu -> -1: von Mises (1 - 2 nu) p0 at the
     # surface) to 1.87 (the circle as nu -> 1/2); the depth lies in the scanned range.
     assert 1 / 3 - 1e-3 < y.pressure_ratio < 2.0 and 0.0 <= y.depth_ratio < 3.0
-    stresses = finite_or_refused(lambda: theory.subsurface_stress(depth * y.depth, y.force, R, r, E, nu, angle))
+    stresses = finite_or_refused(lambda: theory.subsurface_stress(depth * y.depth, R, r, E, nu, angle, F=y.force))
     if stresses is not None:
         assert stresses[2] <= 0 and stresses[3] >= 0  # compression along the depth; von Mises non-negative
-    k_p = finite_or_refused(lambda: theory.plastic_stiffness(R, r, E, nu, Y, angle))
+    k_p = finite_or_refused(lambda: theory.plastic_stiffness(R, r, E, nu, angle, Y=Y))
     assert k_p is None or k_p > 0
     R_e = finite_or_refused(lambda: theory.equivalent_radius(R, r, angle))
     assert R_e is None or R_e > 0
-    V_y = finite_or_refused(lambda: theory.yield_velocity(R, r, E, nu, Y, 1.0, angle))
-    e = finite_or_refused(lambda: theory.restitution_coefficient(speed, R, r, E, nu, Y, 1.0, angle))
+    V_y = finite_or_refused(lambda: theory.yield_velocity(R, r, E, nu, angle, Y=Y, m=1.0))
+    e = finite_or_refused(lambda: theory.restitution_coefficient(speed, R, r, E, nu, angle, Y=Y, m=1.0))
     assert V_y is None or V_y > 0
     assert e is None or 0 < e <= 1
 
@@ -688,10 +688,12 @@ def test_yield_admissible_range(r, aspect, E, nu, strain, fraction, depth, speed
 )
 def test_thornton_admissible_range(x, x_max, K_c, delta_y):
     delta, delta_max = x * delta_y, x_max * delta_y
-    load = finite_or_refused(lambda: theory.thornton_loading_force(delta, K_c, delta_y))
-    force = finite_or_refused(lambda: theory.thornton_unloading_force(delta, delta_max, K_c, delta_y))
-    delta_p = finite_or_refused(lambda: theory.thornton_residual_indentation(delta_max, delta_y))
-    energy = finite_or_refused(lambda: theory.thornton_energy(delta, delta_max, K_c, delta_y))
+    load = finite_or_refused(lambda: theory.thornton_loading_force(delta, K_c=K_c, delta_y=delta_y))
+    force = finite_or_refused(
+        lambda: theory.thornton_unloading_force(delta, delta_max=delta_max, K_c=K_c, delta_y=delta_y)
+    )
+    delta_p = finite_or_refused(lambda: theory.thornton_residual_indentation(delta_max, delta_y=delta_y))
+    energy = finite_or_refused(lambda: theory.thornton_energy(delta, delta_max=delta_max, K_c=K_c, delta_y=delta_y))
     if load is not None and force is not None:
         # the memory never raises the force: unloading and reloading lie under the loading curve
         assert 0 <= force <= load * (1 + 1e-12)
@@ -794,21 +796,27 @@ SPREAD = st.one_of(st.just(0.0), log_uniform(1e-6, 10.0))
 @given(CHAIN, CHAIN, CHAIN, ANY, ANY, ANY)
 def test_disorder_speeds_any_input(a, m, k, F, n, correlation):
     for estimate in ("effective-medium", "harmonic-mean"):
-        finite_or_refused(lambda e=estimate: theory.disordered_solitary_wave_speed(F, k, n, a, m, estimate=e))
-        finite_or_refused(lambda e=estimate: theory.disorder_speed_shift(n, F, correlation, correlation, estimate=e))
-    finite_or_refused(lambda: theory.effective_medium_speed(a, m, k))
-    finite_or_refused(lambda: theory.harmonic_mean_speed(a, m, k))
-    finite_or_refused(lambda: theory.impedance_spread(n, F, correlation, correlation))
-    finite_or_refused(lambda: theory.chain_impedance_spread(m, k, n, lags=0))
+        finite_or_refused(lambda e=estimate: theory.disordered_solitary_wave_speed(F, estimate=e, K=k, n=n, m=m, a=a))
+        finite_or_refused(
+            lambda e=estimate: theory.disorder_speed_shift(
+                estimate=e, n=n, sigma_K=F, sigma_m=correlation, correlation=correlation
+            )
+        )
+    finite_or_refused(lambda: theory.effective_medium_speed(k=k, m=m, a=a))
+    finite_or_refused(lambda: theory.harmonic_mean_speed(k=k, m=m, a=a))
+    finite_or_refused(lambda: theory.impedance_spread(n=n, sigma_K=F, sigma_m=correlation, correlation=correlation))
+    finite_or_refused(lambda: theory.chain_impedance_spread(K=k, n=n, m=m, lags=0))
 
 
 @SETTINGS
 @given(ANY, ANY, ANY, ANY, ANY, ANY, ANY)
 def test_disorder_lengths_any_input(omega, m, k, a, s1, s2, correlation):
-    finite_infinite_or_refused(lambda: theory.localization_length(omega, m, k, a, s1, s2, correlation))
-    finite_or_refused(lambda: theory.disorder_pulse_spread(omega, a, s1))
-    finite_infinite_or_refused(lambda: theory.disorder_attenuation_length(m, a, s1))
-    finite_or_refused(lambda: theory.attenuated_travel_time(omega, k, m, s2))
+    finite_infinite_or_refused(
+        lambda: theory.localization_length(omega, k=k, m=m, a=a, sigma_k=s2, sigma_m=s1, correlation=correlation)
+    )
+    finite_or_refused(lambda: theory.disorder_pulse_spread(omega, a=a, sigma_Z=s1))
+    finite_infinite_or_refused(lambda: theory.disorder_attenuation_length(n=m, a=a, sigma_Z=s1))
+    finite_or_refused(lambda: theory.attenuated_travel_time(omega, V0=k, n=m, attenuation_length=s2))
 
 
 @SETTINGS
@@ -820,26 +828,30 @@ def test_disorder_lengths_any_input(omega, m, k, a, s1, s2, correlation):
     n=st.floats(1.0, 3.0, exclude_min=True),
 )
 def test_disorder_speeds_admissible_range(a, m, k, F, n):
-    medium = finite_or_refused(lambda: theory.effective_medium_speed(a, m, k))
-    harmonic = finite_or_refused(lambda: theory.harmonic_mean_speed(a, m, k))
+    medium = finite_or_refused(lambda: theory.effective_medium_speed(k=k, m=m, a=a))
+    harmonic = finite_or_refused(lambda: theory.harmonic_mean_speed(k=k, m=m, a=a))
     assert medium is not None and harmonic is not None
     assert 0 < medium <= harmonic * (1 + 1e-12)  # Cauchy-Schwarz, up to rounding
     speeds = [
-        finite_or_refused(lambda e=e: theory.disordered_solitary_wave_speed(F, k, n, a, m, estimate=e))
+        finite_or_refused(lambda e=e: theory.disordered_solitary_wave_speed(F, estimate=e, K=k, n=n, m=m, a=a))
         for e in ("effective-medium", "harmonic-mean")
     ]
     assert speeds[0] is not None and speeds[1] is not None
     assert 0 < speeds[0] <= speeds[1] * (1 + 1e-12)
-    spread = finite_or_refused(lambda: theory.chain_impedance_spread(m, k, n, lags=1))
+    spread = finite_or_refused(lambda: theory.chain_impedance_spread(K=k, n=n, m=m, lags=1))
     assert spread is not None and spread >= 0
 
 
 @SETTINGS
 @given(n=log_uniform(1e-3, 1e3), sigma_K=SPREAD, sigma_m=SPREAD, correlation=st.floats(-1.0, 1.0))
 def test_disorder_shifts_admissible_range(n, sigma_K, sigma_m, correlation):
-    medium = theory.disorder_speed_shift(n, sigma_K, sigma_m, correlation, estimate="effective-medium")
-    harmonic = theory.disorder_speed_shift(n, sigma_K, sigma_m, correlation, estimate="harmonic-mean")
-    spread = theory.impedance_spread(n, sigma_K, sigma_m, correlation)
+    medium = theory.disorder_speed_shift(
+        estimate="effective-medium", n=n, sigma_K=sigma_K, sigma_m=sigma_m, correlation=correlation
+    )
+    harmonic = theory.disorder_speed_shift(
+        estimate="harmonic-mean", n=n, sigma_K=sigma_K, sigma_m=sigma_m, correlation=correlation
+    )
+    spread = theory.impedance_spread(n=n, sigma_K=sigma_K, sigma_m=sigma_m, correlation=correlation)
     assert np.isfinite(medium) and medium <= 0 and np.isfinite(harmonic) and spread >= 0
     # The two estimates differ by sigma_Z^2/2 (a sum of non-negative terms: rounding relative to the largest).
     scale = sigma_m**2 + (sigma_K / n) ** 2
@@ -861,15 +873,17 @@ def test_disorder_shifts_admissible_range(n, sigma_K, sigma_m, correlation):
 )
 def test_disorder_lengths_admissible_range(fraction, m, k, a, s1, s2, correlation, n, distance, over):
     omega = fraction * 2 * np.sqrt(k / m)
-    ell = finite_infinite_or_refused(lambda: theory.localization_length(omega, m, k, a, s1, s2, correlation))
+    ell = finite_infinite_or_refused(
+        lambda: theory.localization_length(omega, k=k, m=m, a=a, sigma_k=s2, sigma_m=s1, correlation=correlation)
+    )
     assert ell is not None and ell > 0
-    spread = finite_or_refused(lambda: theory.disorder_pulse_spread(distance, a, s1))
+    spread = finite_or_refused(lambda: theory.disorder_pulse_spread(distance, a=a, sigma_Z=s1))
     assert spread is not None and spread >= 0
-    length = finite_infinite_or_refused(lambda: theory.disorder_attenuation_length(n, a, s1))
+    length = finite_infinite_or_refused(lambda: theory.disorder_attenuation_length(n=n, a=a, sigma_Z=s1))
     assert length is not None and length > 0
     # Up to 100 decay lengths: exp(100 (n-1)/(2n)) stays far inside double precision.
     decay = distance / over if over > 0 and distance > 0 else np.inf
-    time = finite_or_refused(lambda: theory.attenuated_travel_time(distance, 1.0, n, decay))
+    time = finite_or_refused(lambda: theory.attenuated_travel_time(distance, V0=1.0, n=n, attenuation_length=decay))
     assert time is not None and time >= distance * (1 - 1e-12)  # the wave slows: never faster than V0
 
 
@@ -882,13 +896,31 @@ def test_disorder_lengths_admissible_range(fraction, m, k, a, s1, s2, correlatio
 PHYSICAL = dict(
     R=22.5e-3, r=2.5e-3, E=193e9, nu=0.29, angle=1.2, F=10.0, F_m=10.0, F_0=1.0, K=4.9e6, n=1.11, m=8e-3, a=0.04,
     K_c=7.5e9, K_b=3.3e6, v0=1.0, v_max=1.0, x=0.0, y=0.0, q=1.0, rho=8000.0, k=2, delta_c=1e-6, Z1=1.0, Z2=2.0,
-    F_min=1.0, F_max=100.0, m_striker=8e-3, m_gravity=8e-3, g=9.81,
+    F_min=1.0, F_max=100.0, m_striker=8e-3, m_gravity=8e-3, g=9.81, drop_height=0.05,
     R1=22.5e-3, r1=2.5e-3, E1=193e9, nu1=0.29, R2=15e-3, r2=2.5e-3, E2=193e9, nu2=0.29,
+    # contacts that yield: annealed 304, a depth below the contact, Thornton's approaches (delta_y of the paper's
+    # ring), an impact speed
+    Y=215e6, z=1e-4, delta=2e-6, delta_max=3e-6, delta_y=7.5e-7, v=1.0,
+    # sheets: a wavevector and the links' tension (k above is their stiffness, N/m)
+    qx=10.0, qy=5.0, T=1.0,
+    # disorder: a frequency inside the band 2 sqrt(k/m), spreads, a distance, a speed and a decay length
+    omega=10.0, sigma_K=0.1, sigma_k=0.1, sigma_m=0.1, sigma_Z=0.1, correlation=0.5, distance=1.0, V0=10.0,
+    attenuation_length=10.0,
 )  # fmt: skip
-ARRAYS = {"fit_power_law_to_curve": dict(F=np.array([1.0, 10.0, 100.0]), delta=np.array([1e-6, 5e-6, 2e-5]))}
+#: Per-ring values of a short disordered chain (the varied one is scaled by the extreme value).
+RINGS = dict(K=4.9e6 * np.array([1.0, 1.2, 0.8]), k=2.0 * np.array([1.0, 1.2, 0.8]),
+             m=8e-3 * np.array([1.0, 0.9, 1.1]), a=0.04 * np.array([1.0, 1.05, 0.95]))  # fmt: skip
+ARRAYS = {"fit_power_law_to_curve": dict(F=np.array([1.0, 10.0, 100.0]), delta=np.array([1e-6, 5e-6, 2e-5])),
+          "effective_medium_speed": RINGS, "harmonic_mean_speed": RINGS, "disordered_solitary_wave_speed": RINGS,
+          "chain_impedance_spread": RINGS}  # fmt: skip
 OTHER = {"dispersion": dict(model="power-law"), "band_edges": dict(model="power-law"),
          "sound_speed": dict(model="power-law"), "impedance": dict(model="power-law"),
          "linear_travel_time": dict(ring_from=0, ring_to=3, model="power-law")}  # fmt: skip
+#: Functions whose choices take different code paths: each extreme case runs once per choice.
+ESTIMATES = [dict(estimate="effective-medium"), dict(estimate="harmonic-mean")]
+PATTERNS = [dict(pattern="square"), dict(pattern="triangular")]
+CHOICES = {"disordered_solitary_wave_speed": ESTIMATES, "disorder_speed_shift": ESTIMATES,
+           "sheet_dispersion": PATTERNS, "sheet_sound_speeds": PATTERNS}  # fmt: skip
 
 
 def _one_extreme_cases():
@@ -899,27 +931,32 @@ def _one_extreme_cases():
         if not inspect.isfunction(function):
             continue
         parameters = inspect.signature(function).parameters
-        for varied in parameters:
-            if varied in PHYSICAL:
-                for value in (1e150, 1e300, 1e-150, 1e-300):
-                    yield pytest.param(name, varied, value, id=f"{name}-{varied}-{value:g}")
+        for choice in CHOICES.get(name, [{}]):
+            label = "".join(f"-{value}" for value in choice.values())
+            for varied in parameters:
+                if varied in PHYSICAL:
+                    for value in (1e150, 1e300, 1e-150, 1e-300):
+                        yield pytest.param(name, choice, varied, value, id=f"{name}{label}-{varied}-{value:g}")
 
 
-@pytest.mark.parametrize(("name", "varied", "value"), list(_one_extreme_cases()))
-def test_one_extreme_argument_is_answered_or_refused(name, varied, value):
+@pytest.mark.parametrize(("name", "choice", "varied", "value"), list(_one_extreme_cases()))
+def test_one_extreme_argument_is_answered_or_refused(name, choice, varied, value):
     """A finite result or a ValueError, with no floating-point warning on the way (they are errors here)."""
     import inspect
 
     function = getattr(theory, name)
-    args, kwargs = [], {}
+    args, kwargs, skipped = [], {}, False
+    given = {**PHYSICAL, **ARRAYS.get(name, {}), **OTHER.get(name, {}), **choice}
     for parameter in inspect.signature(function).parameters.values():
         p = parameter.name
-        given = {**PHYSICAL, **ARRAYS.get(name, {}), **OTHER.get(name, {})}
         if p not in given:
+            # Left at its default; a required argument left out would shift the positional ones after it.
+            assert parameter.default is not inspect.Parameter.empty, f"{name}: give {p} a physical value above"
+            skipped = True
             continue
         chosen = value * np.asarray(given[p]) if p == varied and p in ARRAYS.get(name, {}) else (
             value if p == varied else given[p])  # fmt: skip
-        if parameter.kind is inspect.Parameter.KEYWORD_ONLY:
+        if parameter.kind is inspect.Parameter.KEYWORD_ONLY or skipped:
             kwargs[p] = chosen
         else:
             args.append(chosen)

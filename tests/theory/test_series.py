@@ -195,6 +195,17 @@ def test_series_stiffness_round_trips_over_the_admissible_range(K, n, window):
     assert float(K_fit) == pytest.approx(K, rel=1e-7)  # K ~ K_b^n: the error in n times ln(delta)
 
 
+@pytest.mark.parametrize("K", [1e150, 1e-150])
+def test_series_stiffness_of_a_huge_or_tiny_K_is_computed_in_logarithms(K):
+    # K_b^3 overflowed as a Python float for K = 1e150 (an OverflowError, not a ValueError), although
+    # K_c ~ 1e203 and K_b ~ 1e135 are representable; the springs now come from their logarithms.
+    K_c, K_b = series_stiffness_for_power_law(K=K, n=1.11)
+    K_fit, n_fit = fit_power_law(K_c=K_c, K_b=K_b)
+    assert float(n_fit) == pytest.approx(1.11, rel=1e-9) and float(K_fit) == pytest.approx(K, rel=1e-9)
+    with pytest.raises(ValueError, match="not representable in double precision"):  # K_c beyond the doubles
+        series_stiffness_for_power_law(K=K**2, n=1.11)
+
+
 @pytest.mark.parametrize(
     ("args", "message"),
     [((4.9e6, 1.5), r"n must lie in \(1, 1.5\)"), ((4.9e6, 1.0), r"n must lie in \(1, 1.5\)"),

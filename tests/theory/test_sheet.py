@@ -126,6 +126,8 @@ DERIVED = [sheet._square_matrix, sheet._triangular_matrix, sheet._square_tensor,
 SAMPLE = {"q_x": 31.0, "q_y": -17.0, "theta": 0.7, "m": 0.008, "a": 0.04, "a_x": 0.04, "a_y": 0.05}
 SAMPLE |= {"k_x": 2.1e4, "k_y": 3.3e4, "T_x": 2.0, "T_y": 5.0, "k_1": 2.1e4, "k_2": 1.7e4, "k_3": 3.3e4}
 SAMPLE |= {"T_1": 2.0, "T_2": 5.0, "T_3": 0.5}
+# The long-wave tensors take k a^2/m and T a/m per family (m^2/s^2).
+SAMPLE |= {"kappa_0": 4.2, "kappa_1": 6.6, "kappa_2": 5.1, "tau_0": 1.0e-2, "tau_1": 3.1e-2, "tau_2": 2.5e-3}
 
 
 @pytest.mark.parametrize("derived", DERIVED, ids=lambda d: d.name)
@@ -313,6 +315,23 @@ def test_square_speeds_along_axes_and_diagonal():
     assert np.allclose(taut, [1.0, 2.0], rtol=1e-14)
     diagonal = sheet_sound_speeds(np.pi / 4, pattern="square", k=1.0, T=0.5, m=2.0, a=1.0)
     assert np.allclose(diagonal, np.sqrt((1.0 + 0.5) / 4), rtol=1e-14)  # (k a^2 + T a)/(2m), to rounding
+
+
+@pytest.mark.parametrize("pattern", ["square", "triangular"])
+def test_long_waves_of_huge_and_tiny_sheets_stay_within_double_precision(pattern):
+    """The long-wave tensor's k a^2/m overflowed for links above 1e154 m (speeds refused, naming the transverse one)
+    and sin^2(q a/2) underflowed for q a below 1e-154, making omega zero where it is 1e-148 rad/s.  Now: with
+    a -> s a, k -> k/s^2, T -> T/s the speeds do not change; and long waves are omega = q c to the last digit."""
+    links = dict(pattern=pattern, T=2.0, k=3.0e4, m=0.008)
+    reference = sheet_sound_speeds(0.3, a=0.04, **links)
+    for s_ in (1e156, 1e-150):  # a = 4e154 m: a^2 is beyond the doubles
+        scaled = sheet_sound_speeds(0.3, pattern=pattern, T=2.0 / s_, k=3.0e4 / s_ / s_, m=0.008, a=0.04 * s_)
+        np.testing.assert_allclose(scaled, reference, rtol=1e-12)
+    q, angle = 1e-170, 0.3  # q a/2 = 2e-172: sin^2 underflows, omega = q c = 1e-168 rad/s does not
+    omega = sheet_dispersion(q * np.cos(angle), q * np.sin(angle), a=0.04, **links)
+    np.testing.assert_allclose(omega, q * np.sort(reference), rtol=1e-14)
+    tiny = sheet_dispersion(10.0, 5.0, a=1e-300, **links)  # the string's omega^2 = T a q^2/m, with T/a = 2e300
+    assert np.all(tiny > 0) and np.all(tiny < 1e-147)
 
 
 # --- symmetries -------------------------------------------------------------------------------------------

@@ -170,7 +170,7 @@ def test_circular_axis_stresses_are_johnsons_eq_3_45():
 
 
 def test_first_yield_ratio_at_nu_029_is_160():
-    y = first_yield(R, r, E, NU, 215e6)
+    y = first_yield(R, r, E, NU, Y=215e6)
     # Johnson Sec. 4.2(b): p0 = 1.60 Y at 0.48 a (nu = 0.3); the issue's 1.60 at nu = 0.29, to its 3 digits.
     assert round(float(y.pressure_ratio), 2) == 1.60
     assert round(float(y.depth_ratio), 2) == 0.48
@@ -188,18 +188,18 @@ def test_yield_force_at_90_degrees_is_the_closed_form_and_scales_as_Y_cubed():
     for Y in (215e6, 1e9):
         closed = np.pi**3 * R_prime**2 * (1.60 * Y) ** 3 / (6 * E_star**2)
         # 1.60 is Johnson's rounded ratio; the derived 1.6009 gives (1.6009/1.60)^3 - 1 = 0.17 % more.
-        assert float(yield_force(R, r, E, NU, Y)) == pytest.approx(closed, rel=0.005)
-        exact = np.pi**3 * R_prime**2 * (float(first_yield(R, r, E, NU, Y).pressure)) ** 3 / (6 * E_star**2)
-        assert float(yield_force(R, r, E, NU, Y)) == pytest.approx(exact, rel=1e-12)  # rounding only
+        assert float(yield_force(R, r, E, NU, Y=Y)) == pytest.approx(closed, rel=0.005)
+        exact = np.pi**3 * R_prime**2 * (float(first_yield(R, r, E, NU, Y=Y).pressure)) ** 3 / (6 * E_star**2)
+        assert float(yield_force(R, r, E, NU, Y=Y)) == pytest.approx(exact, rel=1e-12)  # rounding only
     for angle in (np.pi / 2, np.radians(60)):
-        ratio = yield_force(R, r, E, NU, 2e8, angle) / yield_force(R, r, E, NU, 1e8, angle)
+        ratio = yield_force(R, r, E, NU, angle, Y=2e8) / yield_force(R, r, E, NU, angle, Y=1e8)
         assert float(ratio) == pytest.approx(8.0, rel=1e-12)  # F_y ~ p0^3 and p0/Y is a number: rounding only
 
 
 def test_paper_ring_yield_forces():
     # The issue's numbers: about 0.15 N annealed (Y = 215 MPa), about 15 N cold-drawn (Y = 1 GPa).
-    annealed = first_yield(R, r, E, NU, STAINLESS_STEEL_304_ANNEALED.yield_strength)
-    cold = first_yield(R, r, E, NU, STAINLESS_STEEL_304_COLD_WORKED.yield_strength)
+    annealed = first_yield(R, r, E, NU, Y=STAINLESS_STEEL_304_ANNEALED.yield_strength)
+    cold = first_yield(R, r, E, NU, Y=STAINLESS_STEEL_304_COLD_WORKED.yield_strength)
     assert float(annealed.force) == pytest.approx(0.155, abs=0.001)
     assert float(cold.force) == pytest.approx(15.6, abs=0.1)
     assert float(annealed.indentation) == pytest.approx(7.52e-8, rel=1e-3)
@@ -302,7 +302,7 @@ def test_yield_force_at_other_angles_against_quadrature(angle_deg):
     angle = np.radians(angle_deg)
     Y = 215e6
     F, zeta, semi_a, K_m = independent_yield_force(angle, Y)
-    derived = first_yield(R, r, E, NU, Y, angle)
+    derived = first_yield(R, r, E, NU, angle, Y=Y)
     assert np.isfinite(derived.force) and derived.force > 0
     # The bounded search finds the maximum to ~1e-7 in zeta, hence ~1e-13 in the stress: F to ~1e-9.
     assert float(derived.force) == pytest.approx(F, rel=1e-7)
@@ -347,7 +347,7 @@ def test_subsurface_stress_in_si_units():
         semi_a = np.cbrt(3 * F * D / (2 * np.pi * A * E_star))  # from A = p0 b D/(E* a^2), P = 2/3 pi a b p0
         semi_b = semi_a * np.sqrt(1 - m)
         p0_ = 3 * F / (2 * np.pi * semi_a * semi_b)
-        sx, sy, sz, vm = subsurface_stress(np.array([0.0, 0.7 * semi_b]), F, R, r, E, NU, angle)
+        sx, sy, sz, vm = subsurface_stress(np.array([0.0, 0.7 * semi_b]), R, r, E, NU, angle, F=F)
         assert sz[0] == pytest.approx(-p0_, rel=1e-12)  # the pressure at the centre of the contact
         reference = quadrature_stress((0.0, 0.0, 0.7 * semi_b), semi_a, semi_b, NU)
         np.testing.assert_allclose([sx[1], sy[1], sz[1]], p0_ * np.array(reference[:3]), rtol=1e-9)
@@ -356,22 +356,39 @@ def test_subsurface_stress_in_si_units():
 
 def test_first_yield_broadcasts():
     angles = np.radians([90.0, 75.0, 60.0])
-    together = first_yield(R, r, E, NU, np.array([[215e6], [1e9]]), angles)
+    together = first_yield(R, r, E, NU, angles, Y=np.array([[215e6], [1e9]]))
     assert together.force.shape == (2, 3)
     for i, Y in enumerate((215e6, 1e9)):
         for j, angle in enumerate(angles):
-            assert together.force[i, j] == pytest.approx(float(yield_force(R, r, E, NU, Y, angle)), rel=1e-12)
+            assert together.force[i, j] == pytest.approx(float(yield_force(R, r, E, NU, angle, Y=Y)), rel=1e-12)
+
+
+@pytest.mark.parametrize("angle", [np.pi / 2, np.radians(60)])
+def test_a_tiny_contact_scales_instead_of_vanishing(angle):
+    """Tori 1e-150 times the paper's: A^2 E^2 overflowed (A ~ 1/r), so the yield force came out as 0 (and the
+    approach, and every plastic quantity built on it) and subsurface_stress refused a representable stress.
+    Similar tori carry the same stresses at similar points under forces scaled by the area, lambda^2."""
+    scale = 1e-150
+    big, small = first_yield(R, r, E, NU, angle, Y=215e6), first_yield(scale * R, scale * r, E, NU, angle, Y=215e6)
+    assert float(small.force) == pytest.approx(scale**2 * float(big.force), rel=1e-12)
+    assert float(small.indentation) == pytest.approx(scale * float(big.indentation), rel=1e-12)
+    assert float(small.depth) == pytest.approx(scale * float(big.depth), rel=1e-12)
+    assert float(small.pressure) == pytest.approx(float(big.pressure), rel=1e-14)  # m: the shape, to rounding
+    depth = np.array([0.0, 1e-5])
+    stresses = subsurface_stress(depth, R, r, E, NU, angle, F=10.0)
+    scaled = subsurface_stress(scale * depth, scale * R, scale * r, E, NU, angle, F=scale**2 * 10.0)
+    np.testing.assert_allclose(scaled, stresses, rtol=1e-12)
 
 
 @pytest.mark.parametrize(
     ("call", "message"),
     [
-        (lambda: yield_force(R, r, E, NU, -1.0), "Y must be positive"),
-        (lambda: yield_force(R, r, E, 0.5, 1e8), "nu must lie in"),
-        (lambda: yield_force(R, 0.6 * R, E, NU, 1e8), "R must exceed 2 r"),
-        (lambda: yield_force(R, r, E, NU, 1e8, 0.3), "theta_min"),
-        (lambda: subsurface_stress(-1e-6, 1.0, R, r, E, NU), "z must be non-negative"),
-        (lambda: subsurface_stress(0.0, 0.0, R, r, E, NU), "F must be positive"),
+        (lambda: yield_force(R, r, E, NU, Y=-1.0), "Y must be positive"),
+        (lambda: yield_force(R, r, E, 0.5, Y=1e8), "nu must lie in"),
+        (lambda: yield_force(R, 0.6 * R, E, NU, Y=1e8), "R must exceed 2 r"),
+        (lambda: yield_force(R, r, E, NU, 0.3, Y=1e8), "theta_min"),
+        (lambda: subsurface_stress(-1e-6, R, r, E, NU, F=1.0), "z must be non-negative"),
+        (lambda: subsurface_stress(0.0, R, r, E, NU, F=0.0), "F must be positive"),
     ],
 )
 def test_bad_input_is_refused(call, message):
