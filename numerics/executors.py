@@ -91,9 +91,18 @@ def default_executor(n_tasks: int, max_workers: int | None, what: str = "sweep()
     if max_workers == 0:
         return InlineExecutor()
     check_main_guard(what)
-    workers = int(max_workers) if max_workers else os.cpu_count() or 1
-    # "spawn": a fresh interpreter per worker, the same on every platform and safe with threads.
-    return cf.ProcessPoolExecutor(max(1, min(workers, n_tasks)), mp_context=multiprocessing.get_context("spawn"))
+    cpus = os.cpu_count() or 1
+    workers = max(1, min(int(max_workers) if max_workers else cpus, n_tasks))
+    # "spawn": a fresh interpreter per worker, the same on every platform and safe with threads.  Each
+    # worker's compiled kernels get their share of the cores: Numba would start one thread per core in
+    # every worker, workers x cores threads on the machine.
+    return cf.ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"),
+                                  initializer=_share_threads, initargs=(max(1, cpus // workers),))  # fmt: skip
+
+
+def _share_threads(threads: int) -> None:
+    """Worker initializer: Numba's thread count in this process (read when Numba is first imported here)."""
+    os.environ.setdefault("NUMBA_NUM_THREADS", str(threads))  # a count the user set is kept
 
 
 def check_main_guard(what: str = "this call") -> None:

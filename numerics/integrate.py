@@ -147,11 +147,18 @@ DEFAULT_SAMPLES = 2001
 #: integrated in consecutive chunks of samples (the solver restarts at each chunk).
 CHUNK_BYTES = 256 * 2**20
 
-# Rough cost of one Verlet step: a fixed overhead plus a cost per coordinate and run, measured on
-# a 2-core machine (benchmarks/bench_batch.py gives this machine's numbers); only used to
-# turn a number of steps into an order of magnitude of seconds.
-_SECONDS_PER_STEP = 1.5e-5
-_SECONDS_PER_SITE_STEP = 2e-8
+# Rough cost of one step of the compiled methods: a fixed overhead plus a cost per coordinate and
+# run (a dopri5 step is seven evaluations and their Runge-Kutta sums), measured on the paper's
+# chain on a busy 2-core machine (benchmarks/bench_kernels.py gives this machine's numbers); only
+# used to turn a number of steps into an order of magnitude of seconds.
+_SECONDS_PER_STEP = 2e-7
+_SECONDS_PER_SITE_STEP = {"verlet": 3e-8, "dopri5": 2e-7}
+
+# Steps dopri5 takes per period of the fastest linearised mode (as Verlet's steps_per_period) at
+# rtol = 1e-7, growing as rtol^(-1/5) (a fifth-order pair): measured 4.9-6.4 on the paper's chain
+# (drops of 1-30 cm) against 60 for Verlet, 22 at rtol = 3e-10.  An estimate, not a bound: the
+# contacts' openings and closings cost rejected steps the linearised modes do not show.
+_DOPRI5_STEPS_PER_PERIOD = 7.0
 
 # Bytes per site of a chain's network, dynamics and initial state, built before a run can be estimated (measured:
 # 153 per site for a dual-spring chain of 1e6 rings); a chain that needs more than the memory available is refused
@@ -343,9 +350,10 @@ class RunEstimate:
     recorded_sites : int
         Coordinates whose x and u are kept (all, or those the sensors of ``rings`` need).
     steps : int or None
-        Verlet steps (None for an adaptive method, which chooses them as it goes).
+        Verlet steps; for "dopri5", the steps it is expected to take (from the fastest linearised
+        mode and rtol); None for SciPy's adaptive methods.
     dt : float or None
-        Verlet step, s.
+        Verlet step, s (None for the adaptive methods).
     memory : int
         Bytes: the record (x, u and the dissipated energy), the forces derived from it,
         and the solver's own arrays.
@@ -362,22 +370,22 @@ class RunEstimate:
 
     @property
     def work(self) -> int | None:
-        """Steps x sites x runs (Verlet), or None."""
+        """Steps x sites x runs (the compiled methods), or None."""
         return None if self.steps is None else self.steps * self.sites * self.runs
 
     @property
     def seconds(self) -> float | None:
-        """Rough duration of a Verlet run, s, at the per-step costs measured on a 2-core machine."""
+        """Rough duration of a compiled run, s, at the per-step costs measured on a 2-core machine."""
         if self.steps is None:
             return None
-        return self.steps * (_SECONDS_PER_STEP + _SECONDS_PER_SITE_STEP * self.sites * self.runs)
+        return self.steps * (_SECONDS_PER_STEP + _SECONDS_PER_SITE_STEP[self.method] * self.sites * self.runs)
 
     def describe(self, memory=True) -> str:
         """One line: the run's size, work, rough duration and (unless ``memory`` is False) memory."""
         size = f"{self.runs} run(s) x {self.sites} sites x {self.samples} samples"
+        steps = f"Verlet steps of {self.dt:.3g} s" if self.dt is not None else f"{self.method} steps (expected)"
         work = "" if self.steps is None else (
-            f", {self.steps:.3g} Verlet steps of {self.dt:.3g} s = {self.work:.3g} site-steps (roughly "
-            f"{format_duration(self.seconds)})")  # fmt: skip
+            f", {self.steps:.3g} {steps} = {self.work:.3g} site-steps (roughly {format_duration(self.seconds)})")
         return f"{size}{work}" + (f", {format_bytes(self.memory)} of memory" if memory else "")
 
 
@@ -565,6 +573,9 @@ def _prepare(model, t_end, impact_velocities, drop_heights, gravity, t_eval, n_s
     else:
         rtol = _rtol(DEFAULT_TOLERANCES[method] if rtol is None else rtol)
         atol = rtol if atol is None else float(v.in_range("atol", atol, 0.0, TOLERANCE_RANGE[1]))
+        if method == "dopri5":
+            per_period = _DOPRI5_STEPS_PER_PERIOD * (1e-7 / rtol) ** 0.2
+            steps = max(1, math.ceil(t_end / verlet_step(dyn, float(scales[0].max()), per_period)))
         n_state = 2 * B * N + (B if dyn.damped else 0)
         solver = 8 * n_state * (2 * min(T, max(1, CHUNK_BYTES // (8 * n_state))) + 30)  # output, copies, LSODA
     derived = (getattr(dyn, "n_links", N) if rings is None else 2 * len(rings)) * 8 * B * T  # forces derived later

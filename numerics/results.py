@@ -239,8 +239,18 @@ class Simulation(NetworkSimulation):
 
     # -- the sensor helpers (one run) --------------------------------------------------------------
     def sensor(self, ring: int) -> np.ndarray:
-        """Sensor force of ring ``ring`` (index from the impact end), N, shape (T,)."""
-        return self._sensor(np.array([self._ring(ring)]))[..., 0]
+        """Sensor force of ring ``ring`` (index from the impact end), N, shape (T,) (read-only: computed once per
+        ring and shared by the sensor helpers below)."""
+        i = self._ring(ring)
+        if i not in self._sensors:
+            force = self._sensor(np.array([i]))[..., 0]
+            force.flags.writeable = False
+            self._sensors[i] = force
+        return self._sensors[i]
+
+    @functools.cached_property
+    def _sensors(self) -> dict:
+        return {}
 
     def _ring(self, ring) -> int:
         i = self.chain.ring_index(ring)

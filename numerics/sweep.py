@@ -18,7 +18,7 @@ without any code change::
     from distributed import Client
     rows = sweep(grid, executor=Client("tcp://scheduler:8786").get_executor())
 
-Cost.  Each task records only its two sensor rings, and every task's work (Verlet steps x
+Cost.  Each task records only its two sensor rings, and every task's work (the expected steps x
 sites x runs) is estimated before the first one starts: a sweep with a task longer than
 ``max_seconds`` is refused with the estimate (:func:`estimate_task`).  The default
 duration (:func:`default_t_end`) stays finite as n -> 1.
@@ -65,6 +65,7 @@ __all__ = [
     "DEFAULT_BATCH_SIZE",
     "DEFAULT_SAMPLES",
     "SWEEP_METHOD",
+    "SWEEP_RTOL",
 ]
 
 #: Runs integrated together in one task (one :func:`simulate_batch` call).
@@ -72,14 +73,21 @@ DEFAULT_BATCH_SIZE = 64
 
 #: Samples of each force record (evenly spaced over the duration).  Peak forces and
 #: times of flight read from 1001 samples differ from 8001 by < 1e-4 relative on the
-#: paper's chain, below the error of the Verlet integration itself (about 3e-4).
+#: paper's chain.
 DEFAULT_SAMPLES = 1001
 
-#: Integrator of the sweeps: fixed-step velocity Verlet.  Its cost per step does not
-#: depend on the batch's contents, so a batch of B runs costs far less than B runs; an
-#: adaptive method shares one step size across the batch, and the contact openings of
-#: every run shrink it (benchmarks/bench_batch.py).
-SWEEP_METHOD = "verlet"
+#: Integrator of the sweeps: the compiled Dormand-Prince pair, each run of a batch with its own
+#: steps (the runs in parallel over the cores), at :data:`SWEEP_RTOL`.  (The NumPy Verlet of
+#: earlier versions was chosen because a batch of B runs cost far less than B runs there; compiled,
+#: a run costs the same in a batch or alone, and the adaptive pair is 10x more accurate for the
+#: same work: benchmarks/bench_kernels.py.)
+SWEEP_METHOD = "dopri5"
+
+#: Relative tolerance of :data:`SWEEP_METHOD` in sweeps: sensor forces within 1-4e-4 of the peak
+#: against a tight reference on the paper's chain (drops of 1 and 30 cm), where the fixed-step
+#: Verlet of earlier sweeps was within 2-4e-3; the default 3e-10 of :func:`simulate` costs 3.4x
+#: the steps for digits a sweep's peak forces and times of flight do not show.
+SWEEP_RTOL = 1e-7
 
 
 @dataclass(frozen=True)
@@ -391,6 +399,8 @@ def _batch(points, t_end, n_samples, method, solver):
     else:
         impact = {"impact_velocities": [p.speed for p in points]}
     rings = (*first.sensors, chain.n_rings - 1)  # the sensors and the top ring (the support's force)
+    if method == SWEEP_METHOD and solver.get("rtol") is None:
+        solver = dict(solver, rtol=SWEEP_RTOL)
     return chain, t_end, dict(impact, n_samples=n_samples, method=method, rings=rings, **solver)
 
 
