@@ -384,8 +384,11 @@ class RunEstimate:
         """One line: the run's size, work, rough duration and (unless ``memory`` is False) memory."""
         size = f"{self.runs} run(s) x {self.sites} sites x {self.samples} samples"
         steps = f"Verlet steps of {self.dt:.3g} s" if self.dt is not None else f"{self.method} steps (expected)"
-        work = "" if self.steps is None else (
-            f", {self.steps:.3g} {steps} = {self.work:.3g} site-steps (roughly {format_duration(self.seconds)})")
+        work = (
+            ""
+            if self.steps is None
+            else (f", {self.steps:.3g} {steps} = {self.work:.3g} site-steps (roughly {format_duration(self.seconds)})")
+        )
         return f"{size}{work}" + (f", {format_bytes(self.memory)} of memory" if memory else "")
 
 
