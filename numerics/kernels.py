@@ -167,12 +167,21 @@ def pack_network(net) -> Packed:
     rest_vectors = np.asarray(net.rest_vectors, dtype=float) if planar else np.zeros((L, d))
     spans = np.asarray(net.spans, dtype=float) if planar else np.zeros(L)
     prestretch = np.asarray(net.prestretch, dtype=float) if planar else np.zeros(L)
-    path = d == 1 and np.array_equal(net.i, np.arange(L))  # a chain: link k joins site k to k + 1 (or the support)
+    path = d == 1 and _is_path(net.i, net.j, S)
     ints = np.array([0, d, net.n_coords, int(net.damped), S, L, 0, 0, 0, int(path)], dtype=np.int64)
     return Packed(ints, _empty(2), np.ascontiguousarray(1.0 / mass), np.ascontiguousarray(gravity, dtype=float),
                   net.i.astype(np.int64), net.j.astype(np.int64), kind, par, np.ascontiguousarray(rest_vectors),
                   np.ascontiguousarray(spans), np.ascontiguousarray(prestretch), _empty(0, 0), _empty(0),
                   _empty(0))  # fmt: skip
+
+
+def _is_path(i, j, S) -> bool:
+    """Whether the links are a chain's (the kernels' fast path): link k joins site k to site k + 1 for k < S - 1,
+    and a last link, if any, joins site S - 1 to the support."""
+    L = i.size
+    if L not in (S - 1, S) or not np.array_equal(i, np.arange(L)):
+        return False
+    return bool(np.array_equal(j[: S - 1], np.arange(1, S)[:L]) and (L == S - 1 or j[S - 1] < 0))
 
 
 def pack_ring_chain(chain) -> Packed:
@@ -188,7 +197,7 @@ def pack_ring_chain(chain) -> Packed:
 
 
 # -- the laws --------------------------------------------------------------------------------------------------
-@_jit()
+@_jit(inline="always")
 def _law(kind, p0, p1, p2, e, rate):
     """(force, elastic force) of one link: the :mod:`ringchain.numerics.laws` of kind ``kind``, parameters p0-p2."""
     if kind == 0:  # PowerLaw: [K delta^n + gamma delta_dot]_+ where engaged (K, n, gamma)
@@ -204,7 +213,7 @@ def _law(kind, p0, p1, p2, e, rate):
 
 
 # -- right-hand sides ----------------------------------------------------------------------------------------
-@_jit()
+@_jit(inline="always")
 def _network_accelerations(m, b, g, x, u, out):
     """Accelerations of member ``b`` of a packed network under gravity ``g`` into ``out``; returns the power its
     dashpots take out."""
@@ -280,7 +289,7 @@ def _network_accelerations(m, b, g, x, u, out):
     return power
 
 
-@_jit()
+@_jit(inline="always")
 def _ring_accelerations(m, x, out):
     """Accelerations of the ring-resolved chain without gravity (:meth:`~ringchain.numerics.RingChain.stepper`)."""
     N, n, fixed = m.ints[6], m.ints[7], m.ints[8]
@@ -307,7 +316,7 @@ def _ring_accelerations(m, x, out):
                 out[(r + 1) * n + a] -= force * m.inv_bottom[a]  # the ring above pulled down at its bottom
 
 
-@_jit()
+@_jit(inline="always")
 def _accelerations(m, b, g, x, u, out):
     """Accelerations of member ``b`` of either kind of model (the packed kind says which)."""
     if m.ints[0] == 0:
@@ -321,7 +330,7 @@ def _accelerations(m, b, g, x, u, out):
     return 0.0
 
 
-@_jit()
+@_jit(inline="always")
 def _derivative(m, b, g, y, dy, N):
     """dy/dt of the state y = [x (N), u (N), W (dissipated energy, if damped)]."""
     power = _accelerations(m, b, g, y[:N], y[N : 2 * N], dy[N : 2 * N])
