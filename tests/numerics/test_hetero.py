@@ -300,7 +300,7 @@ def _stacked_drops(chains, heights, t, rtol):
     states = [initial_state(chain, drop_height=h) for chain, h in zip(chains, heights, strict=True)]
     x0, u0 = np.concatenate([x for x, _ in states]), np.concatenate([u for _, u in states])
     stack = Network.stack([chain.network() for chain in chains])
-    batch = simulate_batch(stack, t[-1], initial=(x0, u0), t_eval=t, rtol=rtol, max_energy_drift=None)
+    batch = simulate_batch(stack, t[-1], initial=(x0, u0), t_eval=t, rtol=rtol)
     return [
         Simulation(chain=chain, t=t, x=batch.x[b], u=batch.u[b], dissipated=batch.dissipated[b], g=G,
                    impact_velocity=float(-u0[b][0]), drop_height=h).sensor_force

@@ -165,10 +165,8 @@ RHS_CASES = {
     "varying dual-spring (path)": lambda: model("varying dual-spring").network(),
     "damped dual-spring (path, velocities)": lambda: model("damped dual-spring").network(),
     "two free chains side by side (not a path)": lambda: _side_by_side(FREE.network()),
-    "two hanging chains side by side (not a path)": pytest.param(
-        lambda: _side_by_side(model("uniform dual-spring").network()),
-        marks=pytest.mark.xfail(strict=True, reason="kernels.pack_network takes it for a path (see the test below)"),
-    ),
+    # Both were taken for a path by the kernels' first test (link k starts at site k), their forces wrong.
+    "two hanging chains side by side (not a path)": lambda: _side_by_side(model("uniform dual-spring").network()),
     "two dimensions, three laws": _two_dimensional_network,
 }
 
@@ -200,7 +198,6 @@ def test_compiled_accelerations_are_the_numpy_ones(build):
     np.testing.assert_allclose(got, expected, rtol=0, atol=1e-13 * np.abs(expected).max())
 
 
-@pytest.mark.xfail(strict=True, reason="bug: pack_network's path test (i == arange) misses j and the anchors")
 def test_a_network_whose_links_are_numbered_by_their_first_site_is_not_taken_for_a_chain():
     """Links (0, 2), (1, 2), (2, support): link k starts at site k, but it is not a chain of links k -> k + 1."""
     spring = laws.LinearSpring(K=1.0)
@@ -208,7 +205,7 @@ def test_a_network_whose_links_are_numbered_by_their_first_site_is_not_taken_for
     assert not net.is_path
     x = np.array([0.0, 0.0, 1.0])  # site 2 lifted by 1 m: links 0 and 1 stretched, the support link compressed
     np.testing.assert_array_equal(net.accelerations(x, None, 0.0), [1.0, 1.0, -3.0])  # NumPy: Newton's law
-    # The kernel reads link 0 as (0, 1) and link 1 as (1, 2): accelerations [0, 1, -2].
+    # The kernel read link 0 as (0, 1) and link 1 as (1, 2): accelerations [0, 1, -2].
     np.testing.assert_array_equal(kernels.accelerations(kernels.pack(net), x, None, 0.0), [1.0, 1.0, -3.0])
 
 
@@ -297,12 +294,10 @@ def test_a_stack_of_different_chains_is_their_runs_alone():
     states = [initial_state(chain, drop_height=h) for chain, h in zip(chains, (0.05, 0.02), strict=True)]
     stack = Network.stack([chain.network() for chain in chains])
     t = np.linspace(0.0, 5e-4, 101)
-    # max_energy_drift=None: the energy watch misreads the energy of a stack whose members differ
-    # (Network.energy broadcasts the members' parameters against every member's final state) and stops
-    # this correct run (as tests/numerics/test_hetero.py's stacks do).
+    # The energy watch reads a stack whose members differ (it once broadcast their parameters against
+    # every member's state and stopped this correct run).
     batch = simulate_batch(stack, t[-1], initial=(np.concatenate([x for x, _ in states]),
-                                                  np.concatenate([u for _, u in states])), t_eval=t,
-                           max_energy_drift=None)  # fmt: skip
+                                                  np.concatenate([u for _, u in states])), t_eval=t)  # fmt: skip
     for b, (chain, (x0, u0)) in enumerate(zip(chains, states, strict=True)):
         alone = simulate(chain.network(), t[-1], initial=(x0[0], u0[0]), t_eval=t)
         # Member b reads its own row of masses and law parameters, the same numbers the network alone
