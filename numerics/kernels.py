@@ -28,8 +28,9 @@ The Runge-Kutta pair.  Dormand and Prince's 5(4) pair with its fourth-order cont
 at rest with no net force), or a run repeated in a batch, never changes the steps a run takes (an
 RMS norm over n components loosens the control by sqrt(n) when most of them are idle).  A member
 hanging at rest under gravity is not exactly idle: its rounding-level accelerations, against its own
-tiny tolerances, change a shared step slightly (``shared=True``: 601 steps instead of 596 measured).  Each member of a batch takes its own steps; the members run in parallel
-over the cores (``prange``).  The samples are read from the continuous extension.
+tiny tolerances, change a shared step slightly (``shared=True``: 601 steps instead of 596 measured).
+Each member of a batch takes its own steps; the members run in parallel over the cores (``prange``).
+The samples are read from the continuous extension.
 
 Velocity Verlet.  The fixed-step scheme of :func:`ringchain.numerics.integrate` (kick-drift-kick in
 leapfrog form, samples by cubic Hermite interpolation of the two ends of their step), one member per

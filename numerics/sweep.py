@@ -426,9 +426,9 @@ def run_points(points, *, t_end=None, n_samples=DEFAULT_SAMPLES, method=SWEEP_ME
     retries = 0 if t_end is not None else MAX_DOUBLINGS
     chain, t_end, arguments = _batch(points, t_end, n_samples, method, solver)
     while True:
-        batch = simulate_batch(chain, t_end, **arguments)
+        runs = list(simulate_batch(chain, t_end, **arguments))  # each run reads its sensors once
         try:
-            for run in batch:
+            for run in runs:
                 signals.leading_pulse(run.t, run.sensor(first.sensors[1]))
             break
         except (signals.TruncatedPulseError, signals.NoPulseError) as exc:
@@ -440,7 +440,7 @@ def run_points(points, *, t_end=None, n_samples=DEFAULT_SAMPLES, method=SWEEP_ME
                 ) from None
         retries -= 1
         t_end *= 2.0
-    for row, run in zip(rows, batch, strict=True):
+    for row, run in zip(rows, runs, strict=True):
         row.update(_dynamics(first.sensors, run))
     return rows
 
