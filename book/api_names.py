@@ -35,7 +35,10 @@ def current_page(text: str) -> str:
         )
         if not section.search(text):
             raise SystemExit(f"{PAGE}: the section of {package} is not in the expected form")
-        table = "".join(f"   {name}\n" for name in names)
+        # A dict or tuple constant has no docstring of its own: autosummary would show the builtin's ("dict(**kwargs)
+        # -> ...", broken reStructuredText); it is listed under automodule, which reads its #: comment.
+        module = importlib.import_module(package)
+        table = "".join(f"   {name}\n" for name in names if not isinstance(getattr(module, name), (dict, tuple, list)))
         text = section.sub(lambda m, t=table, n=names: m.group(1) + t + m.group(2) + ", ".join(n) + "\n", text)
     return text
 
