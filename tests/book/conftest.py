@@ -20,11 +20,3 @@ def chromium() -> str:
             pytest.fail(f"CI is set but Chromium is missing: {message}")
         pytest.skip(message)
     return path
-
-
-def pytest_collection_modifyitems(items):
-    """Every test of the book on one xdist worker (``--dist loadgroup``): they share one build of the book, a
-    session fixture, which each worker would otherwise make again."""
-    for item in items:
-        if "tests/book/" in item.nodeid.replace("\\", "/"):
-            item.add_marker(pytest.mark.xdist_group("book"))

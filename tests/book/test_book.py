@@ -18,6 +18,10 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 BOOK = ROOT / "book"
+
+# Every test here on one xdist worker (``--dist loadgroup``): they share one build of the book, a session
+# fixture, which each worker would otherwise make again.
+pytestmark = pytest.mark.xdist_group("book")
 SITE = BOOK / "_build" / "html"
 
 
