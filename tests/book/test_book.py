@@ -19,9 +19,8 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2]
 BOOK = ROOT / "book"
 
-# Every test here on one xdist worker (``--dist loadgroup``): they share one build of the book, a session
-# fixture, which each worker would otherwise make again.
-pytestmark = pytest.mark.xdist_group("book")
+# Every test here runs on one xdist worker (pyproject's ``--dist loadfile``: a file's tests stay together): they
+# share one build of the book, a session fixture, which each worker would otherwise make again.
 SITE = BOOK / "_build" / "html"
 
 
