@@ -20,3 +20,25 @@ from hypothesis import settings
 
 settings.register_profile("ringchain", derandomize=True, database=None)
 settings.load_profile("ringchain")
+
+
+def pytest_configure(config):
+    """Start the book's build in the background when this session will test the book (tests/book/building.py):
+    the longest job of the suite then runs beside the other tests instead of after them.  Only in the
+    process that runs the session (not in its xdist workers, which inherit the build's folder)."""
+    import importlib.util
+    from pathlib import Path
+
+    if "PYTEST_XDIST_WORKER" in os.environ or config.option.collectonly:
+        return
+    here = Path(__file__).resolve().parent
+    book_tests = here / "tests" / "book" / "test_book.py"
+    chosen = [(config.invocation_params.dir / arg.split("::")[0]).resolve() for arg in config.args]
+    if not any(path == book_tests or path in book_tests.parents for path in chosen):
+        return
+    spec = importlib.util.spec_from_file_location("book_building", book_tests.with_name("building.py"))
+    building = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(building)
+    if importlib.util.find_spec("jupyter_book") is not None and building.stale():
+        building.start()
+
