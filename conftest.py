@@ -41,4 +41,3 @@ def pytest_configure(config):
     spec.loader.exec_module(building)
     if importlib.util.find_spec("jupyter_book") is not None and building.stale():
         building.start()
-
