@@ -13,6 +13,7 @@ if "PYTEST_XDIST_WORKER" not in os.environ:
     os.environ["RINGCHAIN_CACHE_DIR"] = tempfile.mkdtemp(prefix="ringchain-test-cache-")
 os.environ.setdefault("MPLBACKEND", "Agg")
 
+
 # Property tests are derandomized (STYLE.md: seeded randomness only): every run, here and in CI,
 # draws the same examples, so a failure reproduces and a green run stays green.  Tests that set
 # their own hypothesis settings inherit this profile for what they leave out.
@@ -20,6 +21,29 @@ from hypothesis import settings
 
 settings.register_profile("ringchain", derandomize=True, database=None)
 settings.load_profile("ringchain")
+
+
+def _alias_package_folders() -> None:
+    """Let the doctests of theory/ and numerics/ run on the package's own modules.
+
+    pytest (--import-mode=importlib) imports a folder's files under the folder's name (``numerics.kernels``),
+    a second copy of the package beside ``ringchain.numerics``: Numba then caches kernels whose types pickle
+    as ``numerics.kernels.Packed``, which any other process (the book's pages, the other test worker) cannot
+    unpickle, and it fails instead of compiling (ModuleNotFoundError: numerics).  pytest returns a module
+    already in sys.modules under that name: the package's.
+    """
+    import importlib
+    import pkgutil
+    import sys
+
+    for package, folder in (("ringchain.theory", "theory"), ("ringchain.numerics", "numerics")):
+        module = importlib.import_module(package)
+        sys.modules.setdefault(folder, module)
+        for info in pkgutil.iter_modules(module.__path__):
+            sys.modules.setdefault(f"{folder}.{info.name}", importlib.import_module(f"{package}.{info.name}"))
+
+
+_alias_package_folders()
 
 
 def pytest_configure(config):
