@@ -7,6 +7,8 @@ session runs each derivation from the current source instead of trusting a cache
 import os
 import tempfile
 
+import pytest
+
 # One fresh directory per session: made by the pytest process, inherited by its xdist workers (they share
 # the compiled kernels), never by a later session.
 if "PYTEST_XDIST_WORKER" not in os.environ:
@@ -46,6 +48,10 @@ def _alias_package_folders() -> None:
 _alias_package_folders()
 
 
+#: The background build of the book (tests/book/building.py) and its process, kept for pytest_unconfigure.
+_BOOK_BUILD = pytest.StashKey[tuple]()
+
+
 def pytest_configure(config):
     """Start the book's build in the background when this session will test the book (tests/book/building.py):
     the longest job of the suite then runs beside the other tests instead of after them.  Only in the
@@ -64,4 +70,10 @@ def pytest_configure(config):
     building = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(building)
     if importlib.util.find_spec("jupyter_book") is not None and building.stale():
-        building.start()
+        config.stash[_BOOK_BUILD] = (building, building.start())
+
+
+def pytest_unconfigure(config):
+    if _BOOK_BUILD in config.stash:
+        building, process = config.stash[_BOOK_BUILD]
+        building.stop(process)

@@ -9,6 +9,7 @@ itself when no build was started (a run of tests/book alone, say).
 from __future__ import annotations
 
 import os
+import signal
 import subprocess
 import tempfile
 import time
@@ -41,13 +42,22 @@ def _environment() -> dict:
     return {k: v for k, v in os.environ.items() if k != "MPLBACKEND"}  # the pages plot inline
 
 
-def start() -> None:
-    """Start ``book/build.sh`` in the background and name its folder in :data:`STARTED` (inherited by workers)."""
+def start() -> subprocess.Popen:
+    """Start ``book/build.sh`` in the background and name its folder in :data:`STARTED` (inherited by workers);
+    returns the process (its own process group), which the caller keeps and ends (:func:`stop`)."""
     folder = Path(tempfile.mkdtemp(prefix="ringchain-book-build-"))
     script = f'bash "{BOOK / "build.sh"}" > "{folder / "log"}" 2>&1; echo $? > "{folder / "status.tmp"}"; ' \
              f'mv "{folder / "status.tmp"}" "{folder / "status"}"'  # fmt: skip
-    subprocess.Popen(["bash", "-c", script], env=_environment(), start_new_session=True)
+    process = subprocess.Popen(["bash", "-c", script], env=_environment(), start_new_session=True)
     os.environ[STARTED] = str(folder)
+    return process
+
+
+def stop(process: subprocess.Popen) -> None:
+    """End a background build the session did not wait for (its tests deselected, or the session stopped)."""
+    if process.poll() is None:
+        os.killpg(process.pid, signal.SIGTERM)
+    process.wait()
 
 
 def wait() -> tuple[int, str] | None:
