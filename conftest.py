@@ -1,14 +1,20 @@
 """Test session setup shared by tests/ and the doctests of the package.
 
-The generated-code cache is pointed at a fresh directory, so every test session runs
-each derivation from the current source instead of trusting a cache from earlier.
+The generated-code cache (and Numba's compiled kernels) is pointed at a fresh directory, so every test
+session runs each derivation from the current source instead of trusting a cache from earlier.
 """
 
 import os
 import tempfile
 
-os.environ["RINGCHAIN_CACHE_DIR"] = tempfile.mkdtemp(prefix="ringchain-test-cache-")
+import pytest
+
+# One fresh directory per session: made by the pytest process, inherited by its xdist workers (they share
+# the compiled kernels), never by a later session.
+if "PYTEST_XDIST_WORKER" not in os.environ:
+    os.environ["RINGCHAIN_CACHE_DIR"] = tempfile.mkdtemp(prefix="ringchain-test-cache-")
 os.environ.setdefault("MPLBACKEND", "Agg")
+
 
 # Property tests are derandomized (STYLE.md: seeded randomness only): every run, here and in CI,
 # draws the same examples, so a failure reproduces and a green run stays green.  Tests that set
@@ -17,3 +23,57 @@ from hypothesis import settings
 
 settings.register_profile("ringchain", derandomize=True, database=None)
 settings.load_profile("ringchain")
+
+
+def _alias_package_folders() -> None:
+    """Let the doctests of theory/ and numerics/ run on the package's own modules.
+
+    pytest (--import-mode=importlib) imports a folder's files under the folder's name (``numerics.kernels``),
+    a second copy of the package beside ``ringchain.numerics``: Numba then caches kernels whose types pickle
+    as ``numerics.kernels.Packed``, which any other process (the book's pages, the other test worker) cannot
+    unpickle, and it fails instead of compiling (ModuleNotFoundError: numerics).  pytest returns a module
+    already in sys.modules under that name: the package's.
+    """
+    import importlib
+    import pkgutil
+    import sys
+
+    for package, folder in (("ringchain.theory", "theory"), ("ringchain.numerics", "numerics")):
+        module = importlib.import_module(package)
+        sys.modules.setdefault(folder, module)
+        for info in pkgutil.iter_modules(module.__path__):
+            sys.modules.setdefault(f"{folder}.{info.name}", importlib.import_module(f"{package}.{info.name}"))
+
+
+_alias_package_folders()
+
+
+#: The background build of the book (tests/book/building.py) and its process, kept for pytest_unconfigure.
+_BOOK_BUILD = pytest.StashKey[tuple]()
+
+
+def pytest_configure(config):
+    """Start the book's build in the background when this session will test the book (tests/book/building.py):
+    the longest job of the suite then runs beside the other tests instead of after them.  Only in the
+    process that runs the session (not in its xdist workers, which inherit the build's folder)."""
+    import importlib.util
+    from pathlib import Path
+
+    if "PYTEST_XDIST_WORKER" in os.environ or config.option.collectonly:
+        return
+    here = Path(__file__).resolve().parent
+    book_tests = here / "tests" / "book" / "test_book.py"
+    chosen = [(config.invocation_params.dir / arg.split("::")[0]).resolve() for arg in config.args]
+    if not any(path == book_tests or path in book_tests.parents for path in chosen):
+        return
+    spec = importlib.util.spec_from_file_location("book_building", book_tests.with_name("building.py"))
+    building = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(building)
+    if importlib.util.find_spec("jupyter_book") is not None and building.stale():
+        config.stash[_BOOK_BUILD] = (building, building.start())
+
+
+def pytest_unconfigure(config):
+    if _BOOK_BUILD in config.stash:
+        building, process = config.stash[_BOOK_BUILD]
+        building.stop(process)

@@ -8,7 +8,7 @@ lines. A table is Markdown built from numbers the page computed.
 
 The book's conventions live here too, defined once: the colour of each quantity in every figure
 (:data:`COLOURS`), the drop heights of the experiment (:data:`DROP_HEIGHTS`), and how a caption names the chain
-it shows, its stiffness source and its striker (:func:`chain_note`, :data:`STRIKER`).
+it shows, its stiffness source and its striker (:func:`chain_note`, :func:`striker_note`, :data:`STRIKER`).
 """
 
 from __future__ import annotations
@@ -22,14 +22,17 @@ from IPython.display import Markdown, Math, display
 __all__ = [
     "COLOURS",
     "DROP_HEIGHTS",
+    "FORCE_MAP",
     "HIGH_DROP",
     "LOW_DROP",
     "STRIKER",
+    "STRIKER_WORDS",
     "chain_note",
     "compact",
     "grouped",
     "show",
     "stiffness_words",
+    "striker_note",
     "table",
     "textbook",
 ]
@@ -58,20 +61,58 @@ COLOURS = {
     "R/r = 4": "#7f7f7f",
     "R/r = 8": "#bcbd22",
     "R/r = 10": "#17becf",
+    # disorder (chapter "Disorder"): the ordered chain, the ensembles by the size of their spread, the two
+    # estimates of the mean speed, and the chain without gravity beside the hanging one
+    "ordered": "black",
+    "spread 1": "#fdae6b",
+    "spread 2": "#f16913",
+    "spread 3": "#a63603",
+    "effective-medium": "#3182bd",
+    "harmonic-mean": "#31a354",
+    "hanging": "#756bb1",
+    "no gravity": "#a63603",
+    # sheets of interlinked rings (the sheets chapter)
+    "square sheet": "#a63603",
+    "triangular sheet": "#08519c",
+    "longitudinal": "#31a354",
+    "transverse": "#756bb1",
 }
+
+#: The colour map of the forces of a sheet's links (the sheets chapter): pale where a link carries little,
+#: dark where it carries most, so that the lattice fades into the page and the pulse stands out.
+FORCE_MAP = "magma_r"
 
 #: Drop heights used by every chapter, m; the paper does not give its own.  ``LOW_DROP`` and ``HIGH_DROP``
 #: stand for the low- and high-amplitude experiments of the paper's Fig. 1 d and e.
 DROP_HEIGHTS = (2e-3, 10e-3, 50e-3, 0.2, 0.5)
 LOW_DROP, HIGH_DROP = 2e-3, 50e-3
 
-#: How every lattice of the book is struck, in the words of its captions: the dropped ring is ring 0 of the
-#: chain, with the inertial mass m_eff of every lattice ring (the paper's convention, Sec. III.B).
-# striker_mass (issue 25, item 1): once the chain constructors take ``striker_mass``, describe each chain's
-# striker from that field here, so that every caption built with chain_note() follows it.
-STRIKER = (
-    "striker: the dropped ring, of inertial mass $m_{\\mathrm{eff}}$ like every lattice ring (the paper's convention)"
-)
+#: How a lattice is struck, in the words of a caption, for each ``striker_mass`` of the chain constructors: the
+#: dropped ring is ring 0 of the chain, with the inertial mass m_eff of every lattice ring (the paper's convention,
+#: Sec. III.B, and the default) or, as a rigid ring in free fall, its own mass m0.
+STRIKER_WORDS = {
+    "m_eff": "striker: the dropped ring, of inertial mass $m_{\\mathrm{eff}}$ like every lattice ring (the paper's "
+    "convention)",
+    "m0": "striker: the dropped ring as a rigid body, of its full mass $m_0$",
+}
+
+
+def striker_note(striker="m_eff") -> str:
+    """The striker of a chain in a caption's words: ``striker`` is a ``striker_mass`` ("m_eff", "m0", kg) or a Chain,
+    read from its ``striker_mass`` field (None: the paper's convention; ring 0's weight mass: m0)."""
+    if hasattr(striker, "striker_mass"):
+        chain, striker = striker, striker.striker_mass
+        if striker is None:
+            striker = "m_eff"
+        elif striker == chain.profile("m_gravity")[0]:
+            striker = "m0"
+    if isinstance(striker, str):
+        return STRIKER_WORDS[striker]
+    return f"striker: the dropped ring, of inertial mass {striker * 1e3:.3g} g"
+
+
+#: Every lattice of the book is struck as the paper's, unless its caption says otherwise.
+STRIKER = striker_note("m_eff")
 
 
 def stiffness_words(model: str, stiffness: str, aspect_ratio: float = 9.0) -> str:
@@ -86,13 +127,14 @@ def stiffness_words(model: str, stiffness: str, aspect_ratio: float = 9.0) -> st
     return note.replace("@UNITS@", "$^n$")
 
 
-def chain_note(model: str, stiffness: str, aspect_ratio: float = 9.0, *, striker: bool = True) -> str:
-    """The chain of ``paper_chain(model, stiffness=...)`` in words: model, stiffness source and striker.
+def chain_note(model: str, stiffness: str, aspect_ratio: float = 9.0, *, striker=True, striker_mass="m_eff") -> str:
+    """The chain of ``paper_chain(model, stiffness=..., striker_mass=...)`` in words: model, stiffness source and
+    striker (:func:`striker_note`).
 
     ``striker=False`` leaves the striker out (a caption naming several chains adds :data:`STRIKER` once).
     """
     words = f"{model} chain, stiffness: {stiffness_words(model, stiffness, aspect_ratio)}"
-    return f"{words}; {STRIKER}" if striker else words
+    return f"{words}; {striker_note(striker_mass)}" if striker else words
 
 
 def textbook(label: str, typed, derived, *, samples: int = 6) -> None:

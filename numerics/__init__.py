@@ -7,14 +7,16 @@ one engine (:mod:`.integrate`): a new capability is a new law or a new way to la
 The floors, top to bottom (each module imports only the floors below it; no cycle, no
 underscore name reached across modules):
 
-1. the command line: ``cli``, ``fit_cli``, ``_cli_options`` -- parse, call one public function, print;
-2. jobs: ``paper``, ``experiment``, ``sweep``, ``fit``, ``fit_dynamic``, ``junction``,
-   ``effective_mass``, ``contact_bem``, ``dissipation`` -- the paper's tables and figures, a drop read at
-   two sensors, grids, inverse problems, the impedance experiment, the effective mass, the
-   numerical contact at any angle, where the energy of a yielding chain goes;
-3. layouts: ``chain``, ``chain_file``, ``ring_chain``, ``ring_beam``, ``yielding`` -- a Chain builds a Network
-   (with contacts that yield: ``yielding``);
-   chain files; the ring-resolved chain (its own dynamics) and the ring as a curved beam;
+1. the command line: ``cli``, ``fit_cli``, ``ensemble_cli``, ``sheet_cli``, ``_cli_options`` -- parse, call one
+   public function, print;
+2. jobs: ``paper``, ``experiment``, ``sweep``, ``ensemble``, ``fit``, ``fit_dynamic``, ``junction``,
+   ``effective_mass``, ``contact_bem``, ``dissipation`` -- the paper's tables and figures, a drop read at two
+   sensors, grids, ensembles of disordered chains, inverse problems, the impedance experiment,
+   the effective mass, the numerical contact at any angle, where the energy of a yielding chain goes;
+3. layouts: ``chain``, ``chain_kinds``, ``chain_file``, ``disorder``, ``yielding``, ``ring_chain``, ``ring_beam``,
+   ``sheet``, ``sheet_runs`` -- a Chain builds a Network; graded, alternating and joined chains; chain files;
+   random rings about a nominal one; contacts that yield; the ring-resolved chain (its own dynamics) and the
+   ring as a curved beam; sheets of interlinked rings in two dimensions and their runs;
 4. the engine: ``integrate``, ``results``, ``traces``, ``plots``, ``executors``, ``signals`` --
    the integrator layer, result records, measurement files, figures, where sweeps run,
    reading pulses;
@@ -39,14 +41,20 @@ What each module owns:
 - :mod:`.traces` -- :func:`write_traces` beside :func:`read_traces`, and the other measurement files;
 - :mod:`.chain` -- :class:`Chain`: the power-law (Eq. (7)) and dual-spring (Eqs. (5)-(6)) chains,
   uniform or changing along their length, hanging or free; their drop protocol and striker;
-  ``Chain.network()``; :mod:`.chain_file` reads chains in TOML;
+  ``Chain.network()``; :mod:`.chain_kinds` builds the graded, alternating and joined chains;
+  :mod:`.chain_file` reads chains in TOML; :mod:`.disorder` draws the rings of
+  :meth:`Chain.disordered` (seeds, spreads, truncation);
+- :mod:`.sheet` -- :class:`Sheet`: square (4-in-1) and triangular (6-in-1) sheets and any layout of
+  rings in a plane, hanging under gravity or pretensioned, the contact law of a ring pair at any angle;
+  :mod:`.sheet_runs` -- :class:`SheetSimulation` (``link_force``, fields in NetCDF), :func:`read_sheet_run`;
 - :mod:`.ring_beam`, :mod:`.ring_chain` -- :class:`RingModel`, :class:`ReducedRing` (a ring as an
   elastic curved beam) and :class:`RingChain` (a chain of them), :func:`simulate_rings`;
 - :mod:`.experiment` -- :func:`~.experiment.run_experiment`: a drop read at two sensors (``ringchain
   simulate``); :mod:`.paper` -- :func:`paper_chain`, :func:`paper_experiment`, the paper's tables
   and figures (``ringchain paper``); :mod:`.sweep` -- :func:`sweep` over grids and chain files through
-  any executor; :mod:`.fit`, :mod:`.fit_dynamic` -- :func:`fit_static`, :func:`fit_speed_amplitude`,
-  :func:`fit_traces`; :mod:`.contact_bem` -- :func:`contact_curve`, :func:`angle_power_law`;
+  any executor; :mod:`.ensemble` -- :func:`ensemble` of disordered chains, read at every ring
+  (``ringchain ensemble``); :mod:`.fit`, :mod:`.fit_dynamic` -- :func:`fit_static`, :func:`fit_speed_amplitude`,
+  :func:`fit_speed_rings`, :func:`fit_traces`; :mod:`.contact_bem` -- :func:`contact_curve`, :func:`angle_power_law`;
   :mod:`.effective_mass` -- :func:`predict_effective_mass`; :mod:`.junction` -- the small pulse at a
   junction; :mod:`.signals` -- peaks, arrivals, time of flight, widths, spectra.
 """
@@ -57,9 +65,11 @@ from . import laws, signals
 from .chain import MODELS, STRIKERS, SUPPORTS, Chain, initial_state
 from .contact_angle import AngleContact, AnglePowerLaw, angle_power_law, contact_at_angle
 from .contact_bem import HALF_SPACE_LIMIT, ContactCurve, HalfSpaceWarning, PressureMaps, contact_curve
+from .disorder import DisorderWarning, draw_rings
 from .dissipation import energy_shares, equivalent_contact_dashpot, second_impact
 from .effective_mass import fit_effective_mass, predict_effective_mass
-from .fit import FitError, FitResult, fit_speed_amplitude, fit_static
+from .ensemble import Ensemble, Summary, ensemble, summarize
+from .fit import FitError, FitResult, fit_speed_amplitude, fit_speed_rings, fit_static
 from .fit_dynamic import TraceRecord, fit_traces
 from .integrate import (
     ADAPTIVE_METHODS,
@@ -80,6 +90,8 @@ from .paper import STIFFNESS_SOURCES, PaperExperiment, paper_chain, paper_experi
 from .results import BatchSimulation, EnergyBudget, NetworkBatch, NetworkSimulation, Simulation
 from .ring_beam import ReducedRing, RingModel
 from .ring_chain import RingChain, RingSimulation, simulate_rings
+from .sheet import Sheet
+from .sheet_runs import SheetBatch, SheetSimulation, read_sheet_run
 from .signals import NoPulseError, PulseError, TruncatedPulseError, UnresolvedPulseError
 from .sweep import Point, sweep, write_csv
 from .traces import DataError, read_speed_amplitude, read_static, read_traces, write_traces
@@ -144,6 +156,7 @@ __all__ = [
     "read_speed_amplitude",
     "fit_static",
     "fit_speed_amplitude",
+    "fit_speed_rings",
     "fit_traces",
     "FitResult",
     "FitError",
@@ -155,4 +168,14 @@ __all__ = [
     "simulate_rings",
     "predict_effective_mass",
     "fit_effective_mass",
+    "ensemble",
+    "Ensemble",
+    "Summary",
+    "summarize",
+    "draw_rings",
+    "DisorderWarning",
+    "Sheet",
+    "SheetSimulation",
+    "SheetBatch",
+    "read_sheet_run",
 ]

@@ -56,6 +56,23 @@ class Checked:
         return self.check(self.parse(text))
 
 
+class Given(argparse.Action):
+    """Store an option's value and note its name in ``args.given``: what the user typed, default or not.
+
+    ``--chain`` refuses the ring options it replaces, and a data file that names its rings
+    refuses a ring option that differs from them, only when they were given.
+    """
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        setattr(namespace, self.dest, values)
+        namespace.given = {*getattr(namespace, "given", ()), self.dest}
+
+
+def given(args) -> set:
+    """The options ``args`` holds because the user gave them (:class:`Given`), by their dest names."""
+    return set(getattr(args, "given", ()))
+
+
 def positive(what, unit):
     """A finite number > 0, in ``unit``."""
     return Checked(float, lambda x: float(v.positive(what, x, unit)))
@@ -79,11 +96,50 @@ def material(name):
     return name
 
 
+#: Most rings of a chain the command line builds (--rings, a chain file, --vary K.rings): a guard against a typo
+#: such as --rings 100000000, whose chain alone would fill the memory before any estimate of the run (a chain of
+#: 1e6 rings takes about 0.3 GB and minutes to integrate; :func:`ringchain.numerics.simulate` has no limit).
+MAX_RINGS = 1_000_000
+
+
+def check_rings(n: int, what: str) -> int:
+    """A ring count within :data:`MAX_RINGS` (``what``: the chain's name in the message)."""
+    if n > MAX_RINGS:
+        raise ValueError(f"{what} has {n} rings; the command line builds chains of at most {MAX_RINGS} rings (use "
+                         "ringchain.numerics.simulate for more)")  # fmt: skip
+    return n
+
+
+def ring_count(n):
+    """A number of rings of a chain: an integer from 2 to :data:`MAX_RINGS`."""
+    n = v.count("rings", n, 2)
+    if n > MAX_RINGS:
+        raise ValueError(f"at most {MAX_RINGS} rings from the command line (use ringchain.numerics.simulate for more), "
+                         f"got {n}")  # fmt: skip
+    return n
+
+
 def batch_size(n):
     """A positive number of runs per task."""
     if n < 1:
         raise ValueError(f"batch_size must be a positive integer, got {n}")
     return n
+
+
+def striker_mass(text: str):
+    """argparse type of --striker-mass: "m_eff", "m0" or a positive mass in kg (:func:`.chain.striker_convention`)."""
+    from .chain import STRIKERS, striker_convention
+
+    if text not in STRIKERS:
+        try:
+            text = float(text)
+        except ValueError:
+            expected = ", ".join(STRIKERS)
+            raise argparse.ArgumentTypeError(f"expected {expected} or a mass in kg, got {text!r}") from None
+    try:
+        return striker_convention(text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(one_line(exc).replace("striker_mass", "striker mass")) from None
 
 
 LENGTH_R = positive("R", "m")
@@ -247,15 +303,28 @@ def check_geometry(aspect: float, angles, *, chain: bool, given: str, two_patche
         )
 
 
-def check_sensors(sensors, chain_lengths) -> None:
-    """Near sensor before the far one, both in the shortest chain."""
+def check_sensors(sensors, chain_lengths, source=None) -> None:
+    """Near sensor before the far one, both in the shortest chain (of the chain file ``source``, if given)."""
     near, far = sensors
     if not near < far:
         raise ValueError(f"argument --sensors: the near ring comes first, then the far one; got {near} {far}")
     shortest = min(chain_lengths)
     if far >= shortest:
-        raise ValueError(f"argument --sensors: sensor ring {far} is not in a chain of {shortest} rings "
-                         f"(0..{shortest - 1}); give --rings {far + 1} or more")  # fmt: skip
+        example = f"--sensors {shortest // 3} {2 * shortest // 3}"
+        remedy = (f"give --rings {far + 1} or more" if source is None else
+                  f"give sensors below {shortest} ({example}, say), or a chain file of {far + 1} rings or "
+                  "more")  # fmt: skip
+        where = f"a chain of {shortest} rings" if source is None else f"the {shortest} rings of {source}"
+        raise ValueError(f"argument --sensors: sensor ring {far} is not in {where} (0..{shortest - 1}); {remedy}")
+
+
+def check_outputs(inputs, outputs) -> None:
+    """Refuse an output (--out, --plot) that names an input (a chain file, a data file): it would be overwritten."""
+    read = {Path(path).resolve(): path for path in inputs if path is not None}
+    for flag, path in outputs:
+        if path is not None and path != "-" and Path(path).resolve() in read:
+            raise ValueError(f"argument {flag}: {path} is an input of this command and would be overwritten; give "
+                             "another file")  # fmt: skip
 
 
 def check_impact(material: str, *, drop_heights=None, impact_velocities=None) -> None:
@@ -301,6 +370,19 @@ def ring_of(R, r, material, angle_deg, what, *, thin=False, window=None):
 
 
 @contextlib.contextmanager
+def naming_size(args):
+    """A run the engine refuses as too large: add the command line's remedies."""
+    from .integrate import RunTooLargeError
+
+    try:
+        yield
+    except RunTooLargeError as exc:
+        chain = "fewer rings in --chain's file" if getattr(args, "chain", None) is not None else "fewer --rings"
+        raise ValueError(f"{one_line(exc)}. From the command line: {chain}, fewer --samples or a shorter "
+                         "--t-end") from None  # fmt: skip
+
+
+@contextlib.contextmanager
 def naming_t_end(args):
     """A duration the sweep finds too short is the user's --t-end: say so."""
     try:
@@ -313,11 +395,11 @@ def naming_t_end(args):
 
 # -- option groups: defined once, shared by the subcommands -----------------------------------------
 def option(p, many, name, one, default, **kwargs):
-    """One option of one value, or of several values and ranges for a sweep (``many``)."""
+    """One option of one value, or of several values and ranges for a sweep (``many``); noted in ``args.given``."""
     if many:
-        p.add_argument(name, type=Values(one), nargs="+", default=[[default]], **kwargs)
+        p.add_argument(name, type=Values(one), nargs="+", default=[[default]], action=Given, **kwargs)
     else:
-        p.add_argument(name, type=one, default=default, **kwargs)
+        p.add_argument(name, type=one, default=default, action=Given, **kwargs)
 
 
 def geometry_options(p, *, many=False, R_required=False):
@@ -327,13 +409,13 @@ def geometry_options(p, *, many=False, R_required=False):
     elif R_required:
         p.add_argument("--R", type=LENGTH_R, required=True, metavar="M", help="major (centroidal) radius, m")
     else:
-        p.add_argument("--R", type=LENGTH_R, default=22.5e-3, metavar="M",
+        p.add_argument("--R", type=LENGTH_R, default=22.5e-3, metavar="M", action=Given,
                        help="major (centroidal) radius of the rings, m (default 22.5e-3)")  # fmt: skip
-    p.add_argument("--r", type=LENGTH_r, default=PAPER_TUBE_RADIUS, metavar="M",
+    p.add_argument("--r", type=LENGTH_r, default=PAPER_TUBE_RADIUS, metavar="M", action=Given,
                    help="tube radius, m (default 2.5e-3, the paper's)")  # fmt: skip
     option(p, many, "--angle", ANGLE, 90.0, metavar="DEG",
            help="contact angle between ring planes, degrees, in (0, 90] (default 90)")  # fmt: skip
-    p.add_argument("--material", type=Checked(str, material), default="stainless",
+    p.add_argument("--material", type=Checked(str, material), default="stainless", action=Given,
                    help="material preset (default stainless: AISI 304)")  # fmt: skip
     option(p, many, "--m-eff-ratio", M_EFF_RATIO, 1.0, metavar="X",
            help="inertial over ring mass m_eff/m0 in (0, 1] (default 1; the paper fits 0.33-0.37)")  # fmt: skip
@@ -352,17 +434,47 @@ def impact_options(p, *, many=False, required=False):
                             help="impact speed of ring 0, m/s")  # fmt: skip
 
 
+def executor_options(p, *, default_batch: int, what: str = "runs of one chain"):
+    """Where the work runs: --batch-size, --workers, --dask ADDRESS, --dask-timeout (a sweep, an ensemble)."""
+    p.add_argument("--batch-size", type=Checked(int, batch_size), default=default_batch,
+                   help=f"{what} integrated together (default {default_batch})")  # fmt: skip
+    p.add_argument("--workers", type=integer("workers", 0), default=None,
+                   help="local worker processes (default: CPUs; 0: run in this process)")  # fmt: skip
+    p.add_argument("--dask", metavar="ADDRESS", help="run on a Dask cluster, e.g. tcp://scheduler:8786")
+    p.add_argument("--dask-timeout", type=DURATION, default=5.0, metavar="S",
+                   help="seconds to wait for the Dask scheduler to answer (default 5)")  # fmt: skip
+
+
+@contextlib.contextmanager
+def executor_of(args):
+    """The executor of --dask (a client's, closed at the end), or None for local processes (--workers)."""
+    if not args.dask:
+        yield None
+        return
+    from .executors import dask_client
+
+    try:
+        client = dask_client(args.dask, args.dask_timeout)
+    except ImportError:
+        raise ValueError("--dask needs the dask extra: pip install 'ringchain[dask]'") from None
+    except (ConnectionError, ValueError) as exc:
+        raise ValueError(f"argument --dask: {one_line(exc)}") from None
+    with client:
+        yield client.get_executor()
+
+
 def chain_options(p, *, many=False):
     """The lattice run: --rings, --model, --sensors, --t-end, --samples."""
     from .chain import MODELS
     from .integrate import check_samples
 
-    rings = integer("rings", 2)
+    rings = Checked(int, ring_count)
     if many:
         p.add_argument("--rings", type=Values(rings), nargs="+", default=[[paper_data.CHAIN_RINGS]], metavar="N",
-                       help="chain lengths (default 20)")  # fmt: skip
+                       action=Given, help="chain lengths (default 20)")  # fmt: skip
     else:
-        p.add_argument("--rings", type=rings, default=paper_data.CHAIN_RINGS, help="rings in the chain (default 20)")
+        p.add_argument("--rings", type=rings, default=paper_data.CHAIN_RINGS, action=Given,
+                       help="rings in the chain (default 20)")  # fmt: skip
     p.add_argument("--model", choices=MODELS, default=None if many else "dual-spring", nargs="+" if many else None,
                    help="lattice model (paper Sec. III.B; default dual-spring)")  # fmt: skip
     p.add_argument("--sensors", type=integer("sensor ring", 0), nargs=2, default=list(paper_data.SENSOR_RINGS),
@@ -371,6 +483,29 @@ def chain_options(p, *, many=False):
                    help="duration, s (default: long enough for the pulse to pass the far sensor)")  # fmt: skip
     p.add_argument("--samples", type=Checked(int, check_samples), default=None,
                    help="samples of each force record (default: simulate's 2001, sweep's 1001)")  # fmt: skip
+    p.add_argument("--no-gravity", dest="gravity", action="store_false",
+                   help="no gravity: the chain starts unstretched (a chain file's free support needs it)")  # fmt: skip
+
+
+def striker_option(p, *, many=False):
+    """--striker-mass: the inertia of the struck ring 0 (several, for a sweep)."""
+    what = ("inertia of the struck ring 0: m_eff (the lattice's, the paper's convention; default), m0 (the ring's "
+            "own mass, a rigid ring in free fall) or a mass in kg")  # fmt: skip
+    if many:
+        p.add_argument("--striker-mass", type=striker_mass, nargs="+", default=["m_eff"], metavar="MASS",
+                       help=what + "; several give one row each")  # fmt: skip
+    else:
+        p.add_argument("--striker-mass", type=striker_mass, default="m_eff", metavar="MASS", help=what)
+
+
+def striker_words(striker, m0: float | None = None) -> str:
+    """The striker of a run in words, for what ``ringchain simulate`` prints."""
+    if striker == "m_eff":
+        return "striker of the lattice's inertia m_eff (the paper's convention)"  # m_eff is the chain's m
+    if striker == "m0":
+        mass = "" if m0 is None else f", {m0 * 1e3:.4g} g"
+        return f"rigid striker of the ring's mass m0{mass}"
+    return f"striker of {striker * 1e3:.4g} g"
 
 
 def chain_file(text: str):
@@ -378,11 +513,11 @@ def chain_file(text: str):
     from .chain_file import read_chain_file
 
     try:
-        return read_chain_file(text)
-    except OSError as exc:
-        raise argparse.ArgumentTypeError(f"cannot read {text}: {exc.strerror or one_line(exc)}") from None
+        description = read_chain_file(text)
+        check_rings(description.n_rings, description.source)
     except ValueError as exc:
         raise argparse.ArgumentTypeError(one_line(exc)) from None
+    return description
 
 
 def chain_file_options(p, *, sweep=False):
@@ -396,10 +531,10 @@ def chain_file_options(p, *, sweep=False):
                             "(SEGMENT.FIELD or SEGMENT.FIELD.first/last; FIELD rings, R, r or angle)")  # fmt: skip
 
 
-def check_chain_file_alone(args, defaults: dict) -> None:
-    """--chain replaces the single-ring geometry: refuse those options when they differ from their defaults."""
-    for name, default in defaults.items():
-        if getattr(args, name, default) != default:
+def check_chain_file_alone(args, names=("R", "R_over_r", "r", "angle", "material", "rings")) -> None:
+    """--chain replaces the single-ring geometry: refuse those options when given, whatever their values."""
+    for name in names:
+        if name in given(args):
             flag = "--" + name.replace("_", "-")
             raise ValueError(f"argument {flag}: not allowed with --chain (the chain file gives every ring's geometry)")
 
@@ -419,8 +554,11 @@ def vary_values(spec: list) -> tuple[str, list]:
 
 
 # -- the chain of ringchain simulate, the points of ringchain sweep: every input checked first ----------
-#: The single-ring options that --chain replaces, with their defaults.
-GEOMETRY_DEFAULTS = {"R": 22.5e-3, "r": 2.5e-3, "angle": 90.0, "material": "stainless", "rings": 20}
+def check_support(description, args) -> None:
+    """A chain file whose far end is free cannot hang under gravity: it needs --no-gravity."""
+    if description.support == "free" and args.gravity:
+        raise ValueError(f'{description.source} has support = "free": a chain with a free far end cannot hang under '
+                         "gravity; give --no-gravity")  # fmt: skip
 
 
 def simulated_chain(args):
@@ -431,23 +569,26 @@ def simulated_chain(args):
                "impact_velocities": [args.impact_velocity] if args.impact_velocity is not None else None}  # fmt: skip
     if args.chain is not None:
         description = args.chain
-        check_chain_file_alone(args, GEOMETRY_DEFAULTS)
-        check_sensors(args.sensors, [description.n_rings])
+        check_chain_file_alone(args)
+        check_support(description, args)
+        check_sensors(args.sensors, [description.n_rings], description.source)
         for material in {segment.material for segment in description.segments}:
             check_impact(material, **impacts)
         with computing(f"the chain of {description.source}"):
-            chain = description.chain(args.model, args.m_eff_ratio)
-        return chain, f" from {description.source} ({len(description.segments)} segments)"
+            chain = description.chain(args.model, args.m_eff_ratio, striker_mass=args.striker_mass)
+        striker = striker_words(args.striker_mass, chain.striker_inertia)
+        return chain, f" from {description.source} ({len(description.segments)} segments), {striker}"
     aspect = aspect_ratio(args.R, args.r)
     check_geometry(aspect, [args.angle], chain=True, given="arguments --R and --r")
     check_sensors(args.sensors, [args.rings])
     check_impact(args.material, **impacts)
     ring_of(aspect * args.r, args.r, args.material, args.angle, f"the ring of --R {args.R:g} m and --r {args.r:g} m")
     point = Point(R_over_r=aspect, r=args.r, angle=math.radians(args.angle), material=args.material, model=args.model,
-                  n_rings=args.rings, m_eff_ratio=args.m_eff_ratio, sensors=tuple(args.sensors))  # fmt: skip
+                  n_rings=args.rings, m_eff_ratio=args.m_eff_ratio, sensors=tuple(args.sensors),
+                  striker_mass=args.striker_mass)  # fmt: skip
     with computing(f"the chain of {args.rings} rings"):
         chain = point.chain()
-    return chain, f", R/r = {aspect:g}"
+    return chain, f", R/r = {aspect:g}, {striker_words(args.striker_mass, chain.striker_inertia)}"
 
 
 def sweep_points(args) -> list:
@@ -458,18 +599,31 @@ def sweep_points(args) -> list:
         if args.vary:
             raise ValueError("argument --vary: varies a field of a chain file; give --chain FILE")
         return expand(_sweep_grid(args))
-    defaults = GEOMETRY_DEFAULTS | {"R_over_r": [[9.0]], "angle": [[90.0]], "rings": [[20]]}
-    check_chain_file_alone(args, defaults)
+    check_chain_file_alone(args)
+    check_support(args.chain, args)
     if args.drop_height is None and args.impact_velocity is None:
         raise ValueError("a sweep of a chain file needs impacts: give --drop-height or --impact-velocity")
     field, values = vary_values(args.vary) if args.vary else (None, [None])
+    lengths = [args.chain.n_rings]
+    if field is not None:
+        from .chain_file import vary
+
+        try:
+            lengths = [vary(args.chain, field, value).n_rings for value in values]
+        except ValueError as exc:
+            raise ValueError(f"argument --vary: {one_line(exc)}") from None
+        for n, value in zip(lengths, values, strict=True):
+            check_rings(n, f"argument --vary: the chain of {field} = {value:g}")
+    check_sensors(args.sensors, lengths, args.chain.source)
     ratios, models = flat(args.m_eff_ratio), args.model or ["dual-spring"]
     heights, velocities = flat(args.drop_height), flat(args.impact_velocity)
     for material in {segment.material for segment in args.chain.segments}:
         check_impact(material, drop_heights=heights, impact_velocities=velocities)
     impacts = [{"drop_height": h} for h in heights] if heights else [{"impact_velocity": u} for u in velocities]
-    return [FilePoint(args.chain, field, value, model, ratio, sensors=tuple(args.sensors), **impact)
-            for model in models for ratio in ratios for value in values for impact in impacts]  # fmt: skip
+    return [FilePoint(args.chain, field, value, model, ratio, sensors=tuple(args.sensors), striker_mass=striker,
+                      **impact)
+            for model in models for ratio in ratios for striker in args.striker_mass for value in values
+            for impact in impacts]  # fmt: skip
 
 
 def _sweep_grid(args) -> dict:
@@ -490,6 +644,7 @@ def _sweep_grid(args) -> dict:
         "R_over_r": aspects,
         "angle": [math.radians(a) for a in angles],
         "m_eff_ratio": flat(args.m_eff_ratio),
+        "striker_mass": args.striker_mass,
         "r": [args.r],
         "material": [args.material],
         "sensors": [tuple(args.sensors)],
@@ -506,3 +661,71 @@ def _sweep_grid(args) -> dict:
             ring_of(aspect * args.r, args.r, args.material, angle,
                     f"the ring of --R-over-r {aspect:g}, --r {args.r:g} m, --angle {angle:g} deg")  # fmt: skip
     return grid
+
+
+# -- the rings of ringchain fit speed, the chain of ringchain fit traces -----------------------------------
+def speed_rings(args, rows):
+    """The rings of ``ringchain fit speed``: the file's, row by row (``rows`` of
+    :func:`~ringchain.numerics.read_speed_amplitude`, a sweep file names them), or the ring options' (``rows``
+    None).  A ring option given that differs from the file's value on a row is refused, naming the line."""
+    if (args.K is None) != (args.n is None):
+        raise ValueError("give both --K and --n, or neither (then the ring's power law, Eq. 4, is used)")
+    if rows is None:
+        return ring_of(args.R, args.r, args.material, args.angle, f"the ring of --R {args.R:g} m and --r {args.r:g} m")
+    columns = {"R": (rows["R"], "m"), "r": (rows["r"], "m"), "angle": (np.degrees(rows["angle"]), "deg"),
+               "material": (rows["material"], "")}  # fmt: skip
+    for name in sorted(given(args) & set(columns)):
+        values, unit = columns[name]
+        ours = getattr(args, name)
+        for value, line in zip(values, rows["line"], strict=True):
+            differs = value != ours if name == "material" else not math.isclose(value, ours, rel_tol=1e-9)
+            if differs:
+                shown = value if name == "material" else f"{value:.6g} {unit}"
+                raise ValueError(f"argument --{name}: {args.file} names its rings, and line {line} gives {name} = "
+                                 f"{shown}, not the {ours:g}{' ' + unit if unit else ''} given; leave --{name} out to "
+                                 "use the file's rings")  # fmt: skip
+    if args.K is not None:
+        distinct = {(R, r, a, m) for R, r, a, m in zip(rows["R"], rows["r"], rows["angle"], rows["material"],
+                                                         strict=True)}  # fmt: skip
+        if len(distinct) > 1:
+            raise ValueError(f"arguments --K and --n give one power law, but {args.file} holds pairs from "
+                             f"{len(distinct)} different rings; leave them out (each ring's own, Eq. 4)")  # fmt: skip
+    rings = {}
+    for R, r, angle, name, line in zip(rows["R"], rows["r"], rows["angle"], rows["material"], rows["line"],
+                                       strict=True):  # fmt: skip
+        if (R, r, angle, name) not in rings:
+            where = f"the ring of {args.file}, line {line} (R = {R:g} m, r = {r:g} m)"
+            rings[R, r, angle, name] = ring_of(R, r, name or "stainless", math.degrees(angle), where)
+    return [rings[key] for key in zip(rows["R"], rows["r"], rows["angle"], rows["material"], strict=True)]
+
+
+def trace_chain(args):
+    """The starting chain of ``ringchain fit traces`` (of --chain FILE, or of the ring options, with --K and --n
+    for a power law) and its ring 0's mass m0 (kg)."""
+    import dataclasses
+
+    from .chain import Chain
+
+    dashpots = {"gamma": args.gamma} if args.model == "power-law" else {"gamma_c": args.gamma,
+                                                                           "gamma_b": args.gamma_b}  # fmt: skip
+    if args.model != "power-law" and (args.K is not None or args.n is not None):
+        raise ValueError("--K and --n give a power law: use them with --model power-law")
+    if (args.K is None) != (args.n is None):
+        raise ValueError("give both --K and --n, or neither (then the ring's power law, Eq. 4, is used)")
+    if args.chain is not None:
+        check_chain_file_alone(args, names=("R", "r", "angle", "material", "rings"))
+        if args.K is not None:
+            raise ValueError("arguments --K and --n: not allowed with --chain (the chain file gives every contact)")
+        description = args.chain
+        with computing(f"the chain of {description.source}"):
+            chain = description.chain(args.model, args.m_eff_ratio)
+        chain = dataclasses.replace(chain, gamma=args.gamma, striker_mass=args.striker_mass,
+                                    **({} if args.model == "power-law" else {"gamma_b": args.gamma_b}))  # fmt: skip
+        return chain, float(np.ravel(chain.m_gravity)[0])
+    ring = ring_of(args.R, args.r, args.material, args.angle, f"the ring of --R {args.R:g} m and --r {args.r:g} m")
+    ring.check_chain()
+    law = {} if args.K is None else {"K": args.K, "n": args.n}
+    with computing(f"the chain of {args.rings} rings"):
+        chain = Chain.from_ring(ring, args.rings, args.model, m_eff_ratio=args.m_eff_ratio, **law, **dashpots,
+                                striker_mass=args.striker_mass)  # fmt: skip
+    return chain, ring.mass

@@ -37,9 +37,10 @@ the inertial mass (the paper's m_eff) and ``m_gravity`` the mass gravity acts on
 static pre-stretch of the hanging chain right (each contact carries the true weight
 below it) but means the model rings do not fall like real ones: a ring with slack
 contacts accelerates at g m_gravity/m (about 2.7 g for m/m0 = 0.37), and an impact
-speed v carries momentum m v, not m0 v.  This is why a drop is started at the instant
-the slack is taken up, with the free-fall speed sqrt(2 g h) of the real ring
-(:func:`ringchain.numerics.simulate`), rather than integrated through the fall.
+speed v carries momentum m v, not m0 v (unless the striker is given its own mass, below).
+This is why a drop is started at the instant the slack is taken up, with the free-fall
+speed sqrt(2 g h) of the real ring (:func:`ringchain.numerics.simulate`), rather than
+integrated through the fall.
 
 Initial conditions (paper Sec. III.A)
 -------------------------------------
@@ -61,7 +62,13 @@ The striker
 Ring 0, the struck ring, has the inertial mass of every lattice ring (the paper's
 convention, the default) or its own ``striker_mass``: a ring in free fall moves as a rigid
 body, so a rigid striker brings the momentum m0 v0 and the energy m0 v0^2/2 of the real ring
-(``striker_mass="m0"``), however the inertia is shared inside the wave that follows.
+(``striker_mass="m0"``), however the inertia is shared inside the wave that follows.  With
+m_eff = 0.37 m0 the paper's convention brings 37 % of both, and by the impact law
+(:func:`ringchain.theory.impact_amplitude`) a wave (m0/m_eff)^(n/(n+1)) times weaker.
+``striker_mass`` is stored in kg (None for the paper's convention); ring 0's sites get that
+inertia (halves of striker_mass/2 in the dual-spring model), gravity still acts on
+``m_gravity``.  A copy with other parameters (``dataclasses.replace``, the trace fits) keeps
+a striker given in kg, a rigid ring of known mass; the paper's convention follows ``m``.
 """
 
 from __future__ import annotations
@@ -73,13 +80,16 @@ import numpy as np
 from ringchain.theory import STANDARD_GRAVITY, Ring, fit_power_law, hertz_stiffness_pair, linear
 from ringchain.theory import _validate as v
 
+from .chain_kinds import GRADING_PROFILES, alternating_chain, graded_chain, joined_chain
+from .disorder import disordered_chain
 from .integrate import impact_speeds
 from .laws import LinearSpring, PowerLaw, Thornton
 from .network import ANCHOR, Links, Network
 from .results import BatchSimulation
 from .yielding import yielding_chain
 
-__all__ = ["Chain", "MODELS", "SUPPORTS", "GRADING_PROFILES", "STRIKERS", "initial_state", "sensor_pair", "ring_index"]
+__all__ = ["Chain", "MODELS", "SUPPORTS", "GRADING_PROFILES", "STRIKERS", "initial_state", "sensor_pair", "ring_index",
+           "striker_convention"]  # fmt: skip
 
 #: What each parameter of a :class:`Chain` is given per, when it varies along the chain.
 _PROFILES = {"K": "contact", "n": "contact", "gamma": "contact", "m": "ring", "m_gravity": "ring", "K_b": "ring",
@@ -91,12 +101,20 @@ MODELS = linear.MODELS
 #: Boundary at the far end from the impact: hanging from a fixed support, or free.
 SUPPORTS = ("fixed", "free")
 
-#: How :meth:`Chain.graded` spaces the values between its two ends.
-GRADING_PROFILES = ("linear", "geometric")
-
 #: The struck ring's inertia: the lattice's (``"m_eff"``, the paper's convention) or the real
 #: ring's mass m0 (``"m0"``, a rigid ring in free fall); a number in kg is taken as it is.
 STRIKERS = ("m_eff", "m0")
+
+
+def striker_convention(value) -> str | float:
+    """``value`` as a striker: ``"m_eff"`` (also for None), ``"m0"`` or a mass in kg (ValueError otherwise)."""
+    if value is None:
+        return "m_eff"
+    if isinstance(value, str):
+        return v.choice("striker_mass", value, STRIKERS)
+    if isinstance(value, bool | np.bool_) or np.ndim(value) != 0:
+        raise ValueError(f"striker_mass must be one mass (in kg) or one of {STRIKERS}, got {value!r}")
+    return float(v.positive("striker_mass", value, "kg"))
 
 
 def _parameter(name: str, value, length: int, check, unit: str, what: str):
@@ -136,7 +154,8 @@ class Chain:
 
     Build it with :meth:`power_law`, :meth:`dual_spring` or :meth:`from_ring` (the paper's
     own chain: :func:`ringchain.numerics.paper.paper_chain`); a chain that changes along its
-    length with :meth:`from_rings`, :meth:`graded`, :meth:`alternating` or :meth:`joined`.
+    length with :meth:`from_rings`, :meth:`graded`, :meth:`alternating` or :meth:`joined`; rings that
+    differ at random with :meth:`disordered`.
     The contact law of both models is [K delta^n + gamma delta_dot]_+
     (:class:`~ringchain.numerics.laws.PowerLaw`);
     the dual-spring model uses K = K_c, n = 3/2, gamma = gamma_c and adds the bending
@@ -175,9 +194,8 @@ class Chain:
         "fixed": the top ring (the far end) hangs from a fixed support through one more
         contact of the chain's contact law; "free": the far end is free.
     striker_mass : float or None
-        Inertial mass of ring 0, the struck ring, kg; None: ``m`` of ring 0 (the paper's
-        convention).  The constructors take ``"m0"`` for the ring's own mass (``m_gravity``
-        of ring 0: a rigid striker) and ``"m_eff"`` for None (module notes).
+        Inertial mass of the struck ring 0, kg, or None: ``m``, the paper's convention (also
+        ``"m_eff"``; ``"m0"``: ``m_gravity`` of ring 0, a rigid striker; :attr:`striker_inertia`).
     delta_y, delta_max : float, ndarray or None
         Yielding contacts (:mod:`~ringchain.numerics.yielding`): Thornton's approach at first yield and the largest
         approach before the run, m (per contact); ``delta_y`` None: elastic Hertz contacts.
@@ -229,10 +247,8 @@ class Chain:
                 raise ValueError("contacts that yield follow Hertz's law (n = 3/2): use the dual-spring model")
             set_("delta_y", _parameter("delta_y", self.delta_y, contacts, v.positive, "m", "contact"))
         set_("delta_max", _parameter("delta_max", self.delta_max, contacts, v.nonnegative, "m", "contact"))
-        striker = self.striker_mass
-        if isinstance(striker, str):
-            striker = None if v.choice("striker_mass", striker, STRIKERS) == "m_eff" else self.profile("m_gravity")[0]
-        set_("striker_mass", None if striker is None else float(v.positive("striker_mass", striker, "kg")))
+        striker = striker_convention(self.striker_mass)
+        set_("striker_mass", {"m_eff": None, "m0": float(self.profile("m_gravity")[0])}.get(striker, striker))
 
     def _key(self) -> tuple:
         return tuple(
@@ -361,8 +377,7 @@ class Chain:
             Dual-spring contact and bending dashpots, N s/m.
         support : {"fixed", "free"}, optional
         striker_mass : float or {"m_eff", "m0"}, optional
-            Inertial mass of ring 0, kg: default the lattice's m_eff (the paper's convention);
-            "m0" the ring's mass (a rigid ring in free fall; module notes).
+            Inertial mass of ring 0, kg: default m_eff (the paper's); "m0" the ring's (module notes).
         yield_strength : float, optional
             Pa: contacts that yield, from the hanging chain's plastic equilibrium (dual-spring; :mod:`.yielding`).
 
@@ -500,133 +515,13 @@ class Chain:
         return cls.power_law(n_rings, fits[:, 0], fits[:, 1], ratio * m0, a, gamma, m0, support=support,
                              striker_mass=striker_mass)  # fmt: skip
 
-    @classmethod
-    def graded(
-        cls,
-        ring: Ring,
-        n_rings: int,
-        *,
-        aspect_ratio=None,
-        angle=None,
-        profile: str = "linear",
-        model: str = "dual-spring",
-        **options,
-    ) -> Chain:
-        """A chain whose R/r or contact angle changes steadily from the impact end to the far end.
+    # A chain of rings drawn at random about a nominal ring (issue 23): disorder.disordered_chain's docstring.
+    disordered = classmethod(disordered_chain)
 
-        Parameters
-        ----------
-        ring : Ring
-            The ring the others are made from: its tube radius r, material and (unless graded)
-            angle.
-        n_rings : int
-        aspect_ratio : (float, float), optional
-            R/r of ring 0 and of the last ring; R = aspect_ratio * r.
-        angle : (float, float), optional
-            Contact angle of the first and of the last contact, rad.
-        profile : {"linear", "geometric"}, optional
-            Values spaced evenly ("linear") or by a constant ratio ("geometric").
-        model : {"dual-spring", "power-law"}
-        **options
-            Passed to :meth:`from_rings` (``m_eff_ratio``, dashpots, ``support``).
-
-        Examples
-        --------
-        >>> chain = Chain.graded(Ring.from_aspect_ratio(9.0), 5, aspect_ratio=(9.0, 5.0))
-        >>> bool(np.all(np.diff(chain.K_b) > 0))  # fatter rings bend less
-        True
-        """
-        if not isinstance(ring, Ring):
-            raise TypeError(f"ring must be a ringchain.theory.Ring, got {type(ring).__name__}")
-        n_rings = v.count("n_rings", n_rings, 2)
-        v.choice("profile", profile, GRADING_PROFILES)
-        if (aspect_ratio is None) == (angle is None):
-            raise ValueError("give one of aspect_ratio=(first, last) or angle=(first, last) to grade")
-        name, ends = ("aspect_ratio", aspect_ratio) if angle is None else ("angle", angle)
-        ends = v.positive(name, ends)
-        if ends.shape != (2,):
-            raise ValueError(f"{name} must be two values (first, last), got {ends.tolist()!r}")
-        count = n_rings if name == "aspect_ratio" else n_rings - 1 + (options.get("support", "fixed") == "fixed")
-        spaced = np.linspace if profile == "linear" else np.geomspace
-        values = spaced(ends[0], ends[1], count)
-        if name == "aspect_ratio":
-            rings = [Ring(R=float(q) * ring.r, r=ring.r, material=ring.material, angle=ring.angle, thin=ring.thin)
-                     for q in values]  # fmt: skip
-            return cls.from_rings(rings, model=model, **options)
-        return cls.from_rings([ring] * n_rings, angles=values, model=model, **options)
-
-    @classmethod
-    def alternating(cls, ring_a: Ring, ring_b: Ring, n_rings: int, angles=None, model="dual-spring", **options):
-        """A chain of two kinds of ring in turn, ``ring_a`` at the impact end.
-
-        Parameters
-        ----------
-        ring_a, ring_b : Ring
-        n_rings : int
-        angles : float or array_like, optional
-            As in :meth:`from_rings`; e.g. ``[pi/2, pi/3] * k`` for alternating angles.
-        model : {"dual-spring", "power-law"}
-        **options
-            Passed to :meth:`from_rings`.
-
-        Examples
-        --------
-        >>> chain = Chain.alternating(Ring.from_aspect_ratio(9.0), Ring.from_aspect_ratio(5.5), 6)
-        >>> len(set(np.round(chain.m, 6)))  # two ring masses
-        2
-        """
-        n_rings = v.count("n_rings", n_rings, 2)
-        return cls.from_rings([ring_a, ring_b] * (n_rings // 2) + [ring_a] * (n_rings % 2), angles, model, **options)
-
-    @classmethod
-    def joined(cls, chain_a: Chain, chain_b: Chain, *, junction=None) -> Chain:
-        """``chain_a`` (at the impact end) hung from ``chain_b``: one chain of both chains' rings.
-
-        Parameters
-        ----------
-        chain_a, chain_b : Chain
-            Chains of the same model.  The joined chain takes ``chain_b``'s support.
-        junction : dict, optional
-            The contact between the last ring of ``chain_a`` and the first of ``chain_b``: K (and
-            for the power-law model n), gamma and the centre distance a, SI units.  Default:
-            ``chain_a``'s support contact (its last contact if its far end is free), as if
-            ``chain_a`` hung from ``chain_b`` as from its support, and a the mean of the two
-            chains' spacings at the junction ((R1 - r1) + (R2 - r2) for chains of rings).
-
-        Examples
-        --------
-        >>> stiff = Chain.power_law(4, K=2e7, n=1.5, m=0.01, a=0.04)
-        >>> soft = Chain.power_law(4, K=2e6, n=1.5, m=0.01, a=0.04)
-        >>> Chain.joined(stiff, soft).K.tolist()  # contacts: 3 of a, the junction, 3 of b, b's support
-        [20000000.0, 20000000.0, 20000000.0, 20000000.0, 2000000.0, 2000000.0, 2000000.0, 2000000.0]
-        """
-        for name, chain in (("chain_a", chain_a), ("chain_b", chain_b)):
-            if not isinstance(chain, Chain):
-                raise TypeError(f"{name} must be a Chain, got {type(chain).__name__}")
-        if chain_a.model != chain_b.model:
-            raise ValueError(f"both chains must be of one model, got {chain_a.model!r} and {chain_b.model!r}")
-        junction = dict(junction or {})
-        unknown = set(junction) - {"K", "n", "gamma", "a"}
-        if unknown:
-            raise ValueError(f"junction takes K, n, gamma and a, got {sorted(unknown)}")
-        joint = {name: float(chain_a.profile(name)[-1]) for name in ("K", "n", "gamma")}
-        joint["a"] = 0.5 * (float(chain_a.profile("a")[-1]) + float(chain_b.profile("a")[0]))
-        joint |= {name: float(value) for name, value in junction.items()}
-
-        def contacts(name):
-            a_part = chain_a.profile(name)[: chain_a.n_rings - 1]
-            return np.concatenate([a_part, [joint[name]], chain_b.profile(name)])
-
-        def per_ring(name):
-            return np.concatenate([chain_a.profile(name), chain_b.profile(name)])
-
-        dual = chain_a.model == "dual-spring"
-        return cls(
-            chain_a.model, chain_a.n_rings + chain_b.n_rings, contacts("K"), contacts("n"), per_ring("m"),
-            np.concatenate([chain_a.profile("a"), [joint["a"]], chain_b.profile("a")]), gamma=contacts("gamma"),
-            K_b=per_ring("K_b") if dual else None, gamma_b=per_ring("gamma_b") if dual else 0.0,
-            m_gravity=per_ring("m_gravity"), support=chain_b.support, striker_mass=chain_a.striker_mass,
-        )  # fmt: skip
+    # Chains built from others (their docstrings in :mod:`.chain_kinds`).
+    graded = classmethod(graded_chain)
+    alternating = classmethod(alternating_chain)
+    joined = classmethod(joined_chain)
 
     # -- derived quantities -----------------------------------------------------------------
     @property
@@ -675,6 +570,11 @@ class Chain:
             raise ValueError(f"the {self.model} chain has no {name}")
         length = {"ring": self.n_rings, "contact": self.n_contacts, "pair": self.n_rings - 1}[_PROFILES[name]]
         return np.broadcast_to(np.asarray(value, dtype=float), (length,))
+
+    @property
+    def striker_inertia(self) -> float:
+        """Inertial mass of ring 0, the striker, kg: ``striker_mass``, or ``m`` of ring 0 (the paper's convention)."""
+        return float(self.profile("m")[0]) if self.striker_mass is None else self.striker_mass
 
     @property
     def damped(self) -> bool:

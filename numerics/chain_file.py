@@ -2,7 +2,7 @@ r"""Chain descriptions in TOML: the rings of a chain that changes along its leng
 
 A file lists segments from the impact end (ring 0) up to the support::
 
-    support = "fixed"          # optional: "fixed" (default) or "free"
+    support = "fixed"          # optional: "fixed" (default) or "free" (no gravity: --no-gravity)
 
     [[segment]]
     rings = 10                 # ring count
@@ -21,7 +21,8 @@ R, r and angle are one number, or a pair [first, last] graded over the segment's
 Each ring's angle is the contact angle to the ring above it (the last ring's, to the
 support); see :meth:`ringchain.numerics.Chain.from_rings`.  Angles are in degrees, as on
 the command line; lengths in m.  A malformed file is refused with a message naming the
-segment (counted from 1) and the field.
+segment (counted from 1) and the field.  The file is UTF-8, with or without a byte-order mark, or
+UTF-16 (:func:`~ringchain.numerics.traces.read_text`).
 
 A sweep varies one field of one segment (:func:`vary`): ``"2.R"`` replaces segment 2's R,
 ``"2.R.last"`` only the last end of its grading (the grading parameter), ``"2.R.first"`` the first.
@@ -38,6 +39,7 @@ from ringchain.theory import Ring, get_material
 from ringchain.theory import _validate as v
 
 from .chain import GRADING_PROFILES, SUPPORTS, Chain
+from .traces import read_text
 
 try:  # Python 3.11+
     import tomllib
@@ -84,17 +86,21 @@ class Segment:
         return spaced(value[0], value[1], self.rings)
 
     def ring_list(self) -> list[Ring]:
+        if all(np.ndim(getattr(self, name)) == 0 for name in _GRADED):  # rings of one kind: one (immutable) Ring
+            return [Ring(R=self.R, r=self.r, material=self.material, angle=math.radians(self.angle))] * self.rings
         R, r, angle = (self.values(name) for name in _GRADED)
         return [Ring(R=R[i], r=r[i], material=self.material, angle=math.radians(angle[i])) for i in range(self.rings)]
 
 
 @dataclass(frozen=True)
 class ChainFile:
-    """A parsed chain description: its segments, impact end first, and the far end's support."""
+    """A parsed chain description: its segments, impact end first, and the far end's support; ``path``: the file
+    it was read from (None for text)."""
 
     segments: tuple
     support: str = "fixed"
     source: str = "chain description"
+    path: str | None = dataclasses.field(default=None, compare=False)
 
     @property
     def n_rings(self) -> int:
@@ -110,8 +116,12 @@ class ChainFile:
                 raise ValueError(f"{self.source}: segment {k}: {error}") from None
         return rings
 
-    def chain(self, model: str = "dual-spring", m_eff_ratio: float = 1.0) -> Chain:
+    def chain(self, model: str = "dual-spring", m_eff_ratio: float = 1.0, *, striker_mass=None) -> Chain:
         """The :class:`~ringchain.numerics.Chain` of these rings (:meth:`Chain.from_rings`).
+
+        ``model``, ``m_eff_ratio`` and ``striker_mass`` (``"m_eff"``, the default, ``"m0"``: ring 0's
+        own mass, or kg) are the model's choices, not the rings': they are arguments, not fields of
+        the file.
 
         Examples
         --------
@@ -138,7 +148,8 @@ class ChainFile:
                 raise ValueError(f"{self.source}: segment {k}, field 'R': R/r = {ring.aspect_ratio:.4g} (ring {i}) is "
                                  "below 3: the rings cannot form a chain")  # fmt: skip
         try:
-            return Chain.from_rings(rings, model=model, m_eff_ratio=m_eff_ratio, support=self.support)
+            return Chain.from_rings(rings, model=model, m_eff_ratio=m_eff_ratio, support=self.support,
+                                    striker_mass=striker_mass)  # fmt: skip
         except ValueError as error:
             raise ValueError(f"{self.source}: {error}") from None
 
@@ -212,9 +223,9 @@ def parse_chain(text: str, source: str = "chain description") -> ChainFile:
 
 
 def read_chain_file(path) -> ChainFile:
-    """A :class:`ChainFile` read from a TOML file (see the module)."""
-    with open(path, encoding="utf-8") as handle:
-        return parse_chain(handle.read(), source=f"chain file {path}")
+    """A :class:`ChainFile` read from a TOML file (see the module): UTF-8, with or without a byte-order mark, or
+    UTF-16 with one (:func:`~ringchain.numerics.traces.read_text`); another encoding is refused naming the file."""
+    return dataclasses.replace(parse_chain(read_text(path), source=f"chain file {path}"), path=str(path))
 
 
 def vary(description: ChainFile, spec: str, value: float) -> ChainFile:

@@ -9,23 +9,30 @@
 - ``ringchain simulate --chain FILE`` / ``ringchain sweep --chain FILE --vary 2.R.last 0.01:0.02:5`` -- a
   chain that changes along its length, described segment by segment in TOML (:mod:`.chain_file`);
 - ``ringchain cache info`` / ``ringchain cache clear`` -- the disk cache of generated code.
-- ``ringchain fit static|speed|traces FILE`` -- parameters from measurements (:mod:`.fit_cli`).
+- ``ringchain fit static|speed|traces FILE`` -- parameters from measurements (:mod:`.fit_cli`);
+- ``ringchain ensemble --count 1000 --spread R=0.05`` -- disordered chains, read at every ring (:mod:`.ensemble_cli`);
+- ``ringchain sheet --pattern square --size 40x40`` -- an impact on a sheet of rings (:mod:`.sheet_cli`).
 
 Inputs are SI (m, m/s, N) except contact angles, given in degrees.  Every input and every
 output path is checked before any work (:mod:`ringchain.numerics._cli_options`); a bad one
 gives a one-line error naming the option, in the units it was given, and exit code 2;
-success exits 0.  This module only parses, calls and prints: one function per subcommand.
+success exits 0, a result beyond its model's validity 1, Ctrl-C 130 (one line), a reader that
+closed the pipe 141 (quietly).  This module only parses, calls and prints: one function per
+subcommand.
 """
 
 from __future__ import annotations
 
 import argparse
 import math
+import os
 import sys
 import warnings
 from pathlib import Path
 
 from . import _cli_options as opt
+from . import sheet_cli
+from .ensemble_cli import add_parser as add_ensemble_parser
 from .paper import PAPER_DROP_HEIGHT, PAPER_FIGURES, STIFFNESS_SOURCES
 
 __all__ = ["main", "build_parser"]
@@ -85,14 +92,16 @@ def _simulate(args) -> int:
 
     if args.plot is not None and Path(args.plot).resolve() == Path(args.out).resolve():
         raise ValueError(f"arguments --out and --plot: both name {args.out}; give two files")
+    opt.check_outputs([args.chain and args.chain.path], [("--out", args.out), ("--plot", args.plot)])
     chain, described = opt.simulated_chain(args)
     impact = {"drop_height": args.drop_height} if args.drop_height is not None else {
         "impact_velocity": args.impact_velocity}  # fmt: skip
     solver = {
         name: value for name, value in (("method", args.method), ("n_samples", args.samples)) if value is not None
     }
-    run = run_experiment(chain, **impact, sensors=tuple(args.sensors), t_end=args.t_end, out=args.out, plot=args.plot,
-                         **solver)  # fmt: skip
+    with opt.naming_size(args):
+        run = run_experiment(chain, **impact, sensors=tuple(args.sensors), t_end=args.t_end, out=args.out,
+                             plot=args.plot, gravity=args.gravity, **solver)  # fmt: skip
     try:
         lines = run.summary(described)
     except ValueError as exc:
@@ -108,26 +117,16 @@ def _simulate(args) -> int:
 
 # -- ringchain sweep -------------------------------------------------------------------------------
 def _sweep(args) -> int:
-    from .executors import dask_client
     from .sweep import sweep, write_csv
 
+    opt.check_outputs([args.chain and args.chain.path], [("--out", args.out)])
     points = opt.sweep_points(args)
     options = dict(batch_size=args.batch_size, max_workers=args.workers, progress=sys.stderr.isatty(),
-                   t_end=args.t_end)  # fmt: skip
+                   t_end=args.t_end, gravity=args.gravity)  # fmt: skip
     if args.samples is not None:
         options["n_samples"] = args.samples
-    if args.dask:
-        try:
-            client = dask_client(args.dask, args.dask_timeout)
-        except ImportError:
-            raise ValueError("--dask needs the dask extra: pip install 'ringchain[dask]'") from None
-        except (ConnectionError, ValueError) as exc:
-            raise ValueError(f"argument --dask: {opt.one_line(exc)}") from None
-        with client, opt.naming_t_end(args):
-            rows = sweep(points, client.get_executor(), **options)
-    else:
-        with opt.naming_t_end(args):
-            rows = sweep(points, **options)
+    with opt.executor_of(args) as executor, opt.naming_t_end(args), opt.naming_size(args):
+        rows = sweep(points, executor, **options)
     if args.out == "-":
         write_csv(rows, sys.stdout)
     else:
@@ -153,6 +152,9 @@ def _cache_info(args) -> int:
         print("location  none: the disk cache is disabled (RINGCHAIN_CACHE_DIR is set and empty)")
         print(f"key       {info.key}")
         return 0
+    if info.path.exists() and not info.exists:
+        raise ValueError(f"the cache folder {info.path} ({info.origin}) is a file, not a folder: each process derives "
+                         "the theory again; point RINGCHAIN_CACHE_DIR at a folder")  # fmt: skip
     origin = {"RINGCHAIN_CACHE_DIR": "from RINGCHAIN_CACHE_DIR", "XDG_CACHE_HOME": "from XDG_CACHE_HOME",
               "default": "the default; RINGCHAIN_CACHE_DIR moves it"}[info.origin]  # fmt: skip
     entries = (f"{info.current} for this key, {info.stale} stale (other keys), {info.temporary} temporary files"
@@ -174,8 +176,11 @@ def _cache_clear(args) -> int:
     if directory is None:
         print("nothing to clear: the disk cache is disabled (RINGCHAIN_CACHE_DIR is set and empty)")
         return 0
+    if directory.exists() and not directory.is_dir():
+        raise ValueError(f"the cache folder {directory} is a file, not a folder: nothing to clear (the file is left "
+                         "as it is)")  # fmt: skip
     removed, nbytes = clear_cache()
-    print(f"removed {removed} files ({_size(nbytes)}) from {directory}")
+    print(f"removed {removed} {'file' if removed == 1 else 'files'} ({_size(nbytes)}) from {directory}")
     return 0
 
 
@@ -202,7 +207,9 @@ def build_parser() -> argparse.ArgumentParser:
 
     parser = _Parser(prog="ringchain", description=__doc__.split("\n\n")[0], allow_abbrev=False)
     parser.add_argument("--version", action="version", version=f"ringchain {_version()}")
-    sub = parser.add_subparsers(dest="command", required=True, metavar="{paper,ring,simulate,sweep,cache,fit}")
+    sub = parser.add_subparsers(
+        dest="command", required=True, metavar="{paper,ring,simulate,sweep,ensemble,cache,fit,sheet}"
+    )
 
     p = sub.add_parser("paper", help="derive the theory, print the paper's key numbers, write the figures",
                        allow_abbrev=False)  # fmt: skip
@@ -225,6 +232,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("simulate", help="one drop or impact; sensor traces to CSV", allow_abbrev=False)
     opt.geometry_options(p)
+    opt.striker_option(p)
     opt.impact_options(p, required=True)
     opt.chain_options(p)
     p.add_argument("--method", choices=METHODS, default=None,
@@ -239,15 +247,10 @@ def build_parser() -> argparse.ArgumentParser:
                        description="Values: numbers, or start:stop:count for evenly spaced ones (start > stop "
                                    f"counts down; at most {opt.MAX_GRID_POINTS} points in all).")  # fmt: skip
     opt.geometry_options(p, many=True)
+    opt.striker_option(p, many=True)
     opt.impact_options(p, many=True)
     opt.chain_options(p, many=True)
-    p.add_argument("--batch-size", type=opt.Checked(int, opt.batch_size), default=64,
-                   help="runs of one chain integrated together (default 64)")  # fmt: skip
-    p.add_argument("--workers", type=opt.integer("workers", 0), default=None,
-                   help="local worker processes (default: CPUs; 0: run in this process)")  # fmt: skip
-    p.add_argument("--dask", metavar="ADDRESS", help="run on a Dask cluster, e.g. tcp://scheduler:8786")
-    p.add_argument("--dask-timeout", type=opt.DURATION, default=5.0, metavar="S",
-                   help="seconds to wait for the Dask scheduler to answer (default 5)")  # fmt: skip
+    opt.executor_options(p, default_batch=64)
     p.add_argument("--out", type=opt.output_csv, default="-", metavar="CSV",
                    help="output CSV (default: standard output)")  # fmt: skip
     opt.chain_file_options(p, sweep=True)
@@ -262,8 +265,14 @@ def build_parser() -> argparse.ArgumentParser:
     from .fit_cli import add_parser as add_fit_parser
 
     add_fit_parser(sub, geometry=opt.geometry_options)  # sets its own func (fit_cli.run)
+    add_ensemble_parser(sub)  # ringchain ensemble: sets its own func (ensemble_cli.run)
+    sheet_cli.add_parser(sub)  # ringchain sheet: sets its own func (sheet_cli.run)
     return parser
 
+
+#: Exit codes of a command its reader stopped (128 + SIGPIPE, as a shell reports ``yes | head``) and of one
+#: interrupted by Ctrl-C (128 + SIGINT).
+BROKEN_PIPE, INTERRUPTED = 141, 130
 
 #: Floating-point trouble in NumPy (the theory's generated code, the solvers) stops the command with a
 #: message instead of printing numbers made of inf and nan.
@@ -277,11 +286,17 @@ def main(argv=None) -> int:
         args = parser.parse_args(argv)
     except SystemExit as exc:  # --help (0) or a usage error (2), already printed
         return int(exc.code or 0)
-    command = " ".join(filter(None, (args.command, getattr(args, "action", None))))
+    command = " ".join(filter(None, (args.command, getattr(args, "action", None), getattr(args, "fit_command", None))))
     try:
         with warnings.catch_warnings():
             warnings.filterwarnings("error", message=_FLOATING_POINT, category=RuntimeWarning)
             return args.func(args)
+    except BrokenPipeError:  # the reader of the standard output stopped (| head): end quietly, as cat does
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())  # the interpreter's last flush must not fail
+        return BROKEN_PIPE
+    except KeyboardInterrupt:
+        print(f"\nringchain {command}: interrupted", file=sys.stderr)
+        return INTERRUPTED
     except (ValueError, TypeError, OSError, ArithmeticError, RuntimeWarning) as exc:
         message = opt.one_line(exc)
     except MemoryError:

@@ -4,7 +4,9 @@
 - :func:`default_executor` is the pool :func:`~ringchain.numerics.sweep.sweep` uses when
   it is given no executor: local processes started with the "spawn" method;
 - :func:`dask_client` connects to a Dask scheduler after checking, with a short timeout,
-  that one answers at the address (``ringchain sweep --dask ADDRESS``).
+  that one answers at the address (``ringchain sweep --dask ADDRESS``);
+- :func:`run_tasks` submits the tasks of a job (a sweep, an ensemble) to any executor and
+  gives their results back in task order, with a progress bar.
 
 Worker processes and ``if __name__ == "__main__":``.  A "spawn" worker is a fresh
 interpreter: it imports the module that started the pool, and for a script run as
@@ -35,6 +37,7 @@ __all__ = [
     "InlineExecutor",
     "default_executor",
     "check_main_guard",
+    "run_tasks",
     "dask_client",
     "check_dask_scheduler",
     "DASK_TIMEOUT",
@@ -60,7 +63,7 @@ class InlineExecutor(cf.Executor):
         return future
 
 
-def default_executor(n_tasks: int, max_workers: int | None) -> cf.Executor:
+def default_executor(n_tasks: int, max_workers: int | None, what: str = "sweep()") -> cf.Executor:
     """The executor of a sweep given none: ``max_workers`` local "spawn" processes, or inline for 0.
 
     Parameters
@@ -69,6 +72,8 @@ def default_executor(n_tasks: int, max_workers: int | None) -> cf.Executor:
         Tasks to run (no more processes than tasks are started).
     max_workers : int or None
         Worker processes; None: the number of CPUs; 0: :class:`InlineExecutor`.
+    what : str, optional
+        The call that starts the workers, as the guard's message names it.
 
     Raises
     ------
@@ -85,10 +90,19 @@ def default_executor(n_tasks: int, max_workers: int | None) -> cf.Executor:
                          f"got {max_workers!r}")  # fmt: skip
     if max_workers == 0:
         return InlineExecutor()
-    check_main_guard("sweep()")
-    workers = int(max_workers) if max_workers else os.cpu_count() or 1
-    # "spawn": a fresh interpreter per worker, the same on every platform and safe with threads.
-    return cf.ProcessPoolExecutor(max(1, min(workers, n_tasks)), mp_context=multiprocessing.get_context("spawn"))
+    check_main_guard(what)
+    cpus = os.cpu_count() or 1
+    workers = max(1, min(int(max_workers) if max_workers else cpus, n_tasks))
+    # "spawn": a fresh interpreter per worker, the same on every platform and safe with threads.  Each
+    # worker's compiled kernels get their share of the cores: Numba would start one thread per core in
+    # every worker, workers x cores threads on the machine.
+    return cf.ProcessPoolExecutor(workers, mp_context=multiprocessing.get_context("spawn"),
+                                  initializer=_share_threads, initargs=(max(1, cpus // workers),))  # fmt: skip
+
+
+def _share_threads(threads: int) -> None:
+    """Worker initializer: Numba's thread count in this process (read when Numba is first imported here)."""
+    os.environ.setdefault("NUMBA_NUM_THREADS", str(threads))  # a count the user set is kept
 
 
 def check_main_guard(what: str = "this call") -> None:
@@ -143,6 +157,77 @@ def _guarded(body, line: int) -> bool:
         children = [getattr(node, field, None) for field in ("body", "orelse", "finalbody", "handlers", "cases")]
         return any(isinstance(child, list) and _guarded(child, line) for child in children)
     return False
+
+
+def run_tasks(
+    function,
+    tasks,
+    executor: cf.Executor | None = None,
+    *,
+    options=None,
+    max_workers: int | None = None,
+    progress: bool = False,
+    sizes=None,
+    name: str = "sweep",
+    unit: str = "task",
+) -> list:
+    """``function(*task, **options)`` for each task, run through ``executor``; the results in task order.
+
+    Parameters
+    ----------
+    function : callable
+        A module-level function (worker processes and Dask pickle it by name).
+    tasks : sequence of tuple
+        The positional arguments of each call.
+    executor : concurrent.futures.Executor, optional
+        Where the calls run (any Executor: a Dask ``Client(...).get_executor()``, say); default
+        :func:`default_executor` with ``max_workers``, shut down at the end.
+    options : dict, optional
+        Keyword arguments of every call.
+    max_workers : int, optional
+        Processes of the default executor (None: the CPUs; 0: this process).
+    progress : bool, optional
+        Show a tqdm progress bar on stderr, advanced by ``sizes[k]`` when task k ends.
+    sizes : sequence of int, optional
+        What each task counts for on the bar (default 1 each).
+    name, unit : str, optional
+        The job's name (the bar's label, messages) and the bar's unit.
+
+    Returns
+    -------
+    list
+        The result of each task, in the order of ``tasks`` whatever order they finish in.
+
+    Raises
+    ------
+    RuntimeError
+        If a worker died (a :class:`concurrent.futures.BrokenExecutor`), saying how to see why; an
+        exception raised by a task is raised here as it was.
+    """
+    from tqdm import tqdm
+
+    tasks = list(tasks)
+    sizes = [1] * len(tasks) if sizes is None else list(sizes)
+    own = executor is None
+    if own:
+        executor = default_executor(len(tasks), max_workers, f"{name}()")
+    results: list = [None] * len(tasks)
+    try:
+        futures = {executor.submit(function, *task, **(options or {})): k for k, task in enumerate(tasks)}
+        with tqdm(total=sum(sizes), disable=not progress, unit=unit, desc=name) as bar:
+            for future in cf.as_completed(futures):
+                k = futures[future]
+                results[k] = future.result()
+                bar.update(sizes[k])
+    except cf.BrokenExecutor as exc:
+        raise RuntimeError(
+            f"a worker of the {name} died ({exc}); a process may have run out of memory. "
+            "Run with max_workers=0 to see the error in this process."
+        ) from exc
+    finally:
+        if own:
+            executor.shutdown(cancel_futures=True)
+    return results
 
 
 # -- Dask -------------------------------------------------------------------------------------------

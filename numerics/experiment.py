@@ -20,13 +20,19 @@ import numpy as np
 from ringchain.theory import STANDARD_GRAVITY, paper_data
 from ringchain.theory import _validate as v
 
+from . import signals
 from .chain import Chain, sensor_pair
 from .integrate import simulate
 from .plots import plot_sensor_traces
 from .results import Simulation
 from .traces import write_traces
 
-__all__ = ["Experiment", "run_experiment", "default_t_end"]
+__all__ = ["Experiment", "run_experiment", "default_t_end", "MAX_DOUBLINGS"]
+
+#: Times a default duration (:func:`default_t_end`) is doubled while the leading pulse has not passed the far
+#: sensor by the end (:func:`run_experiment`, :func:`ringchain.numerics.sweep.run_points`): the estimate is a
+#: long-wave one, and a chain of two rings, or of rings metres across (R typed in mm), outruns it.
+MAX_DOUBLINGS = 4
 
 
 def default_t_end(chain: Chain, speeds, sensors) -> float:
@@ -36,7 +42,8 @@ def default_t_end(chain: Chain, speeds, sensors) -> float:
     carry its front 1.5 times the distance to ring ``sensors[1]`` plus half a wave width
     (:func:`ringchain.theory.solitary_wave_width`), at a force estimate below the actual
     peak (so the estimated speed is low and the duration long): a quarter of the peak
-    force of a two-ring collision at the smallest impact speed, and at least the weight
+    force of the striker's collision with ring 1 at the smallest impact speed (the striker of
+    :class:`~ringchain.numerics.Chain`, of mass ``striker_inertia``), and at least the weight
     of one ring (the gravity prestress keeps weak waves fast).  For the dual-spring
     chain the power law is the one fitted to its contact and bending springs in series
     (Eq. 4).  :func:`run_points` doubles the duration if a pulse is still passing the far
@@ -62,8 +69,8 @@ def default_t_end(chain: Chain, speeds, sensors) -> float:
     else:
         K, n = chain.K, chain.n
     speed = float(np.min(speeds))
-    # Two rings of mass m colliding at relative speed v store m v^2/4 at the peak of K delta^n.
-    delta = ((n + 1.0) * 0.25 * chain.m * speed**2 / K) ** (1.0 / (n + 1.0))
+    # The striker m_s hitting ring 1 (m) at v stores mu v^2/2 at the peak of K delta^n, mu = m_s m/(m_s + m).
+    delta = ((n + 1.0) * 0.5 * _reduced_mass(chain, chain.m) * speed**2 / K) ** (1.0 / (n + 1.0))
     force = max(0.25 * K * delta**n, chain.m_gravity * STANDARD_GRAVITY)
     V = float(solitary_wave_speed(force, K=K, n=n, a=chain.a, m=chain.m))
     width = min(float(solitary_wave_width(n=n, a=chain.a)), chain.n_rings * chain.a)
@@ -82,11 +89,17 @@ def _varying_t_end(chain: Chain, speeds, far: int) -> float:
     else:
         K, n = chain.profile("K")[pairs], chain.profile("n")[pairs]
     m, a, speed = float(np.max(chain.m)), chain.profile("a"), float(np.min(speeds))
-    delta = ((n + 1.0) * 0.25 * m * speed**2 / K) ** (1.0 / (n + 1.0))
+    delta = ((n + 1.0) * 0.5 * _reduced_mass(chain, m) * speed**2 / K) ** (1.0 / (n + 1.0))
     force = np.maximum(0.25 * K * delta**n, float(np.min(chain.m_gravity)) * STANDARD_GRAVITY)
     V = solitary_wave_speed(force, K=K, n=n, a=a, m=m)
     width = min(float(np.max(solitary_wave_width(n=n, a=a))), float(np.sum(a)))
     return float(1.5 * np.sum(a[:far] / V[:far]) + 0.5 * width / np.min(V))
+
+
+def _reduced_mass(chain: Chain, m: float) -> float:
+    """Reduced mass of the striker (ring 0, :attr:`Chain.striker_inertia`) and a ring of mass ``m``, kg."""
+    striker = chain.striker_inertia
+    return striker * m / (striker + m)
 
 
 @dataclass(frozen=True, eq=False)
@@ -190,7 +203,8 @@ def run_experiment(chain: Chain, *, drop_height=None, impact_velocity=None, sens
     sensors : (int, int), optional
         Near and far sensor rings (default the paper's 6 and 12).
     t_end : float, optional
-        Duration, s; default :func:`default_t_end`.
+        Duration, s; default :func:`default_t_end`, doubled (up to :data:`MAX_DOUBLINGS` times) while the
+        leading pulse has not passed the far sensor by the end.
     out : str or path, optional
         Write the sensor traces there (:func:`~ringchain.numerics.write_traces`), before any reading.
     plot : str or path, optional
@@ -222,16 +236,31 @@ def run_experiment(chain: Chain, *, drop_height=None, impact_velocity=None, sens
     impact = {"drop_height": value} if drop_height is not None else {"impact_velocity": value}
     g = options.get("g", STANDARD_GRAVITY)
     speed = float(impact_speed_of(impact, g))
+    retries = MAX_DOUBLINGS if t_end is None else 0
     if t_end is None:
         t_end = default_t_end(chain, [speed], sensors)
     rings = options.pop("rings", [*sensors, chain.n_rings - 1])
-    sim = simulate(chain, t_end, rings=rings, **impact, **options)
+    while True:
+        sim = simulate(chain, t_end, rings=rings, **impact, **options)
+        if retries == 0 or _passed(sim, sensors[1]):
+            break
+        retries -= 1
+        t_end *= 2.0
     if out is not None:
         write_traces(out, sim, sensors)
     if plot is not None:
         plot_sensor_traces(plot, sim, sensors, f"{chain.model}, {chain.n_rings} rings, impact {speed:.3g} m/s")
     return Experiment(chain=chain, sensors=sensors, impact_velocity=speed, drop_height=impact.get("drop_height"),
                       t_end=float(t_end), simulation=sim)  # fmt: skip
+
+
+def _passed(sim: Simulation, ring: int) -> bool:
+    """Whether the leading pulse has passed the sensor of ``ring`` (fallen to half its peak) within the run."""
+    try:
+        signals.leading_pulse(sim.t, sim.sensor(ring))
+    except (signals.TruncatedPulseError, signals.NoPulseError):
+        return False
+    return True
 
 
 def impact_speed_of(impact: dict, g: float) -> float:

@@ -18,6 +18,7 @@ unconverged answer.  The least-squares helpers below (:func:`minimize`,
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 
@@ -29,20 +30,29 @@ from .traces import MIN_SAMPLES
 __all__ = [
     "fit_static",
     "fit_speed_amplitude",
+    "fit_speed_rings",
     "FitResult",
     "FitError",
     "STATIC_MODELS",
     "ANALYTIC_RESOLUTION",
+    "MINIMUM_STEP",
 ]
 
 #: The same for the static and speed fits, whose models are closed forms differentiated by
 #: lmfit at steps of sqrt(machine epsilon) (Jacobian accurate to ~1e-7).
 ANALYTIC_RESOLUTION = 1e-5
 
+#: A static or speed fit has converged when one more Gauss-Newton step would move no free
+#: parameter by more than this many standard errors (:func:`check_minimum`).  A stop within
+#: ftol = 1e-8 of the least sum of squares leaves about sqrt(1e-8 dof) of them (7e-4 for 50
+#: samples, 3e-3 for 1000); one stopped early by an absolute threshold (forces in uN, before
+#: minimize scaled the problem: 2.75 times the least chi-square) left 3.8.
+MINIMUM_STEP = 0.05
+
 _UNITS = {
     "m": "kg", "gamma": "N s/m", "K": "N/m^n", "n": "", "K_b": "N/m", "gamma_b": "N s/m", "t0": "s", "v0": "m/s",
     "h0": "m", "offset": "N", "delta0": "m", "K_c": "N/m^1.5", "m_eff_ratio": "", "m_gravity": "kg", "a": "m",
-    "m0": "kg",
+    "m0": "kg", "striker_mass": "kg",
 }  # fmt: skip
 
 
@@ -222,12 +232,13 @@ def unresolved_parameters(out, names, resolution):
 
 
 def result_from_lmfit(kind, out, names, residual, *, spread, resolution=None, unresolved=None, covariance=None,
-                       fixed=None, **more) -> FitResult:  # fmt: skip
+                       fixed=None, data_scale=None, **more) -> FitResult:  # fmt: skip
     """A FitResult from an lmfit MinimizerResult.
 
     Raises FitError unless it converged to a point that explains some of the data: a
     residual sum of squares below ``spread``, that of the data about their mean (a start so
-    far off that the gradient vanishes can stop the least squares "successfully" anywhere).
+    far off that the gradient vanishes can stop the least squares "successfully" anywhere);
+    and, given the ``data_scale`` of an exact Jacobian's fit, at the minimum (:func:`check_minimum`).
     Parameters the data do not determine (``unresolved``, or :func:`unresolved_parameters` at
     ``resolution``) get an infinite standard error and a note; ``covariance`` replaces lmfit's.
     """
@@ -240,6 +251,8 @@ def result_from_lmfit(kind, out, names, residual, *, spread, resolution=None, un
         raise FitError(f"the {kind} fit stopped ({out.message}) at a point that explains none of the data (sum of "
                        f"squared residuals {chisqr:.4g} >= {spread:.4g} about the mean): {values}; give better "
                        "starting values")  # fmt: skip
+    if data_scale is not None:
+        check_minimum(kind, out, names, data_scale)
     k = len(names)
     n = int(np.size(residual))
     dof = max(n - k, 1)
@@ -279,14 +292,84 @@ def result_from_lmfit(kind, out, names, residual, *, spread, resolution=None, un
     )  # fmt: skip
 
 
-def minimize(residual, params, jac=None, **options):
-    """lmfit least squares (trust-region reflective, Jacobian-scaled variables)."""
-    from lmfit import Minimizer
+def minimize(residual, params, jac=None, *, scales=None, residual_scale=1.0, **options):
+    """lmfit least squares (trust-region reflective, Jacobian-scaled variables), solved in units of order one.
 
+    Each free parameter is divided by its scale (``scales[name]``; default its starting
+    magnitude, else the width of its bounds, else 1) and the residual by ``residual_scale``
+    (the data's), so that the solver's absolute thresholds mean the same in any units: its
+    gradient tolerance (forces in uN stopped it early), and the 1e-10 that SciPy keeps a
+    start away from a bound (it moved a mass of 8e-12 kg, bounded below by 0, to 1e-10).
+    The result is returned in the caller's units: values, standard errors, covariance,
+    Jacobian, residual and chi-square.
+    """
+    from lmfit import Minimizer, Parameters
+
+    free = [name for name, p in params.items() if p.vary]
+    scale = {name: _scale_of(params[name], (scales or {}).get(name)) for name in free}
+    inner = Parameters()
+    for name in free:
+        p, s = params[name], scale[name]
+        inner.add(name, value=p.value / s, min=p.min / s, max=p.max / s)
+    current = params.copy()  # the caller's parameters, set to each trial point in turn
+
+    def physical(q):
+        for name in free:
+            current[name].value = q[name].value * scale[name]
+        return current
+
+    S = np.array([scale[name] for name in free])
     kws = {"x_scale": "jac", **options}
     if jac is not None:
-        kws["jac"] = jac
-    return Minimizer(residual, params, scale_covar=True).minimize(method="least_squares", **kws)
+        kws["jac"] = lambda q: np.asarray(jac(physical(q))) * (S / residual_scale)
+    # Exact data fitted exactly: lmfit divides zero covariances by zero standard errors for its correlations.
+    with np.errstate(invalid="ignore", divide="ignore"):
+        out = Minimizer(lambda q: np.asarray(residual(physical(q))) / residual_scale, inner, scale_covar=True).minimize(
+            method="least_squares", **kws
+        )
+    found = params.copy()
+    for name in free:
+        q = out.params[name]
+        found[name].value = q.value * scale[name]
+        found[name].stderr = None if q.stderr is None else q.stderr * scale[name]
+        found[name].correl = q.correl
+    out.params = found
+    if out.covar is not None:
+        out.covar = out.covar * np.outer(S, S)
+    if getattr(out, "jac", None) is not None:
+        out.jac = np.asarray(out.jac) * (residual_scale / S)
+    out.residual = np.asarray(out.residual) * residual_scale
+    out.chisqr, out.redchi = out.chisqr * residual_scale**2, out.redchi * residual_scale**2
+    return out
+
+
+def _scale_of(param, given) -> float:
+    """The scale of a free parameter in :func:`minimize`."""
+    for scale in (given, abs(param.value), param.max - param.min):
+        if scale is not None and math.isfinite(scale) and scale > 0:
+            return float(scale)
+    return 1.0
+
+
+def check_minimum(kind, out, names, data_scale):
+    """Raise FitError if the least squares stopped short of the minimum: one Gauss-Newton step from the
+    result (the solve of J dx = -r) would move a free parameter that is not at a bound by more than
+    :data:`MINIMUM_STEP` of its standard error.  Skipped when the data are fitted to within
+    1e-6 of ``data_scale`` rms, better than any measurement: noise-free data, whose standard errors
+    are the solver's own tolerance (xtol, 1e-8 relative)."""
+    jac, residual, covar = getattr(out, "jac", None), np.asarray(out.residual), out.covar
+    if jac is None or covar is None or np.sqrt(np.mean(residual**2)) < 1e-6 * data_scale:
+        return
+    step = np.linalg.lstsq(np.asarray(jac), -residual, rcond=None)[0]
+    sd = np.sqrt(np.clip(np.diag(covar), 0.0, None))
+    for name, dx, sigma in zip(names, step, sd, strict=True):
+        p = out.params[name]
+        at_bound = any(math.isfinite(b) and abs(p.value - b) <= 1e-9 * max(abs(b), abs(p.value))
+                       for b in (p.min, p.max))  # fmt: skip
+        if not at_bound and sigma > 0 and abs(dx) > MINIMUM_STEP * sigma:
+            raise FitError(f"the {kind} fit stopped short of the minimum ({out.message}): one more step moves {name} "
+                           f"by {abs(dx) / sigma:.3g} standard errors, from {p.value:.6g}; give better starting values "
+                           "or allow more evaluations")  # fmt: skip
 
 
 def as_data(name, value, unit, minimum=MIN_SAMPLES):
@@ -397,6 +480,10 @@ def fit_static(displacement, force, model="power-law", *, offset=False, start=No
     F = as_data("force", force, "N")
     if delta.shape != F.shape:
         raise ValueError(f"displacement and force must have the same length, got {delta.size} and {F.size}")
+    for name, array, unit in (("displacement", delta, "m"), ("force", F, "N")):
+        if np.ptp(array) == 0:
+            raise ValueError(f"{name} takes one value, {array[0]:g} {unit}, at every sample: a static test needs a "
+                             "range of loads")  # fmt: skip
     guess = _static_start(delta, F, model)
     guess.update(start or {})
     params = lmfit.Parameters()
@@ -417,15 +504,17 @@ def fit_static(displacement, force, model="power-law", *, offset=False, start=No
             return _power_force(shift, p["K"].value, p["n"].value)
         return _series_force(shift, p["K_c"].value, p["K_b"].value)
 
-    out = minimize(lambda p: model_force(p) - F, params, max_nfev=max_nfev)
+    scale = float(np.max(np.abs(F)))  # the fit is solved in units of the data (minimize)
+    scales = {"delta0": float(np.ptp(delta))}
+    out = minimize(lambda p: model_force(p) - F, params, scales=scales, residual_scale=scale, max_nfev=max_nfev)
     names = list(params)
     spread = float(np.sum(np.square(F - F.mean())))
     return result_from_lmfit(f"static {model}", out, names, model_force(out.params) - F, spread=spread,
-                              resolution=ANALYTIC_RESOLUTION)  # fmt: skip
+                              resolution=ANALYTIC_RESOLUTION, data_scale=scale)  # fmt: skip
 
 
 # -- speed against amplitude -------------------------------------------------------------------------
-def fit_speed_amplitude(F_m, V_s, *, K, n, a, m0, free_n=False, start=1.0, max_nfev=None) -> FitResult:
+def fit_speed_amplitude(F_m, V_s, *, K, n, a, m0, free_n=False, start=None, max_nfev=None) -> FitResult:
     """Fit m_eff/m0 (and n) of Eq. (8) to measured (peak force, wave speed) pairs.
 
     V_s = a sqrt(2/(n+1)) (K^(1/n)/m_eff)^(1/2) F_m^((n-1)/(2n)), m_eff = (m_eff/m0) m0
@@ -435,21 +524,23 @@ def fit_speed_amplitude(F_m, V_s, *, K, n, a, m0, free_n=False, start=1.0, max_n
     ----------
     F_m : array_like
         Peak forces, N (at the near sensor, as the paper reads its Fig. 4); at least 2
-        pairs (3 with ``free_n``).
+        pairs (3 with ``free_n``, and then forces that differ).
     V_s : array_like
         Wave speeds, m/s (time of flight between the sensors).
-    K : float
-        Power-law stiffness, N/m^n (e.g. from :func:`fit_static`); held fixed in N/m^n.
-    n : float
-        Exponent (> 1); the starting value if ``free_n``.
-    a : float
+    K : float or array_like
+        Power-law stiffness, N/m^n (e.g. from :func:`fit_static`); held fixed in N/m^n.  One
+        value, or one per pair (pairs measured on different rings; also ``n``, ``a``, ``m0``).
+    n : float or array_like
+        Exponent (> 1); the starting value if ``free_n`` (then one value).
+    a : float or array_like
         Ring spacing, m (a = 2(R - r)).
-    m0 : float
+    m0 : float or array_like
         Ring mass, kg.
     free_n : bool, optional
         Fit n too.
     start : float, optional
-        Starting m_eff/m0 (default 1).
+        Starting m_eff/m0; default the least-squares value at the starting n (V_s is
+        proportional to (m_eff/m0)^(-1/2), a linear least squares in that power).
     max_nfev : int, optional
         Most residual evaluations (default lmfit's).
 
@@ -457,7 +548,15 @@ def fit_speed_amplitude(F_m, V_s, *, K, n, a, m0, free_n=False, start=1.0, max_n
     -------
     FitResult
         "m_eff_ratio" (and "n").  Eq. (8) depends on K^(1/n)/m_eff only: the fitted ratio
-        is as good as the K it is given.
+        is as good as the K it is given.  ``fixed`` holds K, n, a and m0 where every pair
+        shares them.
+
+    Raises
+    ------
+    FitError
+        If the least squares do not converge, or the ratio comes out above 1 (its whole 95 %
+        interval): the speeds are then slower than rings of their own mass allow, which
+        points to speeds or forces in other units (km/s, kN) or the wrong rings.
 
     Examples
     --------
@@ -476,21 +575,100 @@ def fit_speed_amplitude(F_m, V_s, *, K, n, a, m0, free_n=False, start=1.0, max_n
     V_s = v.positive("V_s", as_data("V_s", V_s, "m/s", least), "m/s")
     if F_m.shape != V_s.shape:
         raise ValueError(f"F_m and V_s must have the same length, got {F_m.size} and {V_s.size}")
-    K = float(v.positive("K", K, "N/m^n"))
-    n = float(v.in_range("n", n, 1.0, np.inf, closed_high=False))
-    a = float(v.positive("a", a, "m"))
-    m0 = float(v.positive("m0", m0, "kg"))
+    chain = {"K": v.positive("K", K, "N/m^n"), "n": v.in_range("n", n, 1.0, np.inf, closed_high=False),
+             "a": v.positive("a", a, "m"), "m0": v.positive("m0", m0, "kg")}  # fmt: skip
+    for name, value in chain.items():
+        if value.ndim > 1 or value.size not in (1, F_m.size):
+            raise ValueError(f"{name} must be one value or one per pair ({F_m.size}), got shape {value.shape}")
+    K, n, a, m0 = (value if value.size > 1 else float(value) for value in chain.values())
+    if free_n and np.ndim(n):
+        if np.ptp(n) > 0:
+            raise ValueError(f"free_n fits one exponent, but the pairs' exponents differ ({np.min(n):.6g} to "
+                             f"{np.max(n):.6g}): fit the pairs of one ring at a time")  # fmt: skip
+        n = float(n[0])
+    if free_n and np.ptp(F_m) == 0:
+        raise ValueError(f"free_n needs peak forces that differ: every F_m is {F_m[0]:g} N, and n shapes V_s(F_m)")
+    if start is None:  # V_s = c g(F_m) with c = (m_eff/m0)^(-1/2) and g the speeds at m_eff = m0
+        g = solitary_wave_speed(F_m, K=K, n=float(np.ravel(n)[0]) if free_n else n, m=m0, a=a)
+        start = (float(np.sum(g * g)) / float(np.sum(g * V_s))) ** 2
     start = float(v.positive("start", start))
     params = lmfit.Parameters()
     params.add("m_eff_ratio", value=start, min=0.0)
-    params.add("n", value=n, min=1.0 + 1e-9, vary=bool(free_n))
+    params.add("n", value=float(np.ravel(n)[0]), min=1.0 + 1e-9, vary=bool(free_n))
 
     def speeds(p):
-        return solitary_wave_speed(F_m, K=K, n=p["n"].value, m=p["m_eff_ratio"].value * m0, a=a)
+        exponent = p["n"].value if free_n else n
+        return solitary_wave_speed(F_m, K=K, n=exponent, m=p["m_eff_ratio"].value * m0, a=a)
 
-    out = minimize(lambda p: speeds(p) - V_s, params, max_nfev=max_nfev)
+    scale = float(np.max(V_s))  # solved in units of the data (minimize)
+    out = minimize(lambda p: speeds(p) - V_s, params, residual_scale=scale, max_nfev=max_nfev)
     names = ["m_eff_ratio", "n"] if free_n else ["m_eff_ratio"]
-    fixed = {"K": K, "a": a, "m0": m0, **({} if free_n else {"n": n})}
-    spread = float(np.sum(np.square(V_s - V_s.mean())))
-    return result_from_lmfit("speed-amplitude", out, names, speeds(out.params) - V_s, spread=spread,
-                              resolution=ANALYTIC_RESOLUTION, fixed=fixed)  # fmt: skip
+    fixed = {name: float(value) for name, value in (("K", K), ("a", a), ("m0", m0), ("n", n))
+             if np.ndim(value) == 0 and not (free_n and name == "n")}  # fmt: skip
+    # Equal forces: Eq. (8) is one number for every pair, and the best fit is the mean; a zero speed explains none.
+    spread = float(np.sum(np.square(V_s - (V_s.mean() if np.ptp(F_m) > 0 else 0.0))))
+    result = result_from_lmfit("speed-amplitude", out, names, speeds(out.params) - V_s, spread=spread,
+                               resolution=ANALYTIC_RESOLUTION, fixed=fixed, data_scale=scale)  # fmt: skip
+    ratio, (low, _) = result.values["m_eff_ratio"], result.intervals["m_eff_ratio"]
+    if low > 1.0:
+        slower = math.sqrt(ratio)  # V_s ~ m_eff^(-1/2) at a given force
+        raise FitError(f"m_eff/m0 = {ratio:.4g} (95 % interval from {low:.4g}) lies above 1: the speeds are "
+                       f"{slower:.3g} times slower than Eq. (8) allows for rings of their own mass; are they in m/s "
+                       "and the forces in N, and are the rings (K, n, a, m0) those measured?")  # fmt: skip
+    return result
+
+
+def fit_speed_rings(F_m, V_s, rings, *, K=None, n=None, free_n=False, start=None, max_nfev=None) -> FitResult:
+    """:func:`fit_speed_amplitude` with each pair's chain taken from the ring it was measured on.
+
+    Parameters
+    ----------
+    F_m, V_s : array_like
+        Peak forces (N) and wave speeds (m/s).
+    rings : Ring or sequence of Ring
+        The ring of every pair (one for all, or one per pair, as a sweep file names them):
+        its spacing a, mass m0 and, unless ``K`` and ``n`` are given, its power law (Eq. 4,
+        :meth:`ringchain.theory.Ring.power_law`), evaluated once per distinct ring.
+    K, n : float, optional
+        One power law for every pair (N/m^n, exponent), instead of the rings' own.
+    free_n, start, max_nfev
+        As in :func:`fit_speed_amplitude`.
+
+    Returns
+    -------
+    FitResult
+        As :func:`fit_speed_amplitude`'s; pairs from several rings are fitted with one
+        m_eff/m0, and a note names the rings.
+    """
+    from ringchain.theory import Ring
+
+    F_m = np.atleast_1d(np.asarray(F_m, dtype=float))
+    rings = [rings] * F_m.size if isinstance(rings, Ring) else list(rings)
+    if len(rings) != F_m.size:
+        raise ValueError(f"rings must be one Ring or one per pair ({F_m.size}), got {len(rings)}")
+    for i, ring in enumerate(rings):
+        if not isinstance(ring, Ring):
+            raise TypeError(f"rings[{i}] must be a ringchain.theory.Ring, got {type(ring).__name__}")
+    if (K is None) != (n is None):
+        raise ValueError("give both K and n, or neither (then each ring's power law, Eq. 4)")
+
+    def key(ring):
+        return ring.R, ring.r, ring.angle, ring.material.name
+
+    distinct = {}
+    for ring in rings:
+        if key(ring) not in distinct:
+            distinct[key(ring)] = (ring, *(ring.power_law() if K is None else (K, n)))
+    laws = [distinct[key(ring)] for ring in rings]
+    per_pair = {"K": [law[1] for law in laws], "n": [law[2] for law in laws], "a": [law[0].spacing for law in laws],
+                "m0": [law[0].mass for law in laws]}  # fmt: skip
+    chain = {name: values[0] if len(distinct) == 1 else np.array(values, dtype=float)
+             for name, values in per_pair.items()}  # fmt: skip
+    result = fit_speed_amplitude(F_m, V_s, **chain, free_n=free_n, start=start, max_nfev=max_nfev)
+    if len(distinct) == 1:
+        return result
+    count = {k: sum(1 for ring in rings if key(ring) == k) for k in distinct}
+    names = "; ".join(f"R = {R:.6g} m, r = {r:.6g} m, {math.degrees(angle):.6g} deg, {material} ({count[k]} pairs)"
+                      for k in distinct for R, r, angle, material in [k])  # fmt: skip
+    note = f"one m_eff/m0 fitted to pairs from {len(distinct)} rings, each with its own K, n (Eq. 4), a and m0: {names}"
+    return dataclasses.replace(result, notes=(*result.notes, note))

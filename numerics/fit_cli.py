@@ -8,15 +8,16 @@
   ``ringchain simulate --out``), files fitted jointly.
 
 The chain is given as ``ringchain simulate`` takes it (geometry, material, model,
-``--m-eff-ratio``), or by ``--K`` (SI) and ``--n``.  ``--json`` prints values, standard
-errors and correlations as JSON on stdout; ``--plot`` draws data, fit and residuals.  A fit
-that does not converge prints one line and exits with code 1.
+``--m-eff-ratio``, or ``--chain FILE`` for traces), or by ``--K`` (SI) and ``--n``; a sweep file
+given to ``fit speed`` names its own rings, row by row.  ``--json`` prints values, standard
+errors and correlations as JSON on stdout; ``--plot`` draws data, fit and residuals (its path
+checked before the fit, as every output).  A fit that does not converge prints one line and
+exits with code 1.
 """
 
 from __future__ import annotations
 
 import json
-import math
 import sys
 from pathlib import Path
 
@@ -45,6 +46,7 @@ def add_parser(sub, *, geometry) -> None:
     ``geometry(parser)`` adds the ring options of ``ringchain simulate`` (--R, --r, --angle,
     --material, --m-eff-ratio), checked as they are there.
     """
+    from . import _cli_options as opt
     from .chain import MODELS
 
     fit = sub.add_parser("fit", help="fit parameters to measurements (static test, speeds, sensor traces)",
@@ -54,7 +56,12 @@ def add_parser(sub, *, geometry) -> None:
 
     def common(p):
         p.add_argument("--json", action="store_true", help="print values, stderr and correlations as JSON")
-        p.add_argument("--plot", metavar="PNG", help="plot data, fit and residuals")
+        p.add_argument("--plot", type=opt.plot_file, metavar="FILE",
+                       help="plot data, fit and residuals (.png, .pdf, .svg...: the extension sets the "
+                            "format)")  # fmt: skip
+        p.add_argument("--max-evaluations", type=opt.integer("max evaluations", 1), default=None, metavar="N",
+                       help="most evaluations of the model by the least squares (default: lmfit's; traces "
+                            "60)")  # fmt: skip
 
     p = kinds.add_parser("static", help="K and n (power law, Eq. 4) or K_c and K_b (series, Eq. 3)",
                          allow_abbrev=False)  # fmt: skip
@@ -79,7 +86,11 @@ def add_parser(sub, *, geometry) -> None:
                          allow_abbrev=False)  # fmt: skip
     p.add_argument("files", nargs="+", metavar="FILE", help="CSV files of sensor traces, fitted jointly")
     chain_by_law(p)
-    p.add_argument("--rings", type=int, default=20, help="rings in the chain (default 20)")
+    p.add_argument("--rings", type=opt.Checked(int, opt.ring_count), default=20, action=opt.Given,
+                   help="rings in the chain (default 20)")  # fmt: skip
+    p.add_argument("--chain", type=opt.chain_file, metavar="FILE",
+                   help="TOML chain description, as ringchain simulate --chain takes it; replaces --R, --r, --angle, "
+                        "--material, --rings")  # fmt: skip
     p.add_argument("--model", choices=MODELS, default="dual-spring", help="lattice model (default dual-spring)")
     p.add_argument("--gamma", type=float, default=0.0, metavar="NS/M",
                    help="contact dashpot (start or fixed value), N s/m (default 0)")  # fmt: skip
@@ -93,20 +104,25 @@ def add_parser(sub, *, geometry) -> None:
                    help=f"free parameters, a comma list (default {DEFAULT_FREE}; also K, n, K_b, gamma_b, v0, "
                         "h0)")  # fmt: skip
     p.add_argument("--no-offsets", action="store_true", help="do not fit a DC offset per channel")
+    from ._cli_options import striker_option
+
+    striker_option(p)  # as ringchain simulate takes it
     common(p)
     fit.set_defaults(func=run)
 
 
 def run(args) -> int:
     """Run ``ringchain fit <kind>``; returns the exit code (1 if a fit does not converge)."""
+    from . import _cli_options as opt
     from .fit import FitError
 
-    if getattr(args, "plot", None) and not Path(args.plot).resolve().parent.is_dir():
-        raise ValueError(f"cannot write {args.plot}: the folder {Path(args.plot).parent} does not exist")
+    files = args.files if args.fit_command == "traces" else [args.file]
+    opt.check_outputs([*files, getattr(getattr(args, "chain", None), "path", None)], [("--plot", args.plot)])
     try:
         return {"static": _static, "speed": _speed, "traces": _traces}[args.fit_command](args)
     except FitError as exc:
-        print(f"ringchain fit {args.fit_command}: error: {' '.join(str(exc).split())}", file=sys.stderr)
+        message = opt.one_line(exc).replace("allow more evaluations", "allow more evaluations (--max-evaluations)")
+        print(f"ringchain fit {args.fit_command}: error: {message}", file=sys.stderr)
         return 1
 
 
@@ -127,7 +143,8 @@ def _static(args) -> int:
 
     delta, force = read_static(args.file)
     models = ("power-law", "series") if args.model == "both" else (args.model,)
-    results = {model: fit_static(delta, force, model, offset=args.offset) for model in models}
+    results = {model: fit_static(delta, force, model, offset=args.offset, max_nfev=args.max_evaluations)
+               for model in models}  # fmt: skip
     _print(args, results)
     if len(results) == 2 and not args.json:
         aic = {model: r.aic for model, r in results.items()}
@@ -155,34 +172,22 @@ def _static(args) -> int:
     return 0
 
 
-def _ring(args):
-    from ringchain.theory import Ring
-
-    return Ring(args.R, args.r, material=args.material, angle=math.radians(args.angle))
-
-
-def _power_law(args, ring):
-    """(K, n, where from): --K and --n, or the ring's power law fitted to its series law (Eq. 4)."""
-    if (args.K is None) != (args.n is None):
-        raise ValueError("give both --K and --n, or neither (then the ring's power law, Eq. 4, is used)")
-    if args.K is not None:
-        return args.K, args.n, "given"
-    K, n = ring.power_law()
-    return K, n, "the ring's series law, Eq. 4"
-
-
 def _speed(args) -> int:
-    from .fit import fit_speed_amplitude
+    from . import _cli_options as opt
+    from .fit import fit_speed_rings
     from .traces import read_speed_amplitude
 
-    F_m, V_s = read_speed_amplitude(args.file)
-    ring = _ring(args)
-    K, n, source = _power_law(args, ring)
-    result = fit_speed_amplitude(F_m, V_s, K=K, n=n, a=ring.spacing, m0=ring.mass, free_n=args.free_n,
-                                 start=args.m_eff_ratio)  # fmt: skip
+    F_m, V_s, rows = read_speed_amplitude(args.file, geometry=True)
+    rings = opt.speed_rings(args, rows)
+    start = args.m_eff_ratio if "m_eff_ratio" in opt.given(args) else None  # None: fit_speed_amplitude's own
+    result = fit_speed_rings(F_m, V_s, rings, K=args.K, n=args.n, free_n=args.free_n, start=start,
+                             max_nfev=args.max_evaluations)  # fmt: skip
     _print(args, {"speed": result})
-    if not args.json:
-        print(f"K = {K:.6g} N/m^n ({source}), a = {ring.spacing:.6g} m, m0 = {ring.mass:.6g} kg")
+    if not args.json and "K" in result.fixed:
+        source = "given" if args.K is not None else "the ring's series law, Eq. 4"
+        where = "" if rows is None else f" ({args.file}'s rings)"
+        print(f"K = {result.fixed['K']:.6g} N/m^n ({source}), a = {result.fixed['a']:.6g} m, m0 = "
+              f"{result.fixed['m0']:.6g} kg{where}")  # fmt: skip
     if args.plot:
         import numpy as np
 
@@ -202,25 +207,16 @@ def _speed(args) -> int:
 
 
 def _traces(args) -> int:
-    from .chain import Chain
+    from . import _cli_options as opt
     from .fit_dynamic import fit_traces
     from .traces import read_traces
 
     impacts = args.drop_height if args.drop_height is not None else args.impact_velocity
     if len(impacts) != len(args.files):
         kind = "--drop-height" if args.drop_height is not None else "--impact-velocity"
-        raise ValueError(f"{kind} needs one value per file: {len(args.files)} files, {len(impacts)} values")
-    ring = _ring(args)
-    ring.check_chain()
-    dashpots = {"gamma": args.gamma} if args.model == "power-law" else {"gamma_c": args.gamma,
-                                                                           "gamma_b": args.gamma_b}  # fmt: skip
-    if args.model == "power-law":
-        K, n, _ = _power_law(args, ring)
-        chain = Chain.from_ring(ring, args.rings, "power-law", m_eff_ratio=args.m_eff_ratio, K=K, n=n, **dashpots)
-    else:
-        if args.K is not None or args.n is not None:
-            raise ValueError("--K and --n give a power law: use them with --model power-law")
-        chain = Chain.from_ring(ring, args.rings, "dual-spring", m_eff_ratio=args.m_eff_ratio, **dashpots)
+        files = f"{len(args.files)} file{'s' if len(args.files) != 1 else ''}"
+        raise ValueError(f"{kind} needs one value per file: {files}, {len(impacts)} values")
+    chain, m0 = opt.trace_chain(args)
     data = [read_traces(path) for path in args.files]
     if args.drop_height is not None:
         records = [(t, traces, h) for (t, traces), h in zip(data, impacts, strict=True)]
@@ -228,17 +224,21 @@ def _traces(args) -> int:
     else:
         records = [(t, traces, None) for t, traces in data]
         speeds = impacts
+    evaluations = {} if args.max_evaluations is None else {"max_nfev": args.max_evaluations}
     if len(records) == 1:
         ((t, traces, h),) = records
         kwargs = {"drop_height": h} if h is not None else {"impact_velocity": speeds[0]}
-        result = fit_traces(t, traces, chain, free=args.free, offsets=not args.no_offsets, **kwargs)
+        result = fit_traces(t, traces, chain, free=args.free, offsets=not args.no_offsets, **kwargs, **evaluations)
     else:
         result = fit_traces(None, records, chain, free=args.free, impact_velocity=speeds,
-                            offsets=not args.no_offsets)  # fmt: skip
+                            offsets=not args.no_offsets, **evaluations)  # fmt: skip
     _print(args, {"traces": result})
     if not args.json and "m" in result.names:
-        ratio, sd = result.values["m"] / ring.mass, result.stderr["m"] / ring.mass
-        print(f"m/m0 = {ratio:.6g} +/- {sd:.2g} (m0 = {ring.mass:.6g} kg, the ring's mass)")
+        ratio, sd = result.values["m"] / m0, result.stderr["m"] / m0
+        from ._cli_options import striker_words
+
+        striker = striker_words(args.striker_mass, m0)
+        print(f"m/m0 = {ratio:.6g} +/- {sd:.2g} (m0 = {m0:.6g} kg, the mass of ring 0; {striker})")
     if args.plot:
         _plot_traces(result, args.plot, [Path(p).name for p in args.files])
         print(f"plot written to {args.plot}")

@@ -251,6 +251,25 @@ class _TraceProblem:
         # Grid of the forward runs: the finest measured sampling (median step).
         self.dt_grid = min(float(np.median(np.diff(rec.t))) for rec in records)
         self.force_scale = max(float(np.max(y) - starting_level(y)) for rec in records for y in rec.force)
+        # A field that changes along the chain (a chain file's) is fitted as its profile times one factor: the
+        # parameter is the value at ring 0 (contact 0), the profile's ratios stay as given.
+        self.profiles = {}
+        for name in self.chain_free:
+            value = np.asarray(getattr(chain, name), dtype=float)
+            if value.ndim and np.ptp(value) > 0:
+                if value[0] == 0:
+                    raise ValueError(f"{name} changes along the chain from 0 at ring 0: it cannot be fitted as one "
+                                     "factor of its profile; hold it")  # fmt: skip
+                self.profiles[name] = value / value[0]
+
+    def scales(self, records):
+        """Scale of each parameter for :func:`~.fit.minimize`: a record's span for t0, the measured peak for the
+        offsets, the smallest drop height for h0 (the others: their starting values)."""
+        scales = {"h0": min((rec.drop_height for rec in records if rec.drop_height), default=1.0)}
+        for r, rec in enumerate(records):
+            scales[self.name("t0", r)] = float(rec.t[-1] - rec.t[0])
+            scales.update(dict.fromkeys((self.offset_name(r, k) for k in rec.rings), self.force_scale))
+        return scales
 
     # -- names and values ----------------------------------------------------------------------------
     def name(self, kind, r):
@@ -265,15 +284,17 @@ class _TraceProblem:
 
     def damping_scale(self, chain):
         """gamma* = sqrt(m k), N s/m: critical damping of one ring on the contact's tangent stiffness at
-        the largest measured force (the bending stiffness if lower); the scale of a dashpot near 0."""
+        the largest measured force (the bending stiffness if lower); the scale of a dashpot near 0 (ring 0's)."""
         F = self.force_scale
-        k = chain.n * chain.K ** (1.0 / chain.n) * F ** ((chain.n - 1.0) / chain.n)
+        n, K, m = first(chain.n), first(chain.K), first(chain.m)
+        k = n * K ** (1.0 / n) * F ** ((n - 1.0) / n)
         if chain.K_b is not None:
-            k = min(k, chain.K_b)
-        return math.sqrt(chain.m * k)
+            k = min(k, first(chain.K_b))
+        return math.sqrt(m * k)
 
     def chain_at(self, values):
-        return dataclasses.replace(self.chain, **{k: values[k] for k in self.chain_free})
+        return dataclasses.replace(self.chain, **{k: values[k] * self.profiles[k] if k in self.profiles else values[k]
+                                                  for k in self.chain_free})  # fmt: skip
 
     def speeds_at(self, values):
         """Impact speed of each record, m/s: its free v0, sqrt(2 g (h + h0)), or as given."""
@@ -442,6 +463,40 @@ def _profile_check(problem, out, residual, **options):
     return covariance, [k for k in names if k in undetermined]
 
 
+def first(value) -> float:
+    """A chain field's value at ring 0 (contact 0): the field itself for a uniform chain."""
+    return float(np.ravel(value)[0])
+
+
+#: A record longer than this many times the time the pulse takes to pass its farthest sensor, or shorter than
+#: 1/SPAN_RATIO of the time it takes to pass one ring, is refused (:func:`_check_spans`): the first holds
+#: little but the chain ringing and makes every forward run that much longer (minutes, for times in ms read
+#: as s); the second cannot hold a pulse of that chain.
+SPAN_RATIO = 100.0
+
+
+def _check_spans(records, chain):
+    """Refuse a record whose span is far from the time the pulse needs to reach its sensors (SPAN_RATIO), with the
+    likely cause: times in other units than s, or another chain than the one measured."""
+    from .experiment import default_t_end
+
+    speeds = [rec.speed for rec in records]
+    for r, rec in enumerate(records):
+        span = float(rec.t[-1] - rec.t[0])
+        where = "" if len(records) == 1 else f" of record {r}"
+        far = max(1, *rec.rings)
+        passing = default_t_end(chain, speeds, (0, far))
+        if span > SPAN_RATIO * passing:
+            raise ValueError(f"the times{where} span {span:.4g} s, {span / passing:.3g} times the {passing:.3g} s the "
+                             f"pulse needs to pass ring {far}: are they in s (not ms)? Cut the record to the pulse, or "
+                             "give the chain measured")  # fmt: skip
+        one_ring = default_t_end(chain, speeds, (0, 1))
+        if span < one_ring / SPAN_RATIO:
+            raise ValueError(f"the times{where} span {span:.4g} s, 1/{one_ring / span:.3g} of the {one_ring:.3g} s the "
+                             "pulse needs to pass one ring: are they in s, and is the chain (R, r, material) the one "
+                             "measured?")  # fmt: skip
+
+
 def _noisy_peak(t, y):
     """Time (s) and height of the leading peak of a noisy trace (above its starting level).
 
@@ -471,6 +526,23 @@ def _peak_times(t, force):
     return np.array([_noisy_peak(t, y) for y in force])
 
 
+def _check_amplitudes(record, model, measured, where):
+    """Refuse a start whose pulse at a sensor is more than 20 times below or above the measured one (N, above the
+    starting levels): the least squares cannot get there, and the likely cause is a unit or the chain."""
+    for ring, simulated, peak in zip(record.rings, model, measured, strict=True):
+        if not simulated > 0:
+            raise FitError(f"the starting chain gives no pulse at ring {ring}{where} within the measured window "
+                           f"({record.t[0]:.4g} to {record.t[-1]:.4g} s): are the times in s, and the chain (its "
+                           "rings, m) and the impact those measured? Give better starting values")  # fmt: skip
+        ratio = peak / simulated
+        if not 1 / 20 <= ratio <= 20:
+            side = "below" if ratio > 1 else "above"
+            raise FitError(f"the starting chain's pulse at ring {ring}{where} peaks at {simulated:.3g} N, "
+                           f"{max(ratio, 1 / ratio):.3g} times {side} the measured {peak:.3g} N: are the forces in "
+                           "N? Otherwise the chain (its rings, m) or the impact is far off: give better starting "
+                           "values")  # fmt: skip
+
+
 def _align(problem, values, *, iterations=4):
     """Starting values from the pulses: t0 from the arrival at the first sensor, the speed
     parameter (m, else K) from the time of flight, v0 from the peak height.
@@ -481,7 +553,7 @@ def _align(problem, values, *, iterations=4):
     the least squares.
     """
     measured = [_peak_times(rec.t, rec.force) for rec in problem.records]
-    n = problem.chain.n
+    n = first(problem.chain.n)
     speed_name = next((k for k in ("m", "K") if k in problem.chain_free), None)
     R = len(problem.records)
     for it in range(iterations):
@@ -489,9 +561,7 @@ def _align(problem, values, *, iterations=4):
         ratios, amplitudes = [], []
         for r, (spline, meas) in enumerate(zip(splines, measured, strict=True)):
             model = _peak_times(spline.x, spline(spline.x)[0])
-            if np.any(model[:, 1] < 0.05 * meas[:, 1]):  # a pulse 20 times smaller is no pulse
-                raise FitError(f"the starting chain gives no pulse at the sensors of record {r} within the "
-                               "measured window; give better starting values")  # fmt: skip
+            _check_amplitudes(problem.records[r], model[:, 1], meas[:, 1], "" if R == 1 else f" of record {r}")
             if problem.free_t0:
                 values[problem.name("t0", r)] = float(meas[0, 0] - model[0, 0])
             if len(meas) >= 2:
@@ -535,6 +605,8 @@ def fit_traces(
     chain : Chain
         The model (power-law or dual-spring), with the starting values of the free
         parameters and the values of the fixed ones; gravity acts on ``chain.m_gravity``.
+        Its striker (``striker_mass``) follows the fitted m in the paper's convention, and
+        keeps its mass when given in kg (``"m0"``: a rigid ring of known mass).
     drop_height : float, optional
         Free-fall height of ring 0, m (impact speed sqrt(2 g h)).
     impact_velocity : float or sequence, optional
@@ -596,6 +668,11 @@ def fit_traces(
       several drops from different heights can (sqrt(h_i + h0) cannot follow one common
       factor alpha).
 
+    The symmetry scales the striker with the rings, as the paper's convention does (the
+    striker is a ring of mass m).  A striker of known mass (``striker_mass`` in kg, "m0")
+    does not scale, so it breaks the symmetry too; and the values a known impact gives are
+    those of the striker assumed: the impact's energy m_s v0^2/2 sets the amplitude.
+
     The book's chapter "From measurements to parameters" shows the three cases.
     """
     import lmfit
@@ -624,8 +701,9 @@ def fit_traces(
         raise ValueError(f"t0 must be one value or one per record ({R}), got {np.size(t0)}")
     problem = _TraceProblem(records, chain, free, t0=[float(x) for x in t0_fixed], offsets=offsets,
                             rtol=float(v.positive("rtol", rtol)), gravity=gravity, batched=batched)  # fmt: skip
+    _check_spans(records, chain)
 
-    values = {name: float(getattr(chain, name)) for name in problem.chain_free}
+    values = {name: first(getattr(chain, name)) for name in problem.chain_free}
     for name in ("gamma", "gamma_b"):
         if name in values and values[name] == 0.0:  # a start at 0 (the bound): 1e-4 of critical damping
             values[name] = 1e-4 * problem.damping_scale(chain)
@@ -658,6 +736,7 @@ def fit_traces(
             low, high = -np.inf, np.inf
         params.add(name, value=value, min=low, max=high)
     least_squares = {"max_nfev": max_nfev, "ftol": 1e-7, "xtol": 1e-5, "gtol": 1e-10}
+    least_squares |= {"scales": problem.scales(records), "residual_scale": problem.force_scale}
     out = minimize(problem.residual, params, jac=problem.jacobian, **least_squares)
     names = list(params)
     check_converged("traces", out, names)
@@ -681,8 +760,13 @@ def fit_traces(
         notes.append(f"the residual ({rms:.3g} N rms) is {rms / floor:.1f} times the noise of the traces "
                      f"({floor:.3g} N): the model misses features of the data, or this is a local minimum")  # fmt: skip
     model_fields = CHAIN_PARAMETERS if chain.model == "dual-spring" else ("m", "gamma", "K", "n")
-    fixed = {k: float(getattr(chain, k)) for k in model_fields if k not in problem.chain_free}
-    fixed["m_gravity"] = chain.m_gravity
+    fixed = {k: first(getattr(chain, k)) for k in model_fields if k not in problem.chain_free}
+    fixed["m_gravity"] = first(chain.m_gravity)
+    if not chain.uniform:
+        notes.append("the chain changes along its length: each chain parameter (free or fixed) is given at ring 0 "
+                     "(contact 0); a free one scales its whole profile")  # fmt: skip
+    if chain.striker_mass is not None:  # a striker given in kg (a rigid ring) keeps its mass while m is fitted
+        fixed["striker_mass"] = chain.striker_mass
     for r in range(R):
         if not problem.free_t0:
             fixed[problem.name("t0", r)] = problem.fixed_t0[r]

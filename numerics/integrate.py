@@ -147,14 +147,28 @@ DEFAULT_SAMPLES = 2001
 #: integrated in consecutive chunks of samples (the solver restarts at each chunk).
 CHUNK_BYTES = 256 * 2**20
 
-# Rough cost of one Verlet step: a fixed overhead plus a cost per coordinate and run, measured on
-# a 2-core machine (benchmarks/bench_batch.py gives this machine's numbers); only used to
-# turn a number of steps into an order of magnitude of seconds.
-_SECONDS_PER_STEP = 1.5e-5
-_SECONDS_PER_SITE_STEP = 2e-8
+# Rough cost of one step of the compiled methods: a fixed overhead plus a cost per coordinate and
+# run (a dopri5 step is seven evaluations and their Runge-Kutta sums), measured on the paper's
+# chain on a busy 2-core machine (benchmarks/bench_kernels.py gives this machine's numbers); only
+# used to turn a number of steps into an order of magnitude of seconds.
+_SECONDS_PER_STEP = 2e-7
+_SECONDS_PER_SITE_STEP = {"verlet": 3e-8, "dopri5": 2e-7}
+
+# Steps dopri5 takes per period of the fastest linearised mode (as Verlet's steps_per_period) at
+# rtol = 1e-7, growing as rtol^(-1/5) (a fifth-order pair): measured 4.9-6.4 on the paper's chain
+# (drops of 1-30 cm) against 60 for Verlet, 22 at rtol = 3e-10.  An estimate, not a bound: the
+# contacts' openings and closings cost rejected steps the linearised modes do not show.
+_DOPRI5_STEPS_PER_PERIOD = 7.0
+
+# Bytes per site of a chain's network, dynamics and initial state, built before a run can be estimated (measured:
+# 153 per site for a dual-spring chain of 1e6 rings); a chain that needs more than the memory available is refused
+# before they are built (issue 24, item 11: 1e8 rings took 15.7 GB and 34 s before the estimate refused them).
+_SETUP_BYTES_PER_SITE = 160
 
 # Most LSODA steps between two samples (odeint's mxstep); a run that needs more fails.
 _MAX_STEPS_PER_SAMPLE = 1_000_000
+#: Steps the compiled dopri5 may take per run before it stops with "too many steps".
+_MAX_DOPRI5_STEPS = 10_000_000
 
 
 class IntegrationError(ValueError):
@@ -275,7 +289,8 @@ def _compiled(method, dyn, x0, u0, scales, t_eval, t_end, rtol, atol, dt, g, kee
         columns.append(np.repeat(X[:, None], memory.shape[1], axis=1))
         state.append(memory)
     xs, us, w, ms, final, status, counts = kernels.dopri5(
-        packed, np.hstack(state), t_eval, rtol, atol * np.hstack(columns), keep, g, shared=shared)  # fmt: skip
+        packed, np.hstack(state), t_eval, rtol, atol * np.hstack(columns), keep, g, shared=shared,
+        max_steps=_MAX_DOPRI5_STEPS)  # fmt: skip
     _check_status(method, status, t_end, rtol)
     first = 2 * N + int(dyn.damped)
     watch(t_end, final[:, :N], final[:, N : 2 * N], final[:, 2 * N] if dyn.damped else 0.0,
@@ -327,10 +342,13 @@ class EnergyWatch:
         if self.limit is None:
             return
         total = self._total(x, u, dissipated, memory)
-        drift = float(np.max(np.abs(total - self.initial) / self.scale))
+        drifts = np.atleast_1d(np.abs(total - self.initial) / self.scale)
+        worst = int(np.argmax(np.where(np.isnan(drifts), np.inf, drifts)))
+        drift = float(drifts[worst])
         if not drift <= self.limit:
+            where = f" in run {worst}" if drifts.size > 1 else ""
             raise IntegrationError(
-                f"the total energy drifted by {drift:.3g} times the impact energy by t = {t:g} s "
+                f"the total energy drifted by {drift:.3g} times the impact energy by t = {t:g} s{where} "
                 f"(max_energy_drift = {self.limit:g}): the integration is unstable or inaccurate; {self.advice}"
             )
 
@@ -348,9 +366,10 @@ class RunEstimate:
     recorded_sites : int
         Coordinates whose x and u are kept (all, or those the sensors of ``rings`` need).
     steps : int or None
-        Verlet steps (None for an adaptive method, which chooses them as it goes).
+        Verlet steps; for "dopri5", the steps it is expected to take (from the fastest linearised
+        mode and rtol); None for SciPy's adaptive methods.
     dt : float or None
-        Verlet step, s.
+        Verlet step, s (None for the adaptive methods).
     memory : int
         Bytes: the record (x, u and the dissipated energy), the forces derived from it,
         and the solver's own arrays.
@@ -367,22 +386,25 @@ class RunEstimate:
 
     @property
     def work(self) -> int | None:
-        """Steps x sites x runs (Verlet), or None."""
+        """Steps x sites x runs (the compiled methods), or None."""
         return None if self.steps is None else self.steps * self.sites * self.runs
 
     @property
     def seconds(self) -> float | None:
-        """Rough duration of a Verlet run, s, at the per-step costs measured on a 2-core machine."""
+        """Rough duration of a compiled run, s, at the per-step costs measured on a 2-core machine."""
         if self.steps is None:
             return None
-        return self.steps * (_SECONDS_PER_STEP + _SECONDS_PER_SITE_STEP * self.sites * self.runs)
+        return self.steps * (_SECONDS_PER_STEP + _SECONDS_PER_SITE_STEP[self.method] * self.sites * self.runs)
 
     def describe(self, memory=True) -> str:
         """One line: the run's size, work, rough duration and (unless ``memory`` is False) memory."""
         size = f"{self.runs} run(s) x {self.sites} sites x {self.samples} samples"
-        work = "" if self.steps is None else (
-            f", {self.steps:.3g} Verlet steps of {self.dt:.3g} s = {self.work:.3g} site-steps (roughly "
-            f"{format_duration(self.seconds)})")  # fmt: skip
+        steps = f"Verlet steps of {self.dt:.3g} s" if self.dt is not None else f"{self.method} steps (expected)"
+        work = (
+            ""
+            if self.steps is None
+            else (f", {self.steps:.3g} {steps} = {self.work:.3g} site-steps (roughly {format_duration(self.seconds)})")
+        )
         return f"{size}{work}" + (f", {format_bytes(self.memory)} of memory" if memory else "")
 
 
@@ -522,10 +544,18 @@ def _prepare(model, t_end, impact_velocities, drop_heights, gravity, t_eval, n_s
     gravity = v.flag("gravity", gravity)
     if not isinstance(method, str) or method not in METHODS:
         raise ValueError(f"method must be one of {METHODS}, got {method!r}")
+    # A layout (a Chain) builds its network only now: refuse one that cannot fit before building it.
+    sites = getattr(model, "n_sites", None) if callable(getattr(model, "network", None)) else None
+    available = None if sites is None else _available_memory()
+    if available is not None and _SETUP_BYTES_PER_SITE * sites > available:
+        raise RunTooLargeError(
+            f"a model of {sites} sites needs about {format_bytes(_SETUP_BYTES_PER_SITE * sites)} for its network and "
+            f"initial state alone, more than the {format_bytes(available)} available; take fewer rings"
+        )
     dyn = model.dynamics()
     if getattr(dyn, "stateful", False) and method not in COMPILED_METHODS:
         raise ValueError(
-            f"this model has laws with memory ({', '.join(dyn.stateful_laws)}: the largest approach of each contact), "
+            f"this model has laws with memory ({', '.join(dyn.stateful)}: the largest approach of each contact), "
             f"which only the compiled methods {COMPILED_METHODS} update, on accepted steps; method={method!r} cannot "
             "integrate it: use method='dopri5' (the default) or 'verlet'"
         )
@@ -568,6 +598,9 @@ def _prepare(model, t_end, impact_velocities, drop_heights, gravity, t_eval, n_s
     else:
         rtol = _rtol(DEFAULT_TOLERANCES[method] if rtol is None else rtol)
         atol = rtol if atol is None else float(v.in_range("atol", atol, 0.0, TOLERANCE_RANGE[1]))
+        if method == "dopri5":
+            per_period = _DOPRI5_STEPS_PER_PERIOD * (1e-7 / rtol) ** 0.2
+            steps = max(1, math.ceil(t_end / verlet_step(dyn, float(scales[0].max()), per_period)))
         n_state = 2 * B * N + (B if dyn.damped else 0)
         solver = 8 * n_state * (2 * min(T, max(1, CHUNK_BYTES // (8 * n_state))) + 30)  # output, copies, LSODA
     derived = (getattr(dyn, "n_links", N) if rings is None else 2 * len(rings)) * 8 * B * T  # forces derived later

@@ -15,8 +15,8 @@ ever, with the disk cache) and not once per chain:
   :class:`~ringchain.numerics.laws.LinearSpring`; gamma for :class:`~ringchain.numerics.laws.Dashpot`; K, delta_y,
   gamma, initial memory for :class:`~ringchain.numerics.laws.Thornton`; K, n, alpha for
   :class:`~ringchain.numerics.laws.HuntCrossley`),
-  per site its inverse mass and the acceleration of gravity; in two or three dimensions the rest
-  positions, the anchors and the rest lengths;
+  per site its inverse mass and the acceleration of gravity; in two or three dimensions the links' rest
+  vectors (site i to the far end, a periodic image or an anchor), their spans and prestretches;
 - the ring-resolved chain: one ring's coupling matrix -M^-1 K, the columns of M^-1 at its two contact
   points, its rigid translation, and the Hertz contact.
 
@@ -37,10 +37,13 @@ memory, which the step control pays for with rejections at every loading; and it
 The Runge-Kutta pair.  Dormand and Prince's 5(4) pair with its fourth-order continuous extension
 (Hairer, Norsett and Wanner, Solving ODEs I, Sec. II.5-6), first-same-as-last, step-size control
 0.9 err^(-1/5) within [0.2, 10].  The error is measured in the max norm over the components,
-|err_i| / (atol_i + rtol max(|y_i|, |y_new_i|)): a component at rest, or a run repeated in a batch,
-never changes the steps a run takes (an RMS norm over n components loosens the control by sqrt(n)
-when most of them are idle).  Each member of a batch takes its own steps; the members run in parallel
-over the cores (``prange``).  The samples are read from the continuous extension.
+|err_i| / (atol_i + rtol max(|y_i|, |y_new_i|)): a component whose derivative is exactly zero (a site
+at rest with no net force), or a run repeated in a batch, never changes the steps a run takes (an
+RMS norm over n components loosens the control by sqrt(n) when most of them are idle).  A member
+hanging at rest under gravity is not exactly idle: its rounding-level accelerations, against its own
+tiny tolerances, change a shared step slightly (``shared=True``: 601 steps instead of 596 measured).
+Each member of a batch takes its own steps; the members run in parallel over the cores (``prange``).
+The samples are read from the continuous extension.
 
 Velocity Verlet.  The fixed-step scheme of :func:`ringchain.numerics.integrate` (kick-drift-kick in
 leapfrog form, samples by cubic Hermite interpolation of the two ends of their step), one member per
@@ -132,9 +135,9 @@ class Packed(NamedTuple):
     lj: np.ndarray  # (L,) int64, -1 for the support
     kind: np.ndarray  # (L,) int64
     par: np.ndarray  # (Bp, L, PARAMETERS)
-    positions: np.ndarray  # (S, dim)
-    anchors: np.ndarray  # (L, dim)
-    rest: np.ndarray  # (L,)
+    rest_vectors: np.ndarray  # (L, dim): from site i to the link's far end at rest (Network.rest_vectors)
+    spans: np.ndarray  # (L,): their lengths (Network.spans)
+    prestretch: np.ndarray  # (L,): the links' extensions at rest (Network.prestretch)
     coupling: np.ndarray  # (n, n)
     inv_top: np.ndarray  # (n,)
     inv_bottom: np.ndarray  # (n,)
@@ -176,13 +179,16 @@ def pack_network(net) -> Packed:
     per_unit_g = np.zeros((*batch, S, d))  # gravity acts on the weight masses, along -axis (the last component)
     per_unit_g[..., -1] = net.weight_mass / net.mass
     gravity = np.atleast_2d(per_unit_g.reshape(*batch, S * d))
-    positions = np.zeros((S, d)) if net.positions is None else np.asarray(net.positions, dtype=float)
-    rest = np.zeros(L) if net.rest_lengths is None or d == 1 else np.asarray(net.rest_lengths, dtype=float)
-    path = d == 1 and np.array_equal(net.i, np.arange(L))  # a chain: link k joins site k to k + 1 (or the support)
+    planar = net.positions is not None and d > 1
+    rest_vectors = np.asarray(net.rest_vectors, dtype=float) if planar else np.zeros((L, d))
+    spans = np.asarray(net.spans, dtype=float) if planar else np.zeros(L)
+    prestretch = np.asarray(net.prestretch, dtype=float) if planar else np.zeros(L)
+    # The fast path: a chain (Network.is_path) whose link k is the one of site k.
+    path = net.is_path and np.array_equal(net.i, np.arange(L))
     ints = np.array([0, d, net.n_coords, int(net.damped), S, L, 0, 0, 0, int(path)], dtype=np.int64)
     return Packed(ints, _empty(2), np.ascontiguousarray(1.0 / mass), np.ascontiguousarray(gravity, dtype=float),
-                  net.i.astype(np.int64), net.j.astype(np.int64), kind, par, np.ascontiguousarray(positions),
-                  np.ascontiguousarray(net.anchor_positions, dtype=float), rest, _empty(0, 0), _empty(0),
+                  net.i.astype(np.int64), net.j.astype(np.int64), kind, par, np.ascontiguousarray(rest_vectors),
+                  np.ascontiguousarray(spans), np.ascontiguousarray(prestretch), _empty(0, 0), _empty(0),
                   _empty(0))  # fmt: skip
 
 
@@ -193,13 +199,13 @@ def pack_ring_chain(chain) -> Packed:
     ints = np.array([1, 1, N * n, 0, 0, 0, N, n, int(chain.support == "fixed"), 0], dtype=np.int64)
     return Packed(ints, np.array([chain.K_c, chain.n]), _empty(1, 0), np.atleast_2d(ring.rigid.astype(float)),
                   _empty(0, dtype=np.int64), _empty(0, dtype=np.int64), _empty(0, dtype=np.int64),
-                  _empty(1, 0, PARAMETERS), _empty(0, 1), _empty(0, 1), _empty(0),
+                  _empty(1, 0, PARAMETERS), _empty(0, 1), _empty(0), _empty(0),
                   np.ascontiguousarray(coupling), np.ascontiguousarray(ring.inverse_mass[:, 1]),
                   np.ascontiguousarray(ring.inverse_mass[:, 0]))  # fmt: skip
 
 
 # -- the laws --------------------------------------------------------------------------------------------------
-@_jit()  # not inlined: its 24 inlined copies in the Runge-Kutta loop doubled the compile time and lost the cache
+@_jit(inline="always")
 def _law(kind, p0, p1, p2, e, rate, memory):
     """(force, elastic force) of one link: the :mod:`ringchain.numerics.laws` of kind ``kind``, parameters p0-p2."""
     if kind == 0:  # PowerLaw: [K delta^n + gamma delta_dot]_+ where engaged (K, n, gamma)
@@ -245,22 +251,22 @@ def _thornton(K, dy, gamma, e, rate, memory):
 
 @_jit()
 def _extension(m, k, x, u):
-    """(extension, rate) of link k of a packed network at displacements x and velocities u."""
+    """(extension, rate) of link k of a packed network at displacements x and velocities u (as the right-hand
+    side computes them)."""
     i, j, d = m.li[k], m.lj[k], m.ints[1]
     if d == 1:
         far, far_u = (x[j], u[j]) if j >= 0 else (0.0, 0.0)
         return far - x[i], far_u - u[i]
-    length2, rate = 0.0, 0.0
+    length2, stretch, rate = 0.0, 0.0, 0.0
     for c in range(d):
-        ri = m.positions[i, c] + x[i * d + c]
-        rj = m.anchors[k, c] if j < 0 else m.positions[j, c] + x[j * d + c]
-        length2 += (rj - ri) ** 2
+        w = (0.0 if j < 0 else x[j * d + c]) - x[i * d + c]
+        length2 += (m.rest_vectors[k, c] + w) ** 2
+        stretch += (2.0 * m.rest_vectors[k, c] + w) * w
     length = math.sqrt(length2)
     for c in range(d):
-        ri = m.positions[i, c] + x[i * d + c]
-        rj = m.anchors[k, c] if j < 0 else m.positions[j, c] + x[j * d + c]
-        rate += ((0.0 if j < 0 else u[j * d + c]) - u[i * d + c]) * (rj - ri) / length
-    return length - m.rest[k], rate
+        w = (0.0 if j < 0 else x[j * d + c]) - x[i * d + c]
+        rate += ((0.0 if j < 0 else u[j * d + c]) - u[i * d + c]) * (m.rest_vectors[k, c] + w) / length
+    return stretch / (length + m.spans[k]) + m.prestretch[k], rate
 
 
 @_jit()
@@ -349,29 +355,31 @@ def _network_accelerations(m, b, g, x, u, out, memory):
             if j >= 0:
                 out[j] -= force
     else:
+        # The extension as Network.extensions computes it: |b + w| - |b| = (2 b.w + w.w)/(|b + w| + |b|),
+        # from the rest vector b and the relative displacement w of the ends, free of the cancellation of
+        # two lengths of order |b|, plus the prestretch.
         for k in range(L):
             i, j = li[k], lj[k]
             length2 = 0.0
+            stretch = 0.0
             for c in range(d):
-                ri = m.positions[i, c] + x[i * d + c]
-                rj = m.anchors[k, c] if j < 0 else m.positions[j, c] + x[j * d + c]
-                length2 += (rj - ri) ** 2
+                w = (0.0 if j < 0 else x[j * d + c]) - x[i * d + c]
+                length2 += (m.rest_vectors[k, c] + w) ** 2
+                stretch += (2.0 * m.rest_vectors[k, c] + w) * w
             length = math.sqrt(length2)
-            e = length - m.rest[k]
+            e = stretch / (length + m.spans[k]) + m.prestretch[k]
             rate = 0.0
             if damped:
                 for c in range(d):
-                    ri = m.positions[i, c] + x[i * d + c]
-                    rj = m.anchors[k, c] if j < 0 else m.positions[j, c] + x[j * d + c]
+                    w = (0.0 if j < 0 else x[j * d + c]) - x[i * d + c]
                     du = (0.0 if j < 0 else u[j * d + c]) - u[i * d + c]
-                    rate += du * (rj - ri) / length
+                    rate += du * (m.rest_vectors[k, c] + w) / length
             force, elastic = _law(kind[k], par[k, 0], par[k, 1], par[k, 2], e, rate, memory[k] if memory.size else 0.0)
             if damped:
                 power += (force - elastic) * rate
             for c in range(d):
-                ri = m.positions[i, c] + x[i * d + c]
-                rj = m.anchors[k, c] if j < 0 else m.positions[j, c] + x[j * d + c]
-                component = force * (rj - ri) / length
+                w = (0.0 if j < 0 else x[j * d + c]) - x[i * d + c]
+                component = force * (m.rest_vectors[k, c] + w) / length
                 out[i * d + c] += component
                 if j >= 0:
                     out[j * d + c] -= component
@@ -459,7 +467,7 @@ def _error_norm(err, y, y_new, atol, rtol):
     return worst
 
 
-@_jit(inline="always")
+@_jit()
 def _group_derivative(m, members, g, y, dy, N, n):
     """dy/dt of a group of members stepped together: their states one after the other in ``y``."""
     if members.size == 1:
@@ -717,10 +725,10 @@ def _verlet_member(m, b, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, mem
                 out_u[j, c] = (d00 * x_prev[c] + d01 * x[q]) / dt + d10 * u_prev[c] + d11 * u_now
             out_m[j] = memory
             j += 1
-        for k in range(memory.size):  # the memory after the step, from the new positions
-            if m.kind[k] == 3:
-                e, _ = _extension(m, k, x, u_half)
-                memory[k] = max(memory[k], e)
+        for link in range(memory.size):  # the memory after the step, from the new positions
+            if m.kind[link] == 3:
+                e, _ = _extension(m, link, x, u_half)
+                memory[link] = max(memory[link], e)
         for c in range(N):
             u_half[c] += dt * a[c]
         if not math.isfinite(x[0] + u_half[0]):

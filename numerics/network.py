@@ -17,7 +17,8 @@ rings.  A layout (:class:`~ringchain.numerics.Chain`, a sheet) builds the networ
   displacements from the configuration with every link just taut and unloaded; an anchor is
   at 0), in two or three dimensions |r_j - r_i| - L0 with r = rest position + displacement and
   L0 the rest length, the force acting along the link.  A positive force pulls its two sites
-  together.
+  together.  In a periodic network (a sheet with periodic sides) a link's far end may be the
+  periodic image of site j, its rest position shifted by a lattice period (``Links.shift``).
 
 The dynamics contract (what every integrator of :mod:`ringchain.numerics.integrate` calls;
 the ring-resolved chain, :class:`~ringchain.numerics.RingChain`, implements it too):
@@ -80,6 +81,15 @@ class Links:
         :attr:`Network.j` and the columns of a run's ``link_force``): given for every set of a
         network or for none (then the sets follow one another).  A chain interleaves its
         bending springs and contacts so that link k joins site k to site k + 1.
+    shift : array_like, shape (n_links, dim) or (dim,), optional
+        For a periodic network (two or three dimensions): the far end of each link is the
+        periodic image of site j, displaced by ``shift`` (m; a lattice period), so that its rest
+        position is ``positions[j] + shift``; default 0 (site j itself).
+    prestretch : float or array_like, shape (n_links,), optional
+        Extension of each link with both its ends at their rest positions, m (two or three
+        dimensions; default 0: the rest positions are the unloaded lattice).  A pretensioned
+        lattice whose rest positions are its static state gives each link its static extension
+        here: its unloaded length is the distance of its ends less the prestretch.
     """
 
     i: np.ndarray
@@ -87,6 +97,8 @@ class Links:
     law: Law
     anchor: np.ndarray | None = None
     index: np.ndarray | None = None
+    shift: np.ndarray | None = None
+    prestretch: np.ndarray | None = None
 
     def __post_init__(self):
         i = np.atleast_1d(np.asarray(self.i))
@@ -197,14 +209,20 @@ class Network:
                 raise ValueError(f"link site {name} out of range: sites are 0..{S - 1} (j = ANCHOR for the support)")
         if np.any(self.i == self.j):
             raise ValueError("a link joins two different sites")
-        anchors = np.zeros((L, dim))
+        anchors, shifts, stretch = np.zeros((L, dim)), np.zeros((L, dim)), np.zeros(L)
         start = 0
         for s in sets:
-            if s.anchor is not None:
-                anchors[position[start : start + s.size]] = np.broadcast_to(np.asarray(s.anchor, dtype=float),
-                                                                            (s.size, dim))  # fmt: skip
+            where = position[start : start + s.size]
+            for given, into in ((s.anchor, anchors), (s.shift, shifts)):
+                if given is not None:
+                    into[where] = np.broadcast_to(np.asarray(given, dtype=float), (s.size, dim))
+            if s.prestretch is not None:
+                stretch[where] = np.broadcast_to(v.as_float("prestretch", s.prestretch), (s.size,))
             start += s.size
-        self.anchor_positions = anchors
+        if (np.any(shifts) or np.any(stretch)) and (positions is None or dim == 1):
+            raise ValueError("links to periodic images (shift) and prestretched links are for networks in two or "
+                             "three dimensions, with the sites' rest positions")  # fmt: skip
+        self.anchor_positions, self.shifts, self.prestretch = anchors, shifts, stretch
         # One set per law class, in the order the classes first appear, its links in the network's order.
         groups: dict[type, list] = {}
         start = 0
@@ -263,13 +281,9 @@ class Network:
         return any(law.damped for law, _ in self.groups)
 
     @functools.cached_property
-    def stateful(self) -> bool:
-        """Whether a law has internal state (a memory per link, as :class:`~ringchain.numerics.laws.Thornton`)."""
-        return any(law.n_state for law, _ in self.groups)
-
-    @property
-    def stateful_laws(self) -> tuple:
-        """Names of the laws with internal state."""
+    def stateful(self) -> tuple:
+        """Names of the laws with internal state (a memory per link, as :class:`~ringchain.numerics.laws.Thornton`);
+        empty (false) if none."""
         return tuple(type(law).__name__ for law, _ in self.groups if law.n_state)
 
     def initial_memory(self) -> np.ndarray:
@@ -313,14 +327,27 @@ class Network:
         return masses
 
     @functools.cached_property
-    def rest_lengths(self) -> np.ndarray | None:
-        """Rest length of each link, m (None in one dimension without positions)."""
+    def rest_vectors(self) -> np.ndarray | None:
+        """Vector from site i to the far end of each link at rest, m, shape (n_links, dim) (None in one
+        dimension without positions): to site j (or its periodic image, ``shift``) or to the anchor."""
         if self.positions is None:
             return None
         far = np.where(
-            self.anchored[:, None], self.anchor_positions, self.positions[np.where(self.anchored, 0, self.j)]
-        )
-        return np.linalg.norm(far - self.positions[self.i], axis=-1)
+            self.anchored[:, None], self.anchor_positions,
+            self.positions[np.where(self.anchored, 0, self.j)] + self.shifts,
+        )  # fmt: skip
+        return far - self.positions[self.i]
+
+    @functools.cached_property
+    def spans(self) -> np.ndarray | None:
+        """Distance between the two ends of each link at their rest positions, m (:attr:`rest_vectors`)."""
+        return None if self.positions is None else np.sqrt(np.sum(self.rest_vectors**2, axis=-1))
+
+    @functools.cached_property
+    def rest_lengths(self) -> np.ndarray | None:
+        """Unloaded length of each link, m: :attr:`spans` less the ``prestretch`` (:class:`Links`); None in one
+        dimension without positions."""
+        return None if self.positions is None else self.spans - self.prestretch
 
     @functools.cached_property
     def length_scale(self) -> float | None:
@@ -335,10 +362,11 @@ class Network:
         centres /= total[:, None]
         inner = ~self.anchored
         a, b = self.rings[self.i[inner]], self.rings[self.j[inner]]
-        between = a != b
+        between = (a != b) | np.any(self.shifts[inner] != 0, axis=-1)
         if not np.any(between):
             return None
-        return float(np.min(np.linalg.norm(centres[b[between]] - centres[a[between]], axis=-1)))
+        gaps = centres[b[between]] + self.shifts[inner][between] - centres[a[between]]
+        return float(np.min(np.linalg.norm(gaps, axis=-1)))
 
     # -- batches --------------------------------------------------------------------------------
     @classmethod
@@ -474,14 +502,17 @@ class Network:
             e = far - x[..., ci]
             rate = None if u is None else np.where(anchored, 0.0, u[..., cj]) - u[..., ci]
             return e, rate, None
+        # The extension from the rest vector b and the relative displacement w of the ends:
+        # |b + w| - |b| = (2 b.w + w.w)/(|b + w| + |b|), without the cancellation of two lengths of order
+        # |b| (the extension keeps its own relative precision, as x_j - x_i does in one dimension), plus the
+        # prestretch (the extension at the rest positions, given exactly).
         X = x.reshape(*x.shape[:-1], -1, d)
-        P = self.positions
-        ri = P[i] + X[..., ci, :]
-        rj = np.where(anchored[:, None], self.anchor_positions[links], P[np.where(anchored, i, j)] + X[..., cj, :])
-        delta = rj - ri
-        length = np.linalg.norm(delta, axis=-1)
+        b = self.rest_vectors[links]
+        w = np.where(anchored[:, None], 0.0, X[..., cj, :]) - X[..., ci, :]
+        delta = b + w
+        length = np.sqrt(np.sum(delta * delta, axis=-1))
         direction = delta / length[..., None]
-        e = length - self.rest_lengths[links]
+        e = np.sum((2.0 * b + w) * w, axis=-1) / (length + self.spans[links]) + self.prestretch[links]
         rate = None
         if u is not None:
             U = u.reshape(*u.shape[:-1], -1, d)
@@ -552,11 +583,8 @@ class Network:
             part = law.take(np.searchsorted(index, links[hit])) if not np.array_equal(index, links[hit]) else law
             if part._shape() and len(part._shape()) > 1:  # a stack: parameters (B, n) against e (B, T, n)
                 part = part._rebuilt(**{k: p[:, None, :] if np.ndim(p) > 1 else p for k, p in part.params.items()})
-            args = (e[..., hit], None if rate is None else rate[..., hit])
-            if part.n_state and memory is not None:
-                out[..., hit] = part.force(*args, memory=np.asarray(memory)[..., links[hit]])
-            else:
-                out[..., hit] = part.force(*args)
+            out[..., hit] = self._law_call(part, "force", e[..., hit], memory, links[hit],
+                                           None if rate is None else rate[..., hit])  # fmt: skip
         return out
 
     # -- the dynamics contract ---------------------------------------------------------------------
@@ -765,26 +793,27 @@ class Network:
         return np.concatenate([per_site, E]) if self.damped else per_site
 
     def energy(self, x, u, x_start, g, dissipated, memory=None):
-        """Kinetic, contact, bending, gravity, dissipated and plastic energy, J, each of shape (...).
+        """Kinetic, contact, bending, gravity, dissipated and plastic energy, J, each of shape (...); ``memory`` (m,
+        shape (..., n_links)) of laws with one (default their initial memory), plastic work from a virgin contact."""
+        x = np.asarray(x)
 
-        ``memory`` (m, shape (..., n_links)): the memory of laws with one (default their initial memory);
-        the plastic work is counted from a virgin contact.
-        """
-        mass = np.repeat(self.mass, self.dim, axis=-1)
-        if mass.ndim > 1:  # a stack: (B, n) against states (B, T, n)
-            mass = mass[:, None, :]
+        def per_member(p):  # a stack's (B, n) parameters against states (B, n) or (B, T, n)
+            p = np.asarray(p)
+            return p.reshape(p.shape[0], *(1,) * (x.ndim - 2), p.shape[-1]) if p.ndim > 1 else p
+
+        mass = per_member(np.repeat(self.mass, self.dim, axis=-1))
         e, _, _ = self.geometry(x)
         stored = {"contact": np.zeros(e.shape[:-1]), "bending": np.zeros(e.shape[:-1])}
         plastic = np.zeros(e.shape[:-1])
         for law, index in self.groups:
             part = law
             if len(law._shape()) > 1:
-                part = law._rebuilt(**{k: p[:, None, :] if np.ndim(p) > 1 else p for k, p in law.params.items()})
+                part = law._rebuilt(**{k: per_member(p) for k, p in law.params.items()})
             stored[law.energy_kind] = stored[law.energy_kind] + np.sum(
                 self._law_call(part, "energy", e[..., index], memory, index), axis=-1)  # fmt: skip
             if law.n_state:
                 plastic = plastic + np.sum(self._law_call(part, "plastic_work", e[..., index], memory, index), axis=-1)
-        weight = self.weight_mass if self.weight_mass.ndim == 1 else self.weight_mass[:, None, :]
+        weight = per_member(self.weight_mass)
         height = np.asarray(x - x_start)
         if self.dim > 1:
             height = height.reshape(*height.shape[:-1], -1, self.dim)[..., -1]
@@ -862,7 +891,7 @@ class Network:
 
 
 #: The attributes of a network that a :meth:`Network.stack` shares with its first network.
-_LAYOUT = ("dim", "positions", "rings", "i", "j", "anchor_positions")
+_LAYOUT = ("dim", "positions", "rings", "i", "j", "anchor_positions", "shifts", "prestretch")
 
 
 def as_links(items: Sequence) -> list[Links]:

@@ -248,8 +248,19 @@ class Simulation(NetworkSimulation):
 
     # -- the sensor helpers (one run) --------------------------------------------------------------
     def sensor(self, ring: int) -> np.ndarray:
-        """Sensor force of ring ``ring`` (index from the impact end), N, shape (T,)."""
-        return self._sensor(np.array([self._ring(ring)]))[..., 0]
+        """Sensor force of ring ``ring`` (index from the impact end), N, shape (T,) (read-only: computed once per
+        ring and shared by the sensor helpers below)."""
+        i = self._ring(ring)
+        if i not in self._sensors:
+            force = self._sensor(np.array([i]))[..., 0]
+            force.flags.writeable = False
+            self._sensors[i] = force
+        return self._sensors[i]
+
+    @functools.cached_property
+    def _sensors(self) -> dict:
+        """What was read from this run's sensors: force by ring, ("peak", ring) the leading peak's (time, force)."""
+        return {}
 
     def _ring(self, ring) -> int:
         i = self.chain.ring_index(ring)
@@ -257,13 +268,23 @@ class Simulation(NetworkSimulation):
             raise ValueError(f"ring {i} was not recorded: this run kept rings {list(self.rings)} only (rings=...)")
         return i
 
+    def _peak(self, ring: int, threshold) -> tuple[float, float]:
+        """(time, force) of the leading peak at the sensor in ``ring`` (:func:`~.signals.peak`), read once per ring
+        at the default threshold."""
+        if threshold is not None:
+            return signals.peak(self.t, self.sensor(ring), threshold)
+        i = self._ring(ring)
+        if ("peak", i) not in self._sensors:
+            self._sensors["peak", i] = signals.peak(self.t, self.sensor(i))
+        return self._sensors["peak", i]
+
     def peak_force(self, ring: int, threshold=None) -> float:
         """Peak of the leading pulse read by the sensor in ``ring``, N (static tension included)."""
-        return signals.peak(self.t, self.sensor(ring), threshold)[1]
+        return self._peak(ring, threshold)[1]
 
     def arrival_time(self, ring: int, threshold=None) -> float:
         """Time of the leading peak at the sensor in ``ring``, s, from the impact."""
-        return signals.arrival_time(self.t, self.sensor(ring), threshold)
+        return self._peak(ring, threshold)[0]
 
     def _pair(self, near, far) -> tuple[int, int]:
         near, far = self._ring(near), self._ring(far)
@@ -273,16 +294,17 @@ class Simulation(NetworkSimulation):
         return near, far
 
     def time_of_flight(self, near: int, far: int, threshold=None) -> float:
-        """Time between the leading peaks at two sensors, s (``near`` < ``far``, counted from the impact)."""
+        """Time between the leading peaks at two sensors, s (``near`` < ``far``, counted from the impact; as
+        :func:`~.signals.time_of_flight`, each trace with its own baseline)."""
         near, far = self._pair(near, far)
-        return signals.time_of_flight(self.t, self.sensor(near), self.sensor(far), threshold)
+        return self.arrival_time(far, threshold) - self.arrival_time(near, threshold)
 
     def wave_speed(self, near: int, far: int, threshold=None) -> float:
         """(far - near) a over the time of flight, m/s (as measured in the paper)."""
         near, far = self._pair(near, far)
         a = self.chain.a
         distance = (far - near) * a if np.ndim(a) == 0 else float(np.sum(a[near:far]))  # centre to centre
-        return signals.wave_speed(self.t, self.sensor(near), self.sensor(far), distance, threshold)
+        return signals.speed_over(distance, self.time_of_flight(near, far, threshold))
 
     def pulse_width(self, ring: int, threshold=None) -> float:
         """Full width at half maximum of the leading pulse at the sensor in ``ring``, s."""

@@ -31,6 +31,7 @@ __all__ = [
     "arrival_time",
     "time_of_flight",
     "wave_speed",
+    "speed_over",
     "pulse_width",
     "estimate_baseline",
     "PulseError",
@@ -292,10 +293,15 @@ def wave_speed(t, y_near, y_far, distance, threshold=None, *, baseline=None) -> 
     600.0
     """
     distance = float(v.positive("distance", distance, "m"))
-    tof = time_of_flight(t, y_near, y_far, threshold, baseline=baseline)
-    if tof <= 0:
-        raise ValueError(f"the far trace peaks first (time of flight {tof:g} s): no wave from near to far")
-    return distance / tof
+    return speed_over(distance, time_of_flight(t, y_near, y_far, threshold, baseline=baseline))
+
+
+def speed_over(distance: float, time_of_flight: float) -> float:
+    """``distance`` (m) over a time of flight (s), m/s; a flight that is not positive is refused (no wave from the
+    near sensor to the far one)."""
+    if time_of_flight <= 0:
+        raise ValueError(f"the far trace peaks first (time of flight {time_of_flight:g} s): no wave from near to far")
+    return distance / time_of_flight
 
 
 def pulse_width(t, y, threshold=None, *, baseline=None) -> float:

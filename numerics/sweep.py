@@ -18,7 +18,7 @@ without any code change::
     from distributed import Client
     rows = sweep(grid, executor=Client("tcp://scheduler:8786").get_executor())
 
-Cost.  Each task records only its two sensor rings, and every task's work (Verlet steps x
+Cost.  Each task records only its two sensor rings, and every task's work (the expected steps x
 sites x runs) is estimated before the first one starts: a sweep with a task longer than
 ``max_seconds`` is refused with the estimate (:func:`estimate_task`).  The default
 duration (:func:`default_t_end`) stays finite as n -> 1.
@@ -44,10 +44,10 @@ from ringchain.theory import PAPER_TUBE_RADIUS, Ring, impact_speed, paper_data
 from ringchain.theory import _validate as v
 
 from . import signals
-from .chain import MODELS, Chain, sensor_pair
+from .chain import MODELS, Chain, sensor_pair, striker_convention
 from .chain_file import ChainFile, vary
-from .executors import InlineExecutor, default_executor
-from .experiment import default_t_end
+from .executors import InlineExecutor, run_tasks
+from .experiment import MAX_DOUBLINGS, default_t_end
 from .integrate import DEFAULT_MAX_SECONDS, RunTooLargeError, estimate_run, format_duration, simulate_batch
 
 __all__ = [
@@ -65,6 +65,7 @@ __all__ = [
     "DEFAULT_BATCH_SIZE",
     "DEFAULT_SAMPLES",
     "SWEEP_METHOD",
+    "SWEEP_RTOL",
 ]
 
 #: Runs integrated together in one task (one :func:`simulate_batch` call).
@@ -72,17 +73,21 @@ DEFAULT_BATCH_SIZE = 64
 
 #: Samples of each force record (evenly spaced over the duration).  Peak forces and
 #: times of flight read from 1001 samples differ from 8001 by < 1e-4 relative on the
-#: paper's chain, below the error of the Verlet integration itself (about 3e-4).
+#: paper's chain.
 DEFAULT_SAMPLES = 1001
 
-#: Integrator of the sweeps: fixed-step velocity Verlet.  Its cost per step does not
-#: depend on the batch's contents, so a batch of B runs costs far less than B runs; an
-#: adaptive method shares one step size across the batch, and the contact openings of
-#: every run shrink it (benchmarks/bench_batch.py).
-SWEEP_METHOD = "verlet"
+#: Integrator of the sweeps: the compiled Dormand-Prince pair, each run of a batch with its own
+#: steps (the runs in parallel over the cores), at :data:`SWEEP_RTOL`.  (The NumPy Verlet of
+#: earlier versions was chosen because a batch of B runs cost far less than B runs there; compiled,
+#: a run costs the same in a batch or alone, and the adaptive pair is 10x more accurate for the
+#: same work: benchmarks/bench_kernels.py.)
+SWEEP_METHOD = "dopri5"
 
-#: Times :func:`run_points` may double a default duration that ends inside the pulse.
-_MAX_DOUBLINGS = 4
+#: Relative tolerance of :data:`SWEEP_METHOD` in sweeps: sensor forces within 1-4e-4 of the peak
+#: against a tight reference on the paper's chain (drops of 1 and 30 cm), where the fixed-step
+#: Verlet of earlier sweeps was within 2-4e-3; the default 3e-10 of :func:`simulate` costs 3.4x
+#: the steps for digits a sweep's peak forces and times of flight do not show.
+SWEEP_RTOL = 1e-7
 
 
 @dataclass(frozen=True)
@@ -114,6 +119,11 @@ class Point:
         for the static theory only.
     sensors : tuple of int
         Two sensor rings counted from the impact, near first (default rings 6 and 12).
+    striker_mass : {"m_eff", "m0"} or float
+        Inertial mass of the struck ring 0 (:class:`~ringchain.numerics.Chain`): the lattice's
+        m_eff (default, the paper's convention), the ring's mass m0 (a rigid ring in free
+        fall), or a mass in kg.  The row says which (``striker_mass``) and how much
+        (``striker_mass_kg``).
 
     Examples
     --------
@@ -132,9 +142,11 @@ class Point:
     drop_height: float | None = None
     impact_velocity: float | None = None
     sensors: tuple = paper_data.SENSOR_RINGS
+    striker_mass: str | float = "m_eff"
 
     def __post_init__(self):
         set_ = functools.partial(object.__setattr__, self)
+        set_("striker_mass", striker_convention(self.striker_mass))
         set_("R_over_r", float(v.positive("R/r", self.R_over_r)))
         set_("r", float(v.positive("r", self.r, "m")))
         set_("angle", float(v.as_float("angle", self.angle)))
@@ -167,7 +179,8 @@ class Point:
 
     def chain(self) -> Chain:
         """The hanging chain of this point (:meth:`Chain.from_ring`)."""
-        return Chain.from_ring(self.ring, self.n_rings, self.model, m_eff_ratio=self.m_eff_ratio)
+        return Chain.from_ring(self.ring, self.n_rings, self.model, m_eff_ratio=self.m_eff_ratio,
+                               striker_mass=self.striker_mass)  # fmt: skip
 
     @property
     def speed(self) -> float | None:
@@ -196,6 +209,7 @@ class Point:
             "model": self.model,
             "n_rings": self.n_rings,
             "m_eff_ratio": self.m_eff_ratio,
+            **_striker_columns(self.striker_mass, self.m_eff_ratio * ring.mass, ring.mass),
             "drop_height_m": self.drop_height,
             "impact_velocity_m_s": self.speed,
             "ring_mass_kg": ring.mass,
@@ -225,6 +239,8 @@ class FilePoint:
     drop_height, impact_velocity : float, optional
         The impact (m, or m/s).
     sensors : (int, int)
+    striker_mass : {"m_eff", "m0"} or float
+        As in :class:`Point` (``"m0"``: the mass of ring 0 of the chain).
     """
 
     description: ChainFile
@@ -235,15 +251,19 @@ class FilePoint:
     drop_height: float | None = None
     impact_velocity: float | None = None
     sensors: tuple = paper_data.SENSOR_RINGS
+    striker_mass: str | float = "m_eff"
 
     dynamic = True
+
+    def __post_init__(self):
+        object.__setattr__(self, "striker_mass", striker_convention(self.striker_mass))
 
     @functools.cached_property
     def varied(self) -> ChainFile:
         return self.description if self.field is None else vary(self.description, self.field, self.value)
 
     def chain(self) -> Chain:
-        chain = self.varied.chain(self.model, self.m_eff_ratio)
+        chain = self.varied.chain(self.model, self.m_eff_ratio, striker_mass=self.striker_mass)
         sensor_pair(self.sensors, chain.n_rings)
         return chain
 
@@ -254,14 +274,24 @@ class FilePoint:
     @property
     def chain_key(self) -> tuple:
         kind = "drop" if self.drop_height is not None else "velocity"
-        return (self.description, self.field, self.value, self.model, self.m_eff_ratio, self.sensors, kind)
+        return (self.description, self.field, self.value, self.model, self.m_eff_ratio, self.sensors,
+                self.striker_mass, kind)  # fmt: skip
 
     def columns(self) -> dict:
         row = {} if self.field is None else {self.field: self.value}
-        row |= {"n_rings": self.varied.n_rings, "model": self.model, "impact_velocity_m_s": self.speed}
+        m0 = self.varied.rings()[0].mass  # ring 0, the struck ring
+        row |= {"n_rings": self.varied.n_rings, "model": self.model, "m_eff_ratio": self.m_eff_ratio,
+                **_striker_columns(self.striker_mass, self.m_eff_ratio * m0, m0),
+                "impact_velocity_m_s": self.speed}  # fmt: skip
         if self.drop_height is not None:
             row["drop_height_m"] = self.drop_height
         return row
+
+
+def _striker_columns(striker, m_eff: float, m0: float) -> dict:
+    """The striker's columns of a row: its convention ("m_eff", "m0", or "kg" for a given mass) and its mass, kg."""
+    mass = {"m_eff": m_eff, "m0": m0}.get(striker, striker)
+    return {"striker_mass": striker if isinstance(striker, str) else "kg", "striker_mass_kg": mass}
 
 
 _IMPACT = ("drop_height", "impact_velocity")
@@ -369,6 +399,8 @@ def _batch(points, t_end, n_samples, method, solver):
     else:
         impact = {"impact_velocities": [p.speed for p in points]}
     rings = (*first.sensors, chain.n_rings - 1)  # the sensors and the top ring (the support's force)
+    if method == SWEEP_METHOD and solver.get("rtol") is None:
+        solver = dict(solver, rtol=SWEEP_RTOL)
     return chain, t_end, dict(impact, n_samples=n_samples, method=method, rings=rings, **solver)
 
 
@@ -391,12 +423,12 @@ def run_points(points, *, t_end=None, n_samples=DEFAULT_SAMPLES, method=SWEEP_ME
     first = points[0]
     if not first.dynamic:
         return rows
-    retries = 0 if t_end is not None else _MAX_DOUBLINGS
+    retries = 0 if t_end is not None else MAX_DOUBLINGS
     chain, t_end, arguments = _batch(points, t_end, n_samples, method, solver)
     while True:
-        batch = simulate_batch(chain, t_end, **arguments)
+        runs = list(simulate_batch(chain, t_end, **arguments))  # each run reads its sensors once
         try:
-            for run in batch:
+            for run in runs:
                 signals.leading_pulse(run.t, run.sensor(first.sensors[1]))
             break
         except (signals.TruncatedPulseError, signals.NoPulseError) as exc:
@@ -408,7 +440,7 @@ def run_points(points, *, t_end=None, n_samples=DEFAULT_SAMPLES, method=SWEEP_ME
                 ) from None
         retries -= 1
         t_end *= 2.0
-    for row, run in zip(rows, batch, strict=True):
+    for row, run in zip(rows, runs, strict=True):
         row.update(_dynamics(first.sensors, run))
     return rows
 
@@ -485,8 +517,6 @@ def sweep(
     >>> [round(row["n_fit"], 3) for row in rows]
     [1.225, 1.107]
     """
-    from tqdm import tqdm
-
     try:
         batch_size = v.count("batch_size", batch_size, 1)
     except ValueError:
@@ -501,26 +531,13 @@ def sweep(
     tasks = [idx[k : k + batch_size] for idx in groups.values() for k in range(0, len(idx), batch_size)]
     options = {"t_end": t_end, "n_samples": n_samples, "method": method, "max_seconds": max_seconds, **solver}
     _check_work([[points[i] for i in task] for task in tasks], options)
-    own = executor is None
-    if own:
-        executor = default_executor(len(tasks), max_workers)
+    results = run_tasks(run_points, [([points[i] for i in task],) for task in tasks], executor, options=options,
+                        max_workers=max_workers, progress=progress, sizes=[len(task) for task in tasks], name="sweep",
+                        unit="point")  # fmt: skip
     rows: list[dict | None] = [None] * len(points)
-    try:
-        futures = {executor.submit(run_points, [points[i] for i in task], **options): task for task in tasks}
-        with tqdm(total=len(points), disable=not progress, unit="point", desc="sweep") as bar:
-            for future in cf.as_completed(futures):
-                task = futures[future]
-                for i, row in zip(task, future.result(), strict=True):
-                    rows[i] = row
-                bar.update(len(task))
-    except cf.BrokenExecutor as exc:
-        raise RuntimeError(
-            f"a worker of the sweep died ({exc}); a process may have run out of memory. "
-            "Run with max_workers=0 to see the error in this process."
-        ) from exc
-    finally:
-        if own:
-            executor.shutdown(cancel_futures=True)
+    for task, result in zip(tasks, results, strict=True):
+        for i, row in zip(task, result, strict=True):
+            rows[i] = row
     return rows
 
 
@@ -591,7 +608,7 @@ def _cell(value) -> str:
 
 def sweep_chain_file(description: ChainFile, field=None, values=(None,), *, model="dual-spring", m_eff_ratio=1.0,
                      drop_heights=None, impact_velocities=None, sensors=paper_data.SENSOR_RINGS, executor=None,
-                     **options) -> list[dict]:  # fmt: skip
+                     striker_mass="m_eff", **options) -> list[dict]:  # fmt: skip
     """One row per value of ``field`` (:func:`~ringchain.numerics.chain_file.vary`) and impact, through :func:`sweep`.
 
     Parameters
@@ -601,7 +618,7 @@ def sweep_chain_file(description: ChainFile, field=None, values=(None,), *, mode
         The varied field (``"2.R.last"``...); None runs ``description`` as it is.
     values : sequence
         Its values (m, degrees or ring counts).
-    model, m_eff_ratio
+    model, m_eff_ratio, striker_mass
         As in :meth:`~ringchain.numerics.chain_file.ChainFile.chain`.
     drop_heights, impact_velocities : sequence of float
         The impacts (m, or m/s), integrated together as one batch per chain.
@@ -615,14 +632,15 @@ def sweep_chain_file(description: ChainFile, field=None, values=(None,), *, mode
     Returns
     -------
     list of dict
-        Columns: the varied field's value, the chain's length and model, the impact, and the
+        Columns: the varied field's value, the chain's length, model, m_eff/m0 and striker, the impact, and the
         :data:`DYNAMIC_COLUMNS` (Eq. (8) only for a chain that does not change along its length).
     """
     if (drop_heights is None) == (impact_velocities is None):
         raise ValueError("give drop_heights or impact_velocities")
     impacts = [{"drop_height": h} for h in drop_heights] if drop_heights is not None else [
         {"impact_velocity": u} for u in impact_velocities]  # fmt: skip
-    points = [FilePoint(description, field, value, model, m_eff_ratio, sensors=tuple(sensors), **impact)
+    points = [FilePoint(description, field, value, model, m_eff_ratio, sensors=tuple(sensors),
+                        striker_mass=striker_mass, **impact)
               for value in values for impact in impacts]  # fmt: skip
     return sweep(points, executor, **options)
 

@@ -92,5 +92,6 @@ def test_the_command_line_is_thin_and_no_numerics_module_is_huge():
 @pytest.mark.parametrize("floor", ["network", "laws", "integrate", "results", "traces"])
 def test_the_engine_knows_no_layout_and_no_job(floor):
     above = {"chain", "chain_file", "ring_chain", "ring_beam", "paper", "experiment", "sweep", "fit", "fit_dynamic",
-             "junction", "effective_mass", "cli", "fit_cli", "_cli_options"}  # fmt: skip
+             "junction", "effective_mass", "cli", "fit_cli", "_cli_options", "sheet", "sheet_runs",
+             "sheet_cli"}  # fmt: skip
     assert {dep.rsplit(".", 1)[-1] for dep in graph()[f"ringchain.numerics.{floor}"]} & above == set()

@@ -90,7 +90,7 @@ tension ``T`` where ``F_0`` stands and its stiffness ``k`` where ``K`` stands; t
 chain (``sigma_K``, ``sigma_m``, ``correlation``, ``sigma_Z``) after the chain's parameters::
 
     F_y = first_yield(R, r, E, nu, angle, Y=Y).force
-    F = thornton_unloading_force(delta, delta_max=delta_max, K_c=K_c, delta_y=delta_y)
+    F = thornton_unloading_force(delta, delta_max=d_max, K_c=K_c, delta_y=d_y)
     c = effective_medium_speed(k=k, m=m, a=a)
 """
 

@@ -58,7 +58,7 @@ _MAGIC = b"# ringchain generated code v1 sha256="
 #: Names of cache entries (``contact._stiffness_elliptical-<20 hex digits>.py``) and of the
 #: temporary files they are written through: the only files :func:`clear_cache` removes.
 _ENTRY_NAME = re.compile(r"[A-Za-z_]\w*(?:\.[A-Za-z_]\w*)*-[0-9a-f]{20}\.py")
-_TEMP_NAME = re.compile(r"\.tmp-[\w.-]+\.py")
+_TEMP_NAME = re.compile(r"\.tmp-[A-Za-z_]\w*(?:\.[A-Za-z_]\w*)*-[0-9a-f]{20}-\d+-[0-9a-f]{8}\.py")
 
 
 class _LazySympy(types.ModuleType):
@@ -316,15 +316,28 @@ class CacheInfo:
 
 
 def _cache_files(directory: Path):
-    """(path, kind) of the cache's own files in ``directory``: kind "entry" or "temporary"."""
+    """(path, kind) of the cache's own files in ``directory``: kind "entry" or "temporary".
+
+    An entry is named as the cache names entries and starts with the cache's first bytes; a
+    temporary file is named as :func:`_write_atomic` names them.  Other files, even named
+    ``something-<key>.py``, are not the cache's: they are neither counted nor removed.
+    """
     try:
         children = list(directory.iterdir())
     except OSError:
         return
     for path in sorted(children):
-        if _ENTRY_NAME.fullmatch(path.name) and path.is_file():
-            yield path, "entry"
-        elif _TEMP_NAME.fullmatch(path.name) and path.is_file():
+        if not path.is_file():
+            continue
+        if _ENTRY_NAME.fullmatch(path.name):
+            try:
+                with open(path, "rb") as handle:
+                    head = handle.read(len(_MAGIC))
+            except OSError:  # pragma: no cover - removed or unreadable meanwhile
+                continue
+            if head == _MAGIC:
+                yield path, "entry"
+        elif _TEMP_NAME.fullmatch(path.name):
             yield path, "temporary"
 
 

@@ -1,23 +1,28 @@
 """The book: table of contents, citations, figures of the built site, and what a browser shows.
 
 The built site is ``book/_build/html``.  If it is missing or older than any source of the book
-or of the package, the fixture builds it with ``book/build.sh`` (every page executed, warnings
-fatal), which needs ``pip install -e ".[book]"`` and npm.
+or of the package, it is built with ``book/build.sh`` (every page executed, warnings fatal), which
+needs ``pip install -e ".[book]"`` and npm: in the background from the session's start (the root
+conftest, tests/book/building.py), or by the fixture.
 """
 
 from __future__ import annotations
 
 import html.parser
 import importlib.util
-import os
 import re
-import subprocess
 from pathlib import Path
 
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 BOOK = ROOT / "book"
+_spec = importlib.util.spec_from_file_location("book_building", Path(__file__).with_name("building.py"))
+building = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(building)
+
+# Every test here runs on one xdist worker (pyproject's ``--dist loadfile``: a file's tests stay together): they
+# share one build of the book, a session fixture, which each worker would otherwise make again.
 SITE = BOOK / "_build" / "html"
 
 
@@ -61,6 +66,8 @@ def test_every_chapter_is_in_the_table_of_contents_and_back():
         "rings_that_bend",
         "energy",
         "designing",
+        "disorder",
+        "sheets",
         "fitting",
         "paper_notes",
         "bibliography",
@@ -107,23 +114,17 @@ def test_mathjax_is_never_committed_and_never_in_static():
 # --- the built site --------------------------------------------------------------------------------
 
 
-def _newest_source_mtime() -> float:
-    paths = [*BOOK.glob("*.md"), *BOOK.glob("*.yml"), *BOOK.glob("*.py")]
-    paths += [BOOK / "references.bib", BOOK / "matplotlibrc"]
-    paths += [BOOK / "browser_check.js", *(BOOK / "_css").glob("*.css")]
-    paths += [*(ROOT / "theory").glob("*.py"), *(ROOT / "numerics").glob("*.py")]
-    return max(p.stat().st_mtime for p in paths)
-
-
 @pytest.fixture(scope="session")
 def site() -> Path:
-    index = SITE / "index.html"
-    if not index.is_file() or index.stat().st_mtime < _newest_source_mtime():
+    """The built site: the background build's (tests/book/building.py), or built here if it is stale."""
+    outcome = building.wait()
+    if outcome is None and building.stale():
         if importlib.util.find_spec("jupyter_book") is None:
             pytest.skip('the book is not built and Jupyter Book is not installed (pip install -e ".[book]")')
-        env = {k: v for k, v in os.environ.items() if k != "MPLBACKEND"}
-        result = subprocess.run(["bash", str(BOOK / "build.sh")], env=env, capture_output=True, text=True)
-        assert result.returncode == 0, result.stdout[-5000:] + result.stderr[-5000:]
+        outcome = building.build()
+    if outcome is not None:
+        code, log = outcome
+        assert code == 0, log[-10000:]
     return SITE
 
 

@@ -117,17 +117,79 @@ def test_sweep_varies_a_grading_parameter(capsys, tmp_path):
     assert all(float(r["support_peak_N"]) > 0 and math.isfinite(float(r["wave_speed_m_s"])) for r in rows)
 
 
+def test_a_free_chain_runs_without_gravity_in_this_process(capsys, tmp_path):
+    # Issue 24, item 15: support = "free" was documented but no command could run it (gravity always on);
+    # sweep --chain --workers 0 was refused.
+    path = tmp_path / "free.toml"
+    path.write_text('support = "free"\n' + TWO_SEGMENTS)
+    out_csv = tmp_path / "run.csv"
+    code, out, err = run(capsys, "simulate", "--chain", str(path), "--impact-velocity", "1", "--no-gravity", "--model",
+                         "power-law", "--sensors", "2", "7", "--samples", "401", "--out", str(out_csv))  # fmt: skip
+    assert code == 0 and err == "", err
+    assert "support:" not in out  # a free far end carries no support force
+    table = np.loadtxt(out_csv, delimiter=",", skiprows=1)
+    chain = read_chain_file(path).chain("power-law")
+    sim = simulate(chain, table[-1, 0], impact_velocity=1.0, gravity=False, n_samples=401)
+    np.testing.assert_array_equal(table[:, 1:], np.column_stack([sim.sensor(2), sim.sensor(7)]))  # 17 digits: exact
+    code, out, err = run(capsys, "sweep", "--chain", str(path), "--impact-velocity", "1", "2", "--no-gravity",
+                         "--workers", "0", "--sensors", "2", "7")  # fmt: skip
+    assert code == 0 and err == "", err
+    rows = list(csv.DictReader(io.StringIO(out)))
+    assert len(rows) == 2 and rows[0]["support_peak_N"] == "" and float(rows[1]["peak_force_near_N"]) > 0
+
+
+@pytest.mark.parametrize("encoding", ["utf-8-sig", "utf-16"])
+def test_a_chain_file_with_a_byte_order_mark_is_read(tmp_path, encoding):
+    # Issue 24, item 15: an editor's byte-order mark gave "Invalid statement (at line 1, column 1)".
+    path = tmp_path / "chain.toml"
+    path.write_text("# R in m, angle in \u00b0\n" + TWO_SEGMENTS, encoding=encoding)
+    assert read_chain_file(path).segments == parse_chain(TWO_SEGMENTS).segments
+
+
+def test_a_chain_file_that_is_not_utf8_is_refused_by_name(capsys, tmp_path):
+    # Issue 24, item 15: "'utf-8' codec can't decode byte 0xb0", without the file's name.
+    path = tmp_path / "latin.toml"
+    path.write_bytes(("# angle in \u00b0\n" + TWO_SEGMENTS).encode("latin-1"))
+    code, out, err = run(capsys, "simulate", "--chain", str(path), "--drop-height", "0.05", "--out",
+                         str(tmp_path / "x.csv"))  # fmt: skip
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert f"argument --chain: {path}, line 1: byte 12 (0xb0) is not UTF-8 text" in err
+
+
 @pytest.mark.parametrize(
     ("argv", "message"),
     [
         (["simulate", "--chain", "/nonexistent/chain.toml", "--drop-height", "0.05", "--out", "x.csv"],
-         "argument --chain: cannot read /nonexistent/chain.toml"),
+         "argument --chain: /nonexistent/chain.toml: cannot read the file (No such file or directory)"),
         (["simulate", "--chain", "{bad}", "--drop-height", "0.05", "--out", "x.csv"],
          "segment 2, field 'profile': must be one of"),
         (["simulate", "--chain", "{good}", "--drop-height", "0.05", "--R", "0.03", "--out", "x.csv"],
          "argument --R: not allowed with --chain"),
+        # Issue 24, item 15: the remedy was "give --rings 13", which --chain refuses.
         (["simulate", "--chain", "{good}", "--drop-height", "0.05", "--out", "x.csv"],
-         "sensor ring 12 is not in a chain of 9 rings"),
+         "sensor ring 12 is not in the 9 rings of chain file {good} (0..8); give sensors below 9 (--sensors 3 6, say), "
+         "or a chain file of 13 rings or more"),
+        (["sweep", "--chain", "{good}", "--drop-height", "0.05"], "sensor ring 12 is not in the 9 rings of chain file"),
+        (["sweep", "--chain", "{good}", "--vary", "1.rings", "2", "--drop-height", "0.05", "--sensors", "2", "7"],
+         "sensor ring 7 is not in the 6 rings of chain file"),
+        (["sweep", "--chain", "{good}", "--vary", "1.rings", "2000000", "--drop-height", "0.05", "--sensors", "2", "7"],
+         "argument --vary: the chain of 1.rings = 2e+06 has 2000004 rings; the command line builds chains of at most "
+         "1000000 rings"),
+        # Issue 24, item 15: --material was accepted silently when it named the default material.
+        (["simulate", "--chain", "{good}", "--drop-height", "0.05", "--material", "stainless", "--out", "x.csv"],
+         "argument --material: not allowed with --chain"),
+        (["simulate", "--chain", "{good}", "--drop-height", "0.05", "--rings", "20", "--out", "x.csv"],
+         "argument --rings: not allowed with --chain"),
+        (["sweep", "--chain", "{good}", "--drop-height", "0.05", "--R-over-r", "9", "--sensors", "2", "7"],
+         "argument --R-over-r: not allowed with --chain"),
+        # Issue 24, item 8: the output overwrote the chain file.
+        (["simulate", "--chain", "{good}", "--drop-height", "0.05", "--sensors", "2", "7", "--out", "{good}"],
+         "argument --out: {good} is an input of this command and would be overwritten"),
+        (["sweep", "--chain", "{good}", "--drop-height", "0.05", "--sensors", "2", "7", "--out", "{good}"],
+         "argument --out: {good} is an input of this command and would be overwritten"),
+        # Issue 24, item 15: a free far end could not be run (gravity always on).
+        (["simulate", "--chain", "{free}", "--impact-velocity", "1", "--sensors", "2", "7", "--out", "x.csv"],
+         'has support = "free": a chain with a free far end cannot hang under gravity; give --no-gravity'),
         (["sweep", "--chain", "{good}", "--vary", "2.R.last", "--drop-height", "0.05"], "give a field and at least"),
         (["sweep", "--chain", "{good}", "--vary", "4.R", "0.01", "--drop-height", "0.05", "--sensors", "2", "7"],
          "there is no segment 4"),
@@ -136,10 +198,12 @@ def test_sweep_varies_a_grading_parameter(capsys, tmp_path):
     ],
 )  # fmt: skip
 def test_chain_file_errors_are_one_line_with_exit_code_2(capsys, tmp_path, argv, message):
-    good, bad = tmp_path / "good.toml", tmp_path / "bad.toml"
+    good, bad, free = tmp_path / "good.toml", tmp_path / "bad.toml", tmp_path / "free.toml"
     good.write_text(TWO_SEGMENTS)
     bad.write_text(TWO_SEGMENTS.replace('"geometric"', '"cubic"'))
-    argv = [a.format(good=good, bad=bad) if "{" in a else a for a in argv]
+    free.write_text('support = "free"\n' + TWO_SEGMENTS)
+    argv = [a.format(good=good, bad=bad, free=free) if "{" in a else a for a in argv]
+    message = message.format(good=good)
     argv = [str(tmp_path / a) if a == "x.csv" else a for a in argv]
     code, out, err = run(capsys, *argv)
     assert code == 2 and out == "" and err.count("\n") == 1, err

@@ -268,9 +268,10 @@ def test_paper_refuses_a_negative_drop_height(capsys, tmp_path):
 # -- the parser and the console script ------------------------------------------------------------------
 def test_help_exits_0_and_no_subcommand_exits_2(capsys):
     code, out, _ = run(capsys, "--help")
-    assert code == 0 and all(name in out for name in ("paper", "ring", "simulate", "sweep", "cache"))
+    assert code == 0 and all(name in out for name in ("paper", "ring", "simulate", "sweep", "ensemble", "cache"))
     code, out, err = run(capsys)
-    assert_one_line_error(code, out, err, "the following arguments are required: {paper,ring,simulate,sweep,cache,fit}")
+    required = "the following arguments are required: {paper,ring,simulate,sweep,ensemble,cache,fit,sheet}"
+    assert_one_line_error(code, out, err, required)
 
 
 def test_version_is_the_package_version_in_one_line(capsys):
@@ -614,22 +615,41 @@ def test_cache_info_and_clear(capsys, tmp_path, monkeypatch):
     assert code == 0
     assert f"location  {cache} (from RINGCHAIN_CACHE_DIR)" in out
     assert "none (the folder does not exist yet)" in out and "yes (the folder will be created)" in out
-    # One entry of the current key, one stale, one leftover temporary file and a file of the user's.
+    # One entry of the current key, one stale, one leftover temporary file and files of the user's, two of
+    # them named like the cache's (issue 24, item 15: `cache clear` removed any *-<key>.py and .tmp-*.py).
     x = __import__("sympy").Symbol("x")
     _codegen.Derived(lambda: ((x,), x + 1), name="probe")(1.0)
-    (cache / "contact.old-0123456789abcdef0123.py").write_text("# old\n")
-    (cache / ".tmp-contact.old-0123456789abcdef0123-42-abcd.py").write_text("")
+    (cache / "contact.old-0123456789abcdef0123.py").write_bytes(_codegen._MAGIC + b"0" * 64 + b"\n# old\n")
+    (cache / ".tmp-contact.old-0123456789abcdef0123-42-0a1b2c3d.py").write_text("")
     (cache / "notes.txt").write_text("mine")
+    (cache / f"mine-{_codegen.source_key()}.py").write_text("print('my own script')\n")
+    (cache / ".tmp-mine.py").write_text("")
+    users = {"notes.txt", f"mine-{_codegen.source_key()}.py", ".tmp-mine.py"}
     code, out, _ = run(capsys, "cache", "info")
     assert code == 0
     assert f"key       {_codegen.source_key()}" in out
     assert "entries   1 for this key, 1 stale (other keys), 1 temporary files" in out
-    size = sum(p.stat().st_size for p in cache.iterdir() if p.name != "notes.txt")
+    size = sum(p.stat().st_size for p in cache.iterdir() if p.name not in users)
     assert f"size      {size} bytes" in out
     assert "writable  yes\n" in out
     code, out, _ = run(capsys, "cache", "clear")
     assert code == 0 and out == f"removed 3 files ({size} bytes) from {cache}\n"
-    assert [p.name for p in cache.iterdir()] == ["notes.txt"]  # only the cache's own files go
+    assert {p.name for p in cache.iterdir()} == users  # only the cache's own files go
+    _codegen.Derived(lambda: ((x,), x + 2), name="probe2")(1.0)
+    code, out, _ = run(capsys, "cache", "clear")
+    assert code == 0 and out.startswith("removed 1 file (")  # not "1 files"
+
+
+def test_cache_info_and_clear_of_a_file_where_the_folder_should_be(capsys, tmp_path, monkeypatch):
+    # Issue 24, item 15: `cache info` said "the folder does not exist yet" of a plain file.
+    plain = tmp_path / "plain"
+    plain.write_text("data")
+    monkeypatch.setenv("RINGCHAIN_CACHE_DIR", str(plain))
+    for action in ("info", "clear"):
+        code, out, err = run(capsys, "cache", action)
+        assert_one_line_error(code, out, err, f"ringchain cache {action}: error: the cache folder {plain} ")
+        assert "is a file, not a folder" in err
+    assert plain.read_text() == "data"
 
 
 def test_cache_info_of_a_disabled_and_of_an_unwritable_cache(capsys, tmp_path, monkeypatch):
@@ -662,3 +682,100 @@ def test_running_out_of_memory_is_one_line(capsys, monkeypatch, tmp_path):
     monkeypatch.setattr(experiment, "run_experiment", exhausted)
     code, out, err = run(capsys, *SIMULATE, "--out", str(tmp_path / "run.csv"))
     assert_one_line_error(code, out, err, "ringchain simulate: error: out of memory; use fewer --rings, --samples")
+
+
+# -- issue 24: sizes, durations, interruptions ------------------------------------------------------------
+def test_a_chain_too_long_for_the_command_line_is_refused_before_it_is_built(capsys, tmp_path, no_work):
+    # Issue 24, item 11: --rings 100000000 took 15.7 GB and 34 s before refusing; a chain file of 1e8 rings,
+    # 2.8 GB and growing.  The refusal names the command line's limit and the way around it.
+    code, out, err = run(capsys, "simulate", "--rings", "100000000", "--drop-height", "0.05", "--out",
+                         str(tmp_path / "run.csv"))  # fmt: skip
+    assert_one_line_error(code, out, err, "argument --rings: at most 1000000 rings from the command line (use "
+                                          "ringchain.numerics.simulate for more), got 100000000")  # fmt: skip
+    code, out, err = run(capsys, "sweep", "--rings", "20", "100000000", "--drop-height", "0.05")
+    assert_one_line_error(code, out, err, "argument --rings: at most 1000000 rings")
+    chain = tmp_path / "long.toml"
+    chain.write_text("[[segment]]\nrings = 100000000\nR = 22.5e-3\nr = 2.5e-3\n")
+    code, out, err = run(capsys, "simulate", "--chain", str(chain), "--drop-height", "0.05", "--out",
+                         str(tmp_path / "run.csv"))  # fmt: skip
+    assert_one_line_error(code, out, err, f"argument --chain: chain file {chain} has 100000000 rings; the command "
+                                          "line builds chains of at most 1000000 rings")  # fmt: skip
+
+
+def test_a_chain_that_cannot_fit_in_memory_is_refused_before_its_network_is_built(capsys, monkeypatch, tmp_path):
+    # Issue 24, item 11: the estimate came after the network (and the memory) was built.  With 100 MB
+    # available, the 2e6 sites of 1e6 rings need 3.2e8 bytes at 160 bytes per site: 305 MB of 2^20 bytes.
+    from ringchain.numerics import RunTooLargeError, integrate
+
+    monkeypatch.setattr(integrate, "_available_memory", lambda: 100 * 2**20)
+
+    def built(self):
+        raise AssertionError("the network was built")
+
+    monkeypatch.setattr(Chain, "network", built)
+    chain = Chain.from_ring(Ring.from_aspect_ratio(9.0), 1_000_000)
+    with pytest.raises(RunTooLargeError, match=r"a model of 2000000 sites needs about 305 MB .* more than the 100 MB"):
+        simulate(chain, 1e-3, drop_height=0.05)
+    code, out, err = run(capsys, "simulate", "--rings", "1000000", "--drop-height", "0.05", "--out",
+                         str(tmp_path / "run.csv"))  # fmt: skip
+    assert_one_line_error(code, out, err, "more than the 100 MB available; take fewer rings. From the command line: "
+                                          "fewer --rings")  # fmt: skip
+
+
+def test_simulate_records_only_the_rings_it_writes(capsys, monkeypatch, tmp_path):
+    # Issue 24, item 11: --rings 100000 recorded every ring (5.4 GB) though only two sensors are written.
+    from ringchain.numerics import experiment
+
+    recorded = []
+
+    def spy(chain, t_end, **options):
+        recorded.append(options["rings"])
+        return simulate(chain, t_end, **options)
+
+    monkeypatch.setattr(experiment, "simulate", spy)
+    assert run(capsys, *SIMULATE, "--out", str(tmp_path / "run.csv"))[0] == 0
+    assert recorded == [[2, 5, 7]]  # the two sensors and the top ring (the support's force)
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [["--rings", "2", "--sensors", "0", "1"], ["--R", "22.5", "--r", "2.5"]],
+    ids=["two-rings", "R-in-mm"],
+)
+def test_the_default_duration_grows_until_the_pulse_has_passed(capsys, tmp_path, argv):
+    # Issue 24, item 15: the default t_end ended inside the pulse on a 2-ring chain, or with R typed in mm (rings
+    # 45 m across), and simulate stopped at "the traces are written, but their leading pulses cannot be read".
+    code, out, err = run(capsys, "simulate", *argv, "--drop-height", "0.05", "--out", str(tmp_path / "run.csv"))
+    assert code == 0 and err == "", err
+    assert "time of flight" in out
+
+
+def test_ctrl_c_ends_in_one_line(capsys, monkeypatch, tmp_path):
+    # Issue 24, item 10: Ctrl-C gave a traceback.
+    from ringchain.numerics import experiment
+
+    def interrupted(*args, **kwargs):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(experiment, "run_experiment", interrupted)
+    code, out, err = run(capsys, *SIMULATE, "--out", str(tmp_path / "run.csv"))
+    assert code == 130 and out == "" and err.strip() == "ringchain simulate: interrupted"
+
+
+def test_a_reader_that_stops_early_ends_the_command_quietly():
+    # Issue 24, item 15: `--json | head` printed "error: [Errno 32] Broken pipe" and Python's own complaint.
+    program = ("import sys\n"
+               "from ringchain.numerics import cli\n"
+               "def info(args):\n"
+               "    for k in range(200000):\n"
+               "        print(k)\n"
+               "    return 0\n"
+               "cli._cache_info = info\n"
+               "sys.exit(cli.main(['cache', 'info']))\n")  # fmt: skip
+    with subprocess.Popen([sys.executable, "-c", program], stdout=subprocess.PIPE, stderr=subprocess.PIPE) as reader:
+        first = reader.stdout.readline()
+        reader.stdout.close()  # as head does after its lines
+        stderr = reader.stderr.read()
+        code = reader.wait(timeout=60)
+    assert code == 141 and first == b"0\n"  # 128 + SIGPIPE, as a shell reports `yes | head`
+    assert stderr == b""

@@ -145,3 +145,17 @@ def test_the_scheduler_check_reads_the_greeting_through_distributeds_comm_layer(
         executors.check_dask_scheduler(cluster.scheduler_address, timeout=5.0)  # a scheduler: no error
         ours = [peer for peer, loop in reads if loop is not cluster.loop.asyncio_loop]  # not the cluster's own comms
     assert ours == [cluster.scheduler_address]  # one read, of the scheduler's greeting, through TCP.read
+
+
+def test_pool_workers_share_the_cores_between_their_numba_threads(monkeypatch):
+    # Numba starts one thread per core in each process: two workers on 2 cores ran 4 threads.
+    import os
+
+    monkeypatch.delenv("NUMBA_NUM_THREADS", raising=False)
+    cpus = os.cpu_count() or 1
+    with default_executor(2, 2) as pool:
+        counts = [pool.submit(os.getenv, "NUMBA_NUM_THREADS").result() for _ in range(2)]
+    assert counts == [str(max(1, cpus // 2))] * 2
+    monkeypatch.setenv("NUMBA_NUM_THREADS", "3")  # a count the user set is kept
+    with default_executor(1, 1) as pool:
+        assert pool.submit(os.getenv, "NUMBA_NUM_THREADS").result() == "3"

@@ -202,3 +202,20 @@ def test_a_network_built_link_by_link_is_the_chains():
     # The same laws on the same links: the same forces, whatever the grouping (exact).
     np.testing.assert_array_equal(by_hand.forces(by_hand.extension(x)), chain.forces(chain.extension(x)))
     np.testing.assert_allclose(by_hand.accelerations(x, u, G), chain.accelerations(x, u, G), rtol=1e-14)
+
+
+def test_energy_of_a_stack_at_one_time_and_over_a_record_is_each_members():
+    # The engine's energy watch passes a stack's states at one time, shape (B, n); a record has
+    # shape (B, T, n).  Both were read with the stacked masses broadcast against the wrong axis.
+    chains = [Chain.power_law(4, K=K, n=1.5, m=m, a=0.04) for K, m in ((1e6, 0.01), (2e6, 0.03))]
+    stack = Network.stack([c.network() for c in chains])
+    rng = np.random.default_rng(1)
+    x, u = rng.normal(0, 1e-5, (2, 3, 4)), rng.normal(0, 0.1, (2, 3, 4))
+    for b, chain in enumerate(chains):
+        alone = chain.network().energy(x[b], u[b], np.zeros(4), 9.81, 0.0)
+        at_once = stack.energy(x[:, 1], u[:, 1], np.zeros((2, 4)), 9.81, 0.0)
+        over = stack.energy(x, u, np.zeros((2, 1, 4)), 9.81, 0.0)
+        # The same sums in the same order: equal to rounding.
+        np.testing.assert_allclose(at_once.total[b], alone.total[1], rtol=1e-12)
+        np.testing.assert_allclose(over.total[b], alone.total, rtol=1e-12)
+        np.testing.assert_allclose(over.kinetic[b], alone.kinetic, rtol=1e-12)

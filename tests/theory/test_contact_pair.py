@@ -5,6 +5,8 @@ import numpy as np
 import pytest
 from ringchain.theory import contact, hertz_stiffness, hertz_stiffness_pair
 from ringchain.theory._codegen import sp
+from scipy.optimize import brentq
+from scipy.special import ellipe, ellipk
 
 STEEL = (193e9, 0.29)
 BRASS = (100e9, 0.34)
@@ -142,3 +144,43 @@ def test_identical_pairs_inside_an_array(aspect, angle):
 def test_the_issue_case_of_an_identical_pair_in_an_array():
     K = hertz_stiffness_pair(np.array([22.5e-3, 15e-3]), 2.5e-3, *STEEL, 15e-3, 2.5e-3, *STEEL)
     assert K[1] == hertz_stiffness(15e-3, 2.5e-3, *STEEL)
+
+
+def _stiffness_from_the_surfaces(R1, r1, E1, nu1, R2, r2, E2, nu2, angle):
+    """K_c from the two tori's own surfaces: a second route for unequal rings (issue 24, item 16).
+
+    Ring 1's plane is xz, its centre the origin; ring 2 hangs through it, centre at z = (R1 - r1) + (R2 - r2),
+    its plane turned by ``angle`` about z.  Near the contact point (0, 0, R1 - r1) the inner surfaces are
+    z1 = sqrt((R1 - sqrt(r1^2 - y^2))^2 - x^2) and z2 = d - sqrt((R2 - sqrt(r2^2 - y'^2))^2 - x'^2) (x', y'
+    in ring 2's turned frame): the gap z1 - z2, whose Hessian by second differences gives the curvature sums
+    (no principal radius assumed), and Hertz's ellipse (Johnson Sec. 4.2, as in _independent_stiffness).
+    """
+    d = (R1 - r1) + (R2 - r2)
+    cos, sin = np.cos(angle), np.sin(angle)
+
+    def gap(x, y):
+        xt, yt = x * cos + y * sin, -x * sin + y * cos
+        z1 = np.sqrt((R1 - np.sqrt(r1**2 - y**2)) ** 2 - x**2)
+        z2 = d - np.sqrt((R2 - np.sqrt(r2**2 - yt**2)) ** 2 - xt**2)
+        return z1 - z2
+
+    h = 1e-3 * min(r1, r2)
+    hessian = np.array([
+        [gap(h, 0) - 2 * gap(0, 0) + gap(-h, 0), (gap(h, h) - gap(h, -h) - gap(-h, h) + gap(-h, -h)) / 4],
+        [0.0, gap(0, h) - 2 * gap(0, 0) + gap(0, -h)],
+    ]) / h**2  # fmt: skip
+    hessian[1, 0] = hessian[0, 1]
+    A, B = np.linalg.eigvalsh(hessian / 2)  # gap = A x'^2 + B y'^2 in the principal axes, A <= B
+    E_star = 1 / ((1 - nu1**2) / E1 + (1 - nu2**2) / E2)
+    m = brentq(lambda m: (ellipe(m) / (1 - m) - ellipk(m)) / (ellipk(m) - ellipe(m)) - B / A, 1e-14, 1 - 1e-15)
+    K, E = ellipk(m), ellipe(m)
+    return 2 * np.pi / 3 * E_star * np.sqrt((K - E) / (A * m)) * K**-1.5
+
+
+@pytest.mark.parametrize("angle", [1.3, 1.1])
+@pytest.mark.parametrize(("ring1", "ring2"), PAIRS)
+def test_unequal_rings_against_the_curvature_of_their_own_surfaces(ring1, ring2, angle):
+    expected = _stiffness_from_the_surfaces(*ring1, *ring2, angle)
+    # Second differences at h = 1e-3 r: truncation (h/r)^2 = 1e-6 of the curvatures and rounding
+    # eps R/h^2 ~ 1e-6 of them; K_c follows them to first order: 1e-5 leaves a margin (measured below 1e-6).
+    assert float(hertz_stiffness_pair(*ring1, *ring2, angle)) == pytest.approx(expected, rel=1e-5)

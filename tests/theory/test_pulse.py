@@ -118,6 +118,27 @@ def test_impact_law_puts_the_striker_energy_into_the_wave():
     assert sp.simplify(m_s * sp.diff(log_law, m_s) - n / (n + 1)) == 0
 
 
+def test_the_striker_mass_is_a_symbol_of_the_derivation():
+    """The striker's mass enters the impact law as m_s, derived (not typed): with m_s = m, the chain's own ring,
+    it is the law of the paper's convention (the energy of the wave equal to m v_0^2/2); a rigid striker of
+    mass m0 raises F_m by (m0/m)^(n/(n+1))."""
+    law = pulse.impact_law()
+    assert m_s in law.free_symbols and m not in law.free_symbols  # the chain's m cancels: only the striker's counts
+    (own,) = sp.solve(sp.Eq(pulse.energy(), m * v_0**2 / 2), F_m, check=False)
+
+    def same(x, y):  # powers of positive quantities: equal logarithms
+        return sp.simplify(sp.expand_log(sp.log(x) - sp.log(y), force=True)) == 0
+
+    assert same(law.subs(m_s, m), own)
+    m0 = sp.Symbol("m_0", positive=True)
+    assert same(law.subs(m_s, m0) / law.subs(m_s, m), (m0 / m) ** (n / (n + 1)))
+    assert not same(law.subs(m_s, m0), own)  # the check can fail
+    # The numeric function: the default striker is the ring (m_striker = m), and a heavier one scales the same way.
+    args = dict(K=4.9e6, n=1.11, m=8.2e-3, a=0.04)
+    heavy = impact_amplitude(0.99, **args, m_striker=8.2e-3 / 0.37) / impact_amplitude(0.99, **args)
+    assert float(heavy) == pytest.approx((1 / 0.37) ** (1.11 / 2.11), rel=1e-12)  # rounding of exp/log only
+
+
 # --- numeric functions -------------------------------------------------------------------------------
 
 

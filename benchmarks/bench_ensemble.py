@@ -1,0 +1,106 @@
+"""128 disordered 40-ring chains in one ``ensemble`` call on 2 cores, and how the time scales.
+
+The chains are the issue's (issue 23): R/r = 9 rings (the paper's, m_eff/m0 = 0.37) whose radii
+spread by 10 % (R) and 5 % (r), 40 to a chain, hanging, struck by a 5 cm drop and read at every
+ring.  The script prints, each measured in this run on this machine:
+
+- the headline: one :func:`~ringchain.numerics.ensemble` call of 128 members on ``--workers``
+  local processes (default 2), wall time and time per member (the issue's goal: 10 s with the
+  compiled engine of issue 20); the wall time includes starting the worker processes, which the
+  script measures separately (an ensemble of two members, one per worker);
+- the same 128 members as a loop over :func:`~ringchain.numerics.simulate` on one core (the
+  issue's "today 6-8 s"), on every ``--subset``-th member scaled up;
+- scaling with the count (16 to 128 members) and with the workers (0: this process, 1, 2) at a
+  fixed batch size, and with the batch size in this process: an adaptive method steps a
+  stacked batch with one step size, so batching pays only when the engine gives each member its
+  own steps (issue 20).
+
+The integrator is :func:`~ringchain.numerics.simulate_batch`'s default unless ``--method`` says
+otherwise; every timing is the best of ``--repeat`` (default 1: the runs are long); the load
+average is printed, since the machine is shared.
+
+Run: ``python benchmarks/bench_ensemble.py [--model power-law] [--workers 2] [--method odeint] [--quick]``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import time
+
+import numpy as np
+from ringchain.numerics import DEFAULT_METHOD, Chain, ensemble, simulate
+from ringchain.numerics.disorder import member_seeds
+from ringchain.numerics.ensemble import DEFAULT_BATCH_SIZE
+from ringchain.theory import Ring
+
+RING = Ring.from_aspect_ratio(9.0)
+SPREAD = {"R": 0.10, "r": 0.05}
+N_RINGS, COUNT, DROP, M_EFF = 40, 128, 0.05, 0.37
+
+
+def timed(repeat, func):
+    best, result = np.inf, None
+    for _ in range(repeat):
+        start = time.perf_counter()
+        result = func()
+        best = min(best, time.perf_counter() - start)
+    return best, result
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--model", default="power-law", choices=("power-law", "dual-spring"))
+    parser.add_argument("--workers", type=int, default=2, help="local processes of the headline call (default 2)")
+    parser.add_argument("--method", default=None, help=f"integrator (default simulate's, {DEFAULT_METHOD})")
+    parser.add_argument("--batch-size", type=int, default=DEFAULT_BATCH_SIZE)
+    parser.add_argument("--subset", type=int, default=4, help="time every k-th member of the loop, scale by k")
+    parser.add_argument("--repeat", type=int, default=1, help="best of this many timings (default 1)")
+    parser.add_argument("--quick", action="store_true", help="the headline and the loop only")
+    args = parser.parse_args()
+    solver = {} if args.method is None else {"method": args.method}
+    common = dict(spread=SPREAD, seed=0, model=args.model, m_eff_ratio=M_EFF, drop_height=DROP, **solver)
+
+    print(f"{COUNT} chains of {N_RINGS} R/r = 9 rings, {args.model}, spread R 10 %, r 5 %, drop {DROP} m; method "
+          f"{args.method or DEFAULT_METHOD}, batch size {args.batch_size}; load average {os.getloadavg()[0]:.1f} "
+          f"on {os.cpu_count()} cores")  # fmt: skip
+    ensemble(RING, N_RINGS, 2, max_workers=0, **common)  # warm up: imports, the theory's cache
+    startup, _ = timed(args.repeat, lambda: ensemble(RING, N_RINGS, 2, batch_size=1, max_workers=args.workers,
+                                                     **common))  # fmt: skip
+    wall, ens = timed(args.repeat, lambda: ensemble(RING, N_RINGS, COUNT, batch_size=args.batch_size,
+                                                    max_workers=args.workers, **common))  # fmt: skip
+    print(f"one ensemble call, {COUNT} members on {args.workers} workers: {wall:.2f} s, {wall / COUNT * 1e3:.1f} ms "
+          f"a member ({args.workers} x {wall / COUNT * args.workers * 1e3:.1f} ms of a core); starting the workers "
+          f"and a two-member call: {startup:.2f} s; goal 10 s (compiled engine)")  # fmt: skip
+
+    # The loop the issue starts from: one simulate call per member, one core.
+    seeds = member_seeds(0, COUNT)[:: args.subset]
+    chains = [Chain.disordered(RING, N_RINGS, spread=SPREAD, seed=s, model=args.model, m_eff_ratio=M_EFF)
+              for s in seeds]  # fmt: skip
+    loop, runs = timed(args.repeat, lambda: [simulate(c, ens.t_end, drop_height=DROP, **solver) for c in chains])
+    loop *= COUNT / len(chains)
+    diff = max(abs(run.peak_force(35) - ens.peak_force[k * args.subset, 35]) for k, run in enumerate(runs))
+    print(f"a loop over simulate, one core: {loop:.2f} s ({loop / COUNT * 1e3:.1f} ms a member; every "
+          f"{args.subset}th member timed); ensemble/loop {wall / loop:.2f}; largest difference of the peak at ring 35: "
+          f"{diff / np.max(ens.peak_force[:, 35]):.1e} of it")  # fmt: skip
+    if args.quick:
+        return
+
+    print("\nscaling (wall time, ms a member):")
+    for count in (16, 32, 64, 128):
+        t, _ = timed(args.repeat, lambda count=count: ensemble(RING, N_RINGS, count, batch_size=args.batch_size,
+                                                               max_workers=args.workers, **common))  # fmt: skip
+        per = t / count * 1e3
+        print(f"  count {count:4d}, {args.workers} workers, batch {args.batch_size:3d}: {t:7.2f} s  {per:6.1f}")
+    for workers in (0, 1, 2):
+        t, _ = timed(args.repeat, lambda workers=workers: ensemble(RING, N_RINGS, 32, batch_size=args.batch_size,
+                                                                   max_workers=workers, **common))  # fmt: skip
+        print(f"  count   32, {workers} workers, batch {args.batch_size:3d}: {t:7.2f} s  {t / 32 * 1e3:6.1f}")
+    for batch in (1, 4, 16, 32):
+        t, _ = timed(args.repeat, lambda batch=batch: ensemble(RING, N_RINGS, 32, batch_size=batch, max_workers=0,
+                                                               **common))  # fmt: skip
+        print(f"  count   32, this process, batch {batch:3d}: {t:7.2f} s  {t / 32 * 1e3:6.1f}")
+
+
+if __name__ == "__main__":
+    main()
