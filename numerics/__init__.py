@@ -17,9 +17,9 @@ underscore name reached across modules):
    ``sheet``, ``sheet_runs`` -- a Chain builds a Network; graded, alternating and joined chains; chain files;
    random rings about a nominal one; contacts that yield; the ring-resolved chain (its own dynamics) and the
    ring as a curved beam; sheets of interlinked rings in two dimensions and their runs;
-4. the engine: ``integrate``, ``results``, ``traces``, ``plots``, ``executors``, ``signals`` --
-   the integrator layer, result records, measurement files, figures, where sweeps run,
-   reading pulses;
+4. the engine: ``integrate``, ``kernels``, ``results``, ``traces``, ``plots``, ``executors``, ``signals`` --
+   the integrator layer and its compiled kernels, result records, measurement files, figures, where
+   sweeps run, reading pulses;
 5. ``network``, ``laws`` -- sites and links; contact laws with one contract.
 
 What each module owns:
@@ -34,8 +34,10 @@ What each module owns:
   bandwidth, energies, tolerance scales, fastest frequency), with a fast path for chains;
   :meth:`Network.stack` puts several networks of one layout into one batch;
 - :mod:`.integrate` -- :func:`simulate`, :func:`simulate_batch`, :func:`estimate_run`: the model
-  contract (``dynamics()``, ``impact_state``, ``recorded``, ``result``), the methods (odeint,
-  solve_ivp, Verlet), chunking, the energy watch, run estimates;
+  contract (``dynamics()``, ``impact_state``, ``recorded``, ``result``), the methods (the compiled
+  "dopri5", the default, and "verlet"; SciPy's odeint and solve_ivp as the reference), chunking, the
+  energy watch, run estimates; :mod:`.kernels` -- the compiled right-hand sides, Dormand-Prince 5(4)
+  and Verlet loops (Numba, cached on disk), laws with memory updated on accepted steps;
 - :mod:`.results` -- :class:`NetworkSimulation` (``link_force``), :class:`Simulation` (a chain's run:
   ``contact_force``, ``sensor_force``, the sensor helpers), :class:`EnergyBudget`;
 - :mod:`.traces` -- :func:`write_traces` beside :func:`read_traces`, and the other measurement files;
