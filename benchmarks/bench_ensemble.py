@@ -26,9 +26,9 @@ from __future__ import annotations
 
 import argparse
 import os
-import time
 
 import numpy as np
+from bench_batch import best_of  # the benchmarks' one timer (run from benchmarks/, as each script is)
 from ringchain.numerics import DEFAULT_METHOD, Chain, ensemble, simulate
 from ringchain.numerics.disorder import member_seeds
 from ringchain.numerics.ensemble import DEFAULT_BATCH_SIZE
@@ -37,15 +37,6 @@ from ringchain.theory import Ring
 RING = Ring.from_aspect_ratio(9.0)
 SPREAD = {"R": 0.10, "r": 0.05}
 N_RINGS, COUNT, DROP, M_EFF = 40, 128, 0.05, 0.37
-
-
-def timed(repeat, func):
-    best, result = np.inf, None
-    for _ in range(repeat):
-        start = time.perf_counter()
-        result = func()
-        best = min(best, time.perf_counter() - start)
-    return best, result
 
 
 def main():
@@ -65,9 +56,9 @@ def main():
           f"{args.method or DEFAULT_METHOD}, batch size {args.batch_size}; load average {os.getloadavg()[0]:.1f} "
           f"on {os.cpu_count()} cores")  # fmt: skip
     ensemble(RING, N_RINGS, 2, max_workers=0, **common)  # warm up: imports, the theory's cache
-    startup, _ = timed(args.repeat, lambda: ensemble(RING, N_RINGS, 2, batch_size=1, max_workers=args.workers,
+    startup, _ = best_of(args.repeat, lambda: ensemble(RING, N_RINGS, 2, batch_size=1, max_workers=args.workers,
                                                      **common))  # fmt: skip
-    wall, ens = timed(args.repeat, lambda: ensemble(RING, N_RINGS, COUNT, batch_size=args.batch_size,
+    wall, ens = best_of(args.repeat, lambda: ensemble(RING, N_RINGS, COUNT, batch_size=args.batch_size,
                                                     max_workers=args.workers, **common))  # fmt: skip
     print(f"one ensemble call, {COUNT} members on {args.workers} workers: {wall:.2f} s, {wall / COUNT * 1e3:.1f} ms "
           f"a member ({args.workers} x {wall / COUNT * args.workers * 1e3:.1f} ms of a core); starting the workers "
@@ -77,7 +68,7 @@ def main():
     seeds = member_seeds(0, COUNT)[:: args.subset]
     chains = [Chain.disordered(RING, N_RINGS, spread=SPREAD, seed=s, model=args.model, m_eff_ratio=M_EFF)
               for s in seeds]  # fmt: skip
-    loop, runs = timed(args.repeat, lambda: [simulate(c, ens.t_end, drop_height=DROP, **solver) for c in chains])
+    loop, runs = best_of(args.repeat, lambda: [simulate(c, ens.t_end, drop_height=DROP, **solver) for c in chains])
     loop *= COUNT / len(chains)
     diff = max(abs(run.peak_force(35) - ens.peak_force[k * args.subset, 35]) for k, run in enumerate(runs))
     print(f"a loop over simulate, one core: {loop:.2f} s ({loop / COUNT * 1e3:.1f} ms a member; every "
@@ -88,16 +79,16 @@ def main():
 
     print("\nscaling (wall time, ms a member):")
     for count in (16, 32, 64, 128):
-        t, _ = timed(args.repeat, lambda count=count: ensemble(RING, N_RINGS, count, batch_size=args.batch_size,
+        t, _ = best_of(args.repeat, lambda count=count: ensemble(RING, N_RINGS, count, batch_size=args.batch_size,
                                                                max_workers=args.workers, **common))  # fmt: skip
         per = t / count * 1e3
         print(f"  count {count:4d}, {args.workers} workers, batch {args.batch_size:3d}: {t:7.2f} s  {per:6.1f}")
     for workers in (0, 1, 2):
-        t, _ = timed(args.repeat, lambda workers=workers: ensemble(RING, N_RINGS, 32, batch_size=args.batch_size,
+        t, _ = best_of(args.repeat, lambda workers=workers: ensemble(RING, N_RINGS, 32, batch_size=args.batch_size,
                                                                    max_workers=workers, **common))  # fmt: skip
         print(f"  count   32, {workers} workers, batch {args.batch_size:3d}: {t:7.2f} s  {t / 32 * 1e3:6.1f}")
     for batch in (1, 4, 16, 32):
-        t, _ = timed(args.repeat, lambda batch=batch: ensemble(RING, N_RINGS, 32, batch_size=batch, max_workers=0,
+        t, _ = best_of(args.repeat, lambda batch=batch: ensemble(RING, N_RINGS, 32, batch_size=batch, max_workers=0,
                                                                **common))  # fmt: skip
         print(f"  count   32, this process, batch {batch:3d}: {t:7.2f} s  {t / 32 * 1e3:6.1f}")
 

@@ -41,8 +41,8 @@ import time
 from pathlib import Path
 
 import numpy as np
-from bench_paper_recipe import DROP, SENSORS, STEPS_PER_MS, T_END, best_times, paper_rhs, run_recipe, sensor_forces
-from ringchain.numerics import STANDARD_GRAVITY, Chain, initial_state, kernels, paper_chain, simulate
+from bench_paper_recipe import DROP, EVERY, SENSORS, T_END, best_times, comparison, paper_rhs, run_recipe, sensor_forces
+from ringchain.numerics import STANDARD_GRAVITY, Chain, kernels, paper_chain, simulate
 from ringchain.numerics.integrate import DEFAULT_RTOL
 
 C_SOURCE = Path(__file__).parent / "c" / "dopri5_chain.c"
@@ -182,16 +182,10 @@ def part_c(args, folder, program, rows):
 # -- (b) the paper's recipe --------------------------------------------------------------------------------------
 def part_paper(args, rows):
     chain = paper_chain("dual-spring")
-    g = STANDARD_GRAVITY
-    x0, u0 = initial_state(chain, drop_height=DROP)
-    y0 = np.concatenate([x0[0], u0[0]])
-    t_recipe = np.linspace(0.0, T_END, round(T_END * 1e3 * STEPS_PER_MS) + 1)
-    every = 10  # compare on a 1 us grid
-    t_cmp = t_recipe[::every]
-    ref = simulate(chain, T_END, drop_height=DROP, t_eval=t_cmp, method="LSODA", rtol=1e-12).sensor_force[:, SENSORS]
-    check = simulate(chain, T_END, drop_height=DROP, t_eval=t_cmp, method="DOP853", rtol=1e-13).sensor_force[:, SENSORS]
+    y0, t_recipe, t_cmp, ref, check = comparison(chain)
+    every = EVERY
     peak = np.abs(ref).max()
-    rhs = paper_rhs(chain, g)
+    rhs = paper_rhs(chain, STANDARD_GRAVITY)
 
     def recipe():
         x, u = run_recipe(chain, rhs, y0, t_recipe)

@@ -108,6 +108,22 @@ def best_times(funcs: dict, repeat: int) -> dict:
     return best
 
 
+#: The comparison's grid: every EVERY-th step of the recipe's, a 1 us grid.
+EVERY = 10
+
+
+def comparison(chain):
+    """The recipe's initial state and time grid, the comparison's grid, and on it the reference sensor forces
+    (LSODA at rtol 1e-12) with DOP853's at 1e-13 as their check, N, shape (T, 2) each."""
+    x0, u0 = initial_state(chain, drop_height=DROP)
+    y0 = np.concatenate([x0[0], u0[0]])
+    t_recipe = np.linspace(0.0, T_END, round(T_END * 1e3 * STEPS_PER_MS) + 1)
+    t_cmp = t_recipe[::EVERY]
+    ref = simulate(chain, T_END, drop_height=DROP, t_eval=t_cmp, method="LSODA", rtol=1e-12).sensor_force[:, SENSORS]
+    check = simulate(chain, T_END, drop_height=DROP, t_eval=t_cmp, method="DOP853", rtol=1e-13).sensor_force[:, SENSORS]
+    return y0, t_recipe, t_cmp, ref, check
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=5)
@@ -116,14 +132,8 @@ def main(argv=None):
 
     chain = paper_chain("dual-spring", n_rings=args.rings)
     g = STANDARD_GRAVITY
-    x0, u0 = initial_state(chain, drop_height=DROP)
-    y0 = np.concatenate([x0[0], u0[0]])
-    t_recipe = np.linspace(0.0, T_END, round(T_END * 1e3 * STEPS_PER_MS) + 1)
-    every = 10  # compare on a 1 us grid
-    t_cmp = t_recipe[::every]
-
-    ref_f = simulate(chain, T_END, drop_height=DROP, t_eval=t_cmp, method="LSODA", rtol=1e-12).sensor_force[:, SENSORS]
-    check = simulate(chain, T_END, drop_height=DROP, t_eval=t_cmp, method="DOP853", rtol=1e-13).sensor_force[:, SENSORS]
+    y0, t_recipe, t_cmp, ref_f, check = comparison(chain)
+    every = EVERY
     peak = np.abs(ref_f).max()
     ref_uncertainty = float(np.abs(check - ref_f).max() / peak)
 

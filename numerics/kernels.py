@@ -214,6 +214,9 @@ def _law(kind, p0, p1, p2, e, rate, memory):
         elastic = p0 * e * math.sqrt(e) if p1 == 1.5 else p0 * e**p1
         force = elastic + p2 * rate
         return (force if force > 0.0 else 0.0), elastic
+    if kind == 1:  # LinearSpring: K delta + gamma delta_dot (K, gamma)
+        elastic = p0 * e
+        return elastic + p1 * rate, elastic
     if kind == 3:  # Thornton: the memory is the largest approach (K_c, delta_y, gamma)
         return _thornton(p0, p1, p2, e, rate, memory)
     if kind == 4:  # HuntCrossley: [K delta^n (1 + 3/2 alpha delta_dot)]_+ where engaged (K, n, alpha)
@@ -222,9 +225,6 @@ def _law(kind, p0, p1, p2, e, rate, memory):
         elastic = p0 * e * math.sqrt(e) if p1 == 1.5 else p0 * e**p1
         force = elastic * (1.0 + 1.5 * p2 * rate)
         return (force if force > 0.0 else 0.0), elastic
-    if kind == 1:  # LinearSpring: K delta + gamma delta_dot (K, gamma)
-        elastic = p0 * e
-        return elastic + p1 * rate, elastic
     return p0 * rate, 0.0  # Dashpot (gamma)
 
 

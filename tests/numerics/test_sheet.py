@@ -3,7 +3,6 @@ hanging sheet against the hanging chain column by column, energy, records and Ne
 
 import numpy as np
 import pytest
-import ringchain.numerics
 from ringchain.numerics import Chain, Sheet, read_sheet_run, simulate
 from ringchain.numerics.sheet import contact_law
 from ringchain.theory import Ring, sheet_dispersion
@@ -205,8 +204,6 @@ def test_hanging_square_sheet_struck_along_its_bottom_row_is_a_row_of_chains_ver
     assert np.all(forces[:, sheet.link_family == 0] == 0.0)  # the side links stay at rest
 
 
-@pytest.mark.skipif("dopri5" not in ringchain.numerics.METHODS,
-                    reason="the compiled max-norm method lands with issue 20")  # fmt: skip
 def test_hanging_square_sheet_struck_along_its_bottom_row_is_a_row_of_chains_dopri5():
     sheet, chain, forces = struck_hanging("dopri5")
     peak = chain.max()
