@@ -23,7 +23,7 @@ from ringchain.theory import _validate as v
 # -- option values: parsed and checked before any work, errors in the user's units ---------------------
 #: Most values of one sweep axis and most points of one sweep the command line runs: a guard against a
 #: typo such as ``--drop-height 0.01:0.1:1000000000``, which would exhaust the memory before any work
-#: (100000 points of static theory alone take a few minutes; :func:`ringchain.numerics.sweep` has no limit).
+#: (100000 points of static theory alone take a few minutes; :func:`ringchain.numerics.jobs.sweep` has no limit).
 MAX_GRID_POINTS = 100_000
 
 
@@ -128,7 +128,7 @@ def batch_size(n):
 
 def striker_mass(text: str):
     """argparse type of --striker-mass: "m_eff", "m0" or a positive mass in kg (:func:`.chain.striker_convention`)."""
-    from .chain import STRIKERS, striker_convention
+    from ..layouts.chain import STRIKERS, striker_convention
 
     if text not in STRIKERS:
         try:
@@ -372,7 +372,7 @@ def ring_of(R, r, material, angle_deg, what, *, thin=False, window=None):
 @contextlib.contextmanager
 def naming_size(args):
     """A run the engine refuses as too large: add the command line's remedies."""
-    from .integrate import RunTooLargeError
+    from ..engine.integrate import RunTooLargeError
 
     try:
         yield
@@ -451,7 +451,7 @@ def executor_of(args):
     if not args.dask:
         yield None
         return
-    from .executors import dask_client
+    from ..engine.executors import dask_client
 
     try:
         client = dask_client(args.dask, args.dask_timeout)
@@ -465,8 +465,8 @@ def executor_of(args):
 
 def chain_options(p, *, many=False):
     """The lattice run: --rings, --model, --sensors, --t-end, --samples."""
-    from .chain import MODELS
-    from .integrate import check_samples
+    from ..engine.integrate import check_samples
+    from ..layouts.chain import MODELS
 
     rings = Checked(int, ring_count)
     if many:
@@ -510,7 +510,7 @@ def striker_words(striker, m0: float | None = None) -> str:
 
 def chain_file(text: str):
     """argparse type of --chain: a TOML chain description, read and checked now (:mod:`.chain_file`)."""
-    from .chain_file import read_chain_file
+    from ..layouts.chain_file import read_chain_file
 
     try:
         description = read_chain_file(text)
@@ -524,7 +524,8 @@ def chain_file_options(p, *, sweep=False):
     """--chain FILE (a chain that changes along its length) and, for a sweep, --vary SPEC VALUES."""
     p.add_argument("--chain", type=chain_file, metavar="FILE",
                    help="TOML chain description (segments of ring count, R, r, material, angle; see "
-                        "ringchain.numerics.chain_file); replaces --R, --r, --angle, --material, --rings")  # fmt: skip
+                        "ringchain.numerics.layouts.chain_file); "
+                        "replaces --R, --r, --angle, --material, --rings")  # fmt: skip
     if sweep:
         p.add_argument("--vary", nargs="+", metavar=("FIELD", "VALUES"),
                        help="with --chain: a field of one segment and its values, e.g. --vary 2.R.last 0.01:0.02:5 "
@@ -563,7 +564,7 @@ def check_support(description, args) -> None:
 
 def simulated_chain(args):
     """The chain of ``ringchain simulate`` (of --chain FILE, or of the ring options) and how to name it."""
-    from .sweep import Point
+    from ..jobs.sweep import Point
 
     impacts = {"drop_heights": [args.drop_height] if args.drop_height is not None else None,
                "impact_velocities": [args.impact_velocity] if args.impact_velocity is not None else None}  # fmt: skip
@@ -593,7 +594,7 @@ def simulated_chain(args):
 
 def sweep_points(args) -> list:
     """The points of ``ringchain sweep``: a grid of ring options, or the values of --vary on --chain FILE."""
-    from .sweep import FilePoint, expand
+    from ..jobs.sweep import FilePoint, expand
 
     if args.chain is None:
         if args.vary:
@@ -606,7 +607,7 @@ def sweep_points(args) -> list:
     field, values = vary_values(args.vary) if args.vary else (None, [None])
     lengths = [args.chain.n_rings]
     if field is not None:
-        from .chain_file import vary
+        from ..layouts.chain_file import vary
 
         try:
             lengths = [vary(args.chain, field, value).n_rings for value in values]
@@ -704,7 +705,7 @@ def trace_chain(args):
     for a power law) and its ring 0's mass m0 (kg)."""
     import dataclasses
 
-    from .chain import Chain
+    from ..layouts.chain import Chain
 
     dashpots = {"gamma": args.gamma} if args.model == "power-law" else {"gamma_c": args.gamma,
                                                                            "gamma_b": args.gamma_b}  # fmt: skip

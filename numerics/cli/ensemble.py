@@ -1,4 +1,4 @@
-"""``ringchain ensemble``: the command line of :mod:`ringchain.numerics.ensemble`.
+"""``ringchain ensemble``: the command line of :mod:`ringchain.numerics.jobs.ensemble`.
 
 ``ringchain ensemble --rings 40 --drop-height 0.05 --count 1000 --spread R=0.05 r=0.02 --out ens.csv --plot ens.png``
 draws ``--count`` chains of rings that differ at random about the ring of ``--R``, ``--r``,
@@ -20,7 +20,7 @@ from pathlib import Path
 
 from ringchain.theory import _validate as v
 
-from . import _cli_options as opt
+from . import _options as opt
 
 __all__ = ["add_parser", "run", "parse_spread", "DEFAULT_COUNT", "SHOWN_RINGS"]
 
@@ -33,7 +33,7 @@ SHOWN_RINGS = 6
 
 def parse_spread(text: str) -> tuple[str, float]:
     """argparse type of one ``--spread`` value: ``NAME=VALUE``, a relative standard deviation >= 0 of NAME."""
-    from .disorder import SPREAD_NAMES
+    from ..layouts.disorder import SPREAD_NAMES
 
     name, sep, value = text.partition("=")
     if not sep or name not in SPREAD_NAMES:
@@ -47,9 +47,9 @@ def add_parser(sub) -> None:
     """Add ``ensemble`` to the subparsers ``sub`` of ``ringchain`` (its function: :func:`run`)."""
     from ringchain.theory import paper_data
 
-    from .chain import MODELS
-    from .ensemble import DEFAULT_BATCH_SIZE
-    from .integrate import check_samples
+    from ..engine.integrate import check_samples
+    from ..jobs.ensemble import DEFAULT_BATCH_SIZE
+    from ..layouts.chain import MODELS
 
     p = sub.add_parser(
         "ensemble", help="disordered chains struck alike: peak force and arrival at every ring", allow_abbrev=False,
@@ -88,7 +88,7 @@ def add_parser(sub) -> None:
 
 def _checked(args):
     """The nominal ring and the spreads, every input checked against the others before any work."""
-    from .disorder import check_spread
+    from ..layouts.disorder import check_spread
 
     paths = [(name, getattr(args, name)) for name in ("out", "summary", "plot") if getattr(args, name)]
     for k, (name, path) in enumerate(paths):
@@ -117,7 +117,7 @@ def run(args) -> int:
     """Run ``ringchain ensemble``; returns the exit code."""
     import numpy as np
 
-    from .ensemble import ensemble
+    from ..jobs.ensemble import ensemble
 
     ring, spread = _checked(args)
     options = {} if args.samples is None else {"n_samples": args.samples}

@@ -1,4 +1,4 @@
-"""``ringchain fit``: the command line of :mod:`ringchain.numerics.fit`.
+"""``ringchain fit``: the command line of :mod:`ringchain.numerics.jobs.fit`.
 
 - ``ringchain fit static FILE`` -- F = K delta^n and the series law (Eqs. 3-4) fitted to a
   quasi-static test (``displacement_m``, ``force_N``), with AIC and BIC to tell them apart;
@@ -30,7 +30,7 @@ DEFAULT_FREE = "m,gamma,t0"
 def _free_list(text: str) -> tuple:
     import argparse
 
-    from .fit_dynamic import CHAIN_PARAMETERS
+    from ..jobs.fit_dynamic import CHAIN_PARAMETERS
 
     names = tuple(name.strip() for name in text.split(",") if name.strip())
     allowed = (*CHAIN_PARAMETERS, "t0", "v0", "h0")
@@ -46,8 +46,8 @@ def add_parser(sub, *, geometry) -> None:
     ``geometry(parser)`` adds the ring options of ``ringchain simulate`` (--R, --r, --angle,
     --material, --m-eff-ratio), checked as they are there.
     """
-    from . import _cli_options as opt
-    from .chain import MODELS
+    from ..layouts.chain import MODELS
+    from . import _options as opt
 
     fit = sub.add_parser("fit", help="fit parameters to measurements (static test, speeds, sensor traces)",
                          allow_abbrev=False, description="Fit parameters to measurements: a quasi-static test, "
@@ -104,7 +104,7 @@ def add_parser(sub, *, geometry) -> None:
                    help=f"free parameters, a comma list (default {DEFAULT_FREE}; also K, n, K_b, gamma_b, v0, "
                         "h0)")  # fmt: skip
     p.add_argument("--no-offsets", action="store_true", help="do not fit a DC offset per channel")
-    from ._cli_options import striker_option
+    from ._options import striker_option
 
     striker_option(p)  # as ringchain simulate takes it
     common(p)
@@ -113,8 +113,8 @@ def add_parser(sub, *, geometry) -> None:
 
 def run(args) -> int:
     """Run ``ringchain fit <kind>``; returns the exit code (1 if a fit does not converge)."""
-    from . import _cli_options as opt
-    from .fit import FitError
+    from ..jobs.fit import FitError
+    from . import _options as opt
 
     files = args.files if args.fit_command == "traces" else [args.file]
     opt.check_outputs([*files, getattr(getattr(args, "chain", None), "path", None)], [("--plot", args.plot)])
@@ -138,8 +138,8 @@ def _print(args, results) -> None:
 def _static(args) -> int:
     import numpy as np
 
-    from .fit import fit_static
-    from .traces import read_static
+    from ..engine.traces import read_static
+    from ..jobs.fit import fit_static
 
     delta, force = read_static(args.file)
     models = ("power-law", "series") if args.model == "both" else (args.model,)
@@ -154,7 +154,7 @@ def _static(args) -> int:
         print(f"\nthe data support the {law[best]}: its AIC is lower by {aic[other] - aic[best]:.3g} than that of the "
               f"{law[other]}")  # fmt: skip
     if args.plot:
-        from .plots import new_figure
+        from ..engine.plots import new_figure
 
         fig = new_figure(figsize=(6, 5))
         ax, ax_r = fig.subplots(2, 1, sharex=True, gridspec_kw={"height_ratios": (3, 1)})
@@ -173,9 +173,9 @@ def _static(args) -> int:
 
 
 def _speed(args) -> int:
-    from . import _cli_options as opt
-    from .fit import fit_speed_rings
-    from .traces import read_speed_amplitude
+    from ..engine.traces import read_speed_amplitude
+    from ..jobs.fit import fit_speed_rings
+    from . import _options as opt
 
     F_m, V_s, rows = read_speed_amplitude(args.file, geometry=True)
     rings = opt.speed_rings(args, rows)
@@ -191,7 +191,7 @@ def _speed(args) -> int:
     if args.plot:
         import numpy as np
 
-        from .plots import new_figure
+        from ..engine.plots import new_figure
 
         fig = new_figure(figsize=(6, 4))
         ax = fig.add_subplot()
@@ -207,9 +207,9 @@ def _speed(args) -> int:
 
 
 def _traces(args) -> int:
-    from . import _cli_options as opt
-    from .fit_dynamic import fit_traces
-    from .traces import read_traces
+    from ..engine.traces import read_traces
+    from ..jobs.fit_dynamic import fit_traces
+    from . import _options as opt
 
     impacts = args.drop_height if args.drop_height is not None else args.impact_velocity
     if len(impacts) != len(args.files):
@@ -235,7 +235,7 @@ def _traces(args) -> int:
     _print(args, {"traces": result})
     if not args.json and "m" in result.names:
         ratio, sd = result.values["m"] / m0, result.stderr["m"] / m0
-        from ._cli_options import striker_words
+        from ._options import striker_words
 
         striker = striker_words(args.striker_mass, m0)
         print(f"m/m0 = {ratio:.6g} +/- {sd:.2g} (m0 = {m0:.6g} kg, the mass of ring 0; {striker})")
@@ -246,7 +246,7 @@ def _traces(args) -> int:
 
 
 def _plot_traces(result, path, labels) -> None:
-    from .plots import new_figure
+    from ..engine.plots import new_figure
 
     records = result.records
     fig = new_figure(figsize=(7, 2.2 + 2.6 * len(records)))

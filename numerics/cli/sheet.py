@@ -1,4 +1,4 @@
-"""``ringchain sheet``: one impact on a sheet of interlinked rings (:mod:`ringchain.numerics.sheet`).
+"""``ringchain sheet``: one impact on a sheet of interlinked rings (:mod:`ringchain.numerics.layouts.sheet`).
 
 ``ringchain sheet --pattern square --size 40x40 --pretension 2 --impact-velocity 0.5 --out run.nc --plot frames/``
 builds the sheet (the ring options of ``ringchain simulate``), strikes it (``--struck``: an edge, ``point``
@@ -13,7 +13,7 @@ from __future__ import annotations
 import argparse
 import math
 
-from . import _cli_options as opt
+from . import _options as opt
 
 __all__ = ["add_parser", "run"]
 
@@ -37,7 +37,7 @@ def sheet_size(text: str) -> tuple[int, int]:
 
 def struck_option(text: str):
     """argparse type of --struck: an edge, ``point`` or ROW,COL."""
-    from .sheet import EDGES
+    from ..layouts.sheet import EDGES
 
     if text in EDGES or text == "point":
         return text
@@ -52,8 +52,8 @@ def struck_option(text: str):
 
 def add_parser(sub) -> None:
     """Add ``sheet`` to the subparsers ``sub`` of ``ringchain``."""
-    from .integrate import METHODS, check_samples
-    from .sheet import PATTERNS
+    from ..engine.integrate import METHODS, check_samples
+    from ..layouts.sheet import PATTERNS
 
     p = sub.add_parser("sheet", help="an impact on a sheet of interlinked rings; fields to NetCDF",
                        allow_abbrev=False, description=__doc__.split("\n\n")[0])  # fmt: skip
@@ -88,7 +88,7 @@ def add_parser(sub) -> None:
 
 def _sheet(args):
     """The sheet of the options, every value checked against the others first."""
-    from .sheet import Sheet
+    from ..layouts.sheet import Sheet
 
     rows, cols = args.size
     periodic_or = {True: ("free", "periodic"), False: ("clamped", "periodic")}[args.hanging]
@@ -128,8 +128,8 @@ def _sheet(args):
 
 def run(args) -> int:
     """Run ``ringchain sheet``: build, strike, integrate, write; returns the exit code."""
-    from .integrate import simulate
-    from .sheet_runs import write_force_frames
+    from ..engine.integrate import simulate
+    from ..layouts.sheet_runs import write_force_frames
 
     sheet = _sheet(args)
     impact = {"drop_height": args.drop_height} if args.drop_height is not None else {

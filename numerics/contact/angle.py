@@ -2,7 +2,7 @@ r"""One contact of two interlocked tori at any angle: the closed form where it h
 
 - :func:`contact_at_angle` -- the Hertz-or-numerical choice, made once for the package (``ringchain ring`` and
   the paper's angle table use it): the single-ellipse Hertz contact (paper Eq. (1), App. A) while the contact
-  ellipse's long semi-axis at the largest force stays below :data:`~ringchain.numerics.contact_bem.HALF_SPACE_LIMIT`
+  ellipse's long semi-axis at the largest force stays below :data:`~ringchain.numerics.contact.bem.HALF_SPACE_LIMIT`
   of the tube radius, the numerical contact of the exact gap (:func:`~ringchain.numerics.contact_curve`) beyond,
   with K_c continuous across the handover; each in series with the ring's bending (Eqs. (3)-(4)).
 - :func:`angle_power_law` -- one angle's row of the paper's Table II from the numerical contact.
@@ -18,7 +18,7 @@ import numpy as np
 from ringchain.theory import DEFAULT_FORCE_WINDOW
 from ringchain.theory import _validate as v
 
-from .contact_bem import HALF_SPACE_LIMIT, ContactCurve, HalfSpaceWarning, contact_curve
+from .bem import HALF_SPACE_LIMIT, ContactCurve, HalfSpaceWarning, contact_curve
 
 __all__ = [
     "contact_at_angle",

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 from ringchain.theory import _validate as v
 
-from .contact_bem import Tori, load_contact_mechanics, overlap_box
+from .bem import Tori, load_contact_mechanics, overlap_box
 
 __all__ = ["CappedContactCurve", "capped_contact_curve", "CAPPED_SHAPES", "CAPPED_KKT_TOLERANCE"]
 

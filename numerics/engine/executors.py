@@ -1,7 +1,7 @@
 """Where the tasks of a sweep run: in this process, in local worker processes, or on a Dask cluster.
 
 - :class:`InlineExecutor` runs every task at once in the calling process;
-- :func:`default_executor` is the pool :func:`~ringchain.numerics.sweep.sweep` uses when
+- :func:`default_executor` is the pool :func:`~ringchain.numerics.jobs.sweep.sweep` uses when
   it is given no executor: local processes started with the "spawn" method;
 - :func:`dask_client` connects to a Dask scheduler after checking, with a short timeout,
   that one answers at the address (``ringchain sweep --dask ADDRESS``);
@@ -254,7 +254,7 @@ def dask_client(address: str, timeout: float = DASK_TIMEOUT):
 
     Examples
     --------
-    >>> from ringchain.numerics.sweep import sweep
+    >>> from ringchain.numerics.jobs.sweep import sweep
     >>> with dask_client("tcp://scheduler:8786") as client:  # doctest: +SKIP
     ...     rows = sweep(grid, client.get_executor())
     """

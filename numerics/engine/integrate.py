@@ -8,7 +8,7 @@ network (a :class:`~ringchain.numerics.Chain`: the paper's chains, uniform or va
 The model contract (what :func:`simulate_batch` calls):
 
 - ``model.dynamics()`` -- the object integrated, implementing the dynamics contract of
-  :mod:`ringchain.numerics.network` (stepper, first-order right-hand side and its
+  :mod:`ringchain.numerics.engine.network` (stepper, first-order right-hand side and its
   bandwidth, packing of the flat state, energies, tolerance scales, fastest frequency);
 - ``model.impact_state(speeds, dropped, gravity, g)`` -- the initial displacements and
   velocities of B runs (shape (B, n_coords) each) after an impact at ``speeds`` (m/s,
@@ -22,7 +22,7 @@ The model contract (what :func:`simulate_batch` calls):
 Any other initial state (a wave packet on a pre-stretched chain, say) is given as
 ``initial=(x0, u0)``.
 
-Methods.  The compiled ones (:mod:`ringchain.numerics.kernels`, their whole time loop in
+Methods.  The compiled ones (:mod:`ringchain.numerics.engine.kernels`, their whole time loop in
 Numba): "dopri5" (the default: Dormand and Prince's 5(4) pair with its continuous extension,
 the error measured in the max norm over the components, so that components at rest or runs
 repeated in a batch never change the steps a run takes; each run of a batch with its own
@@ -99,24 +99,24 @@ DEFAULT_METHOD = "dopri5"
 #: displacement, velocity and energy scales of the impact (``dynamics.scales``).  The pair's 3e-10 gives
 #: the accuracy LSODA gives at 1e-9 (its error control in the max norm over components and its
 #: continuous extension differ from LSODA's RMS norm and interpolation): measured on the paper's chains,
-#: both models, both stiffness sources (tests/numerics/test_kernels.py).
+#: both models, both stiffness sources (tests/numerics/engine/test_kernels.py).
 DEFAULT_TOLERANCES = {"dopri5": 3e-10, "odeint": 1e-9, "LSODA": 1e-9, "DOP853": 1e-9, "RK45": 1e-9, "RK23": 1e-9}
 
 #: The default relative tolerance of :data:`DEFAULT_METHOD`.
 DEFAULT_RTOL = DEFAULT_TOLERANCES[DEFAULT_METHOD]
 
 #: Verlet steps per period of the fastest linearised lattice mode at four times the
-#: estimated peak force; chosen by the convergence test in tests/numerics/test_integrate.py.
+#: estimated peak force; chosen by the convergence test in tests/numerics/engine/test_integrate.py.
 VERLET_STEPS_PER_PERIOD = 60
 
 #: The adaptive methods: "dopri5" (Dormand-Prince 5(4), compiled, max-norm error control, each run of a
-#: batch with its own steps: :mod:`ringchain.numerics.kernels`), "odeint" (LSODA stepped in Fortran) and
+#: batch with its own steps: :mod:`ringchain.numerics.engine.kernels`), "odeint" (LSODA stepped in Fortran) and
 #: the :func:`scipy.integrate.solve_ivp` methods, the independent reference.  LSODA (Adams, switching to BDF
 #: with a banded Jacobian if the chain turns stiff) suits the chain; the explicit Runge-Kutta methods lose
 #: their order at the kink of the contact law at delta = 0, which costs the higher orders most.
 ADAPTIVE_METHODS = ("dopri5", "odeint", "LSODA", "DOP853", "RK45", "RK23")
 
-#: The compiled methods (:mod:`ringchain.numerics.kernels`): their whole time loop runs in Numba.
+#: The compiled methods (:mod:`ringchain.numerics.engine.kernels`): their whole time loop runs in Numba.
 COMPILED_METHODS = ("dopri5", "verlet")
 
 #: Every method :func:`simulate` takes.
@@ -127,7 +127,7 @@ METHODS = (*ADAPTIVE_METHODS, "verlet")
 #: precision ("illegal input" at 1e-14) and scipy's Runge-Kutta methods raise it to
 #: 2.2e-14; above 1e-3 the error control no longer controls: over 2 ms of the paper's
 #: chain, rtol = 1e-3 leaves sensor errors of 3-8% of the peak and 1e-2 of 15-28%
-#: (measured against rtol = 1e-12; tests/numerics/test_integrate.py checks the range's ends).
+#: (measured against rtol = 1e-12; tests/numerics/engine/test_integrate.py checks the range's ends).
 TOLERANCE_RANGE = (1e-13, 1e-3)
 
 #: Largest drift of the total energy (dissipated energy included) from its initial
@@ -260,7 +260,7 @@ def _adaptive(method, dyn, x0, u0, scales, t_eval, rtol, atol, g, keep, watch):
 
 
 def _compiled(method, dyn, x0, u0, scales, t_eval, t_end, rtol, atol, dt, g, keep, watch, shared=False):
-    """A compiled method (:mod:`ringchain.numerics.kernels`): x and u of ``keep`` (B, T, K), W (B, T) and stats.
+    """A compiled method (:mod:`ringchain.numerics.engine.kernels`): x and u of ``keep`` (B, T, K), W (B, T) and stats.
 
     The kernels check that the state stays finite; the energy watch reads the final state.
     """
@@ -798,7 +798,7 @@ def simulate(model, t_end, *, impact_velocity=None, drop_height=None, gravity=Tr
         Verlet step, s; default a fraction 1/``steps_per_period`` of the period of the
         fastest linearised mode at four times the estimated peak force.  The error of a
         fixed step grows with the distance the wave travels: for hundreds of rings, use
-        more steps per period (tests/numerics/test_theory_vs_lattice.py uses 200).  Must lie
+        more steps per period (tests/numerics/layouts/test_theory_vs_lattice.py uses 200).  Must lie
         below the stability limit 2/omega_max.
     steps_per_period : float, optional
         See ``dt``; default :data:`VERLET_STEPS_PER_PERIOD`; must exceed pi (stability).

@@ -1,7 +1,7 @@
 r"""Compiled kernels of the engine: the right-hand sides of networks and of the ring-resolved chain, an
 adaptive Dormand-Prince 5(4) pair with dense output and velocity Verlet, whole time loops in Numba.
 
-The same models as :mod:`ringchain.numerics.network` and :mod:`ringchain.numerics.ring_chain`, written as
+The same models as :mod:`ringchain.numerics.engine.network` and :mod:`ringchain.numerics.layouts.ring_chain`, written as
 loops over plain arrays (no Python object in the time loop), and the same contract: what
 :func:`ringchain.numerics.simulate` calls with ``method="dopri5"`` or ``method="verlet"``.  The NumPy and
 SciPy paths stay as the independent reference the tests compare against.
@@ -45,7 +45,7 @@ tiny tolerances, change a shared step slightly (``shared=True``: 601 steps inste
 Each member of a batch takes its own steps; the members run in parallel over the cores (``prange``).
 The samples are read from the continuous extension.
 
-Velocity Verlet.  The fixed-step scheme of :func:`ringchain.numerics.integrate` (kick-drift-kick in
+Velocity Verlet.  The fixed-step scheme of :func:`ringchain.numerics.engine.integrate` (kick-drift-kick in
 leapfrog form, samples by cubic Hermite interpolation of the two ends of their step), one member per
 thread.
 

@@ -41,7 +41,7 @@ the largest approach of each link as its internal state, ``n_state = 1``),
 takes the state as ``memory`` (m, one value per link) in ``force``, ``energy`` and
 ``plastic_work``; without it, the state is the law's own initial value.  The integrators
 keep the state per run and update it on accepted steps only
-(:mod:`ringchain.numerics.kernels`).
+(:mod:`ringchain.numerics.engine.kernels`).
 """
 
 from __future__ import annotations
@@ -488,7 +488,7 @@ class Thornton(Law):
     The internal state of a link is delta_m.  The force at approach delta uses
     max(delta_m, delta), so that a trial state beyond the memory is already on the loading
     line: the force is a function of the state and the memory, and the memory is written by
-    the integrator after each accepted step only (:mod:`ringchain.numerics.kernels`).  The
+    the integrator after each accepted step only (:mod:`ringchain.numerics.engine.kernels`).  The
     energy of a link is split into the elastic energy stored on the current curve
     (:meth:`energy`) and the plastic work done so far (:meth:`plastic_work`), both from
     :func:`~ringchain.theory.thornton_energy`.

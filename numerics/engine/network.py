@@ -5,7 +5,7 @@ site per ring, a :class:`~ringchain.numerics.laws.PowerLaw` contact between neig
 dual-spring chain of Eqs. (5)-(6) (two sites of mass m/2 per ring joined by the bending
 spring, rings joined by the Hertz contact), chains that change along their length, sheets of
 rings.  A layout (:class:`~ringchain.numerics.Chain`, a sheet) builds the network; the engine
-(:mod:`ringchain.numerics.integrate`) integrates it.
+(:mod:`ringchain.numerics.engine.integrate`) integrates it.
 
 - **Sites**: inertial mass m (kg), the mass gravity acts on (kg), ``dim`` displacement
   components (1: along the chain axis; 2 or 3: in space, the last component vertical), an
@@ -20,7 +20,7 @@ rings.  A layout (:class:`~ringchain.numerics.Chain`, a sheet) builds the networ
   together.  In a periodic network (a sheet with periodic sides) a link's far end may be the
   periodic image of site j, its rest position shifted by a lattice period (``Links.shift``).
 
-The dynamics contract (what every integrator of :mod:`ringchain.numerics.integrate` calls;
+The dynamics contract (what every integrator of :mod:`ringchain.numerics.engine.integrate` calls;
 the ring-resolved chain, :class:`~ringchain.numerics.RingChain`, implements it too):
 
 - ``n_coords`` -- coordinates of one run (sites x components); ``damped``;
@@ -858,7 +858,7 @@ class Network:
         counts = np.bincount(np.concatenate([self.i, self.j[~self.anchored]]), minlength=self.n_sites)
         return math.sqrt(2.0 * int(counts.max()) * k_max / float(np.min(self.mass)))
 
-    # -- the model contract (ringchain.numerics.integrate): a network integrated as it is -------------
+    # -- the model contract (ringchain.numerics.engine.integrate): a network integrated as it is -------------
     def dynamics(self) -> Network:
         return self
 

@@ -57,7 +57,7 @@ BASELINE_SAMPLES = 5
 #: Fewest samples per full width at half maximum of a pulse.  The parabola through the
 #: sampled maximum and its neighbours then places a Gaussian or a compact cos^4 pulse
 #: to 0.2% of its width and its height to 0.3% (worst over the sampling phase; at 4
-#: samples 0.4% and 0.7%, at 3 samples 1% and 2%), tests/numerics/test_signals.py.
+#: samples 0.4% and 0.7%, at 3 samples 1% and 2%), tests/numerics/engine/test_signals.py.
 MIN_SAMPLES_PER_WIDTH = 5
 
 #: A trace whose largest rise above its baseline is below this fraction of its largest

@@ -17,9 +17,9 @@ import dataclasses
 import numpy as np
 from ringchain.theory import _validate as v
 
-from .chain import Chain
-from .integrate import simulate
-from .yielding import hanging_memory
+from ..engine.integrate import simulate
+from ..layouts.chain import Chain
+from ..layouts.yielding import hanging_memory
 
 __all__ = ["energy_shares", "second_impact", "equivalent_contact_dashpot"]
 

@@ -3,7 +3,7 @@ r"""The effective mass the ring-resolved chain predicts, and the trailing oscill
 The paper fits an effective mass m_eff/m0 = 0.33-0.37 (Tables I and II) so that its power-law
 lattice (Eq. (7)) moves as fast as the measured pulses, and explains it by the inertia "localized
 in transverse ovalization and bending".  Here the ring-resolved chain
-(:mod:`ringchain.numerics.ring_beam`), whose rings bend and carry their full mass, plays the
+(:mod:`ringchain.numerics.layouts.ring_beam`), whose rings bend and carry their full mass, plays the
 experiment: the paper's 20-ring chain is dropped from several heights, and the power-law
 lattice's inertial mass is fitted to its sensor traces, untuned.
 
@@ -31,12 +31,12 @@ import numpy as np
 from ringchain.theory import Ring, paper_data
 from ringchain.theory import _validate as v
 
-from . import signals
-from .chain import Chain
-from .integrate import simulate_batch
-from .results import Simulation
-from .ring_beam import DEFAULT_ELEMENTS, DEFAULT_MODES
-from .ring_chain import RingChain, RingSimulation, simulate_rings
+from ..engine import signals
+from ..engine.integrate import simulate_batch
+from ..engine.results import Simulation
+from ..layouts.chain import Chain
+from ..layouts.ring_beam import DEFAULT_ELEMENTS, DEFAULT_MODES
+from ..layouts.ring_chain import RingChain, RingSimulation, simulate_rings
 
 __all__ = [
     "DEFAULT_CUTOFF",
@@ -340,7 +340,7 @@ def predict_effective_mass(
     n_rings, sensors : optional
         The paper's 20 rings and sensors in rings 6 and 12.
     modes, elements : optional
-        Resolution of each ring (:meth:`~ringchain.numerics.ring_beam.RingModel.reduce`).
+        Resolution of each ring (:meth:`~ringchain.numerics.layouts.ring_beam.RingModel.reduce`).
     t_end, n_samples : optional
         Duration (s) and samples of each run; 3 ms holds the leading pulse at ring 12 for
         drops from 1 cm up.

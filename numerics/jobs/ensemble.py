@@ -1,7 +1,7 @@
 r"""Ensembles of disordered chains: many chains of randomly differing rings struck alike (issue 23).
 
 :func:`ensemble` draws ``count`` chains about a nominal ring (:meth:`~ringchain.numerics.Chain.disordered`,
-:mod:`~ringchain.numerics.disorder`), strikes ring 0 of each as the paper's experiment does (a drop
+:mod:`~ringchain.numerics.layouts.disorder`), strikes ring 0 of each as the paper's experiment does (a drop
 or an impact), and reads the leading pulse at the sensor of every ring: its peak force and arrival
 time, and the static tension it rides on.  It also runs the ordered chain (every ring the nominal
 one) with the same settings, so that each reading can be set against the chain without disorder
@@ -13,21 +13,21 @@ Scale.  The members are integrated in batches of ``batch_size``: the chains of a
 stacked into one network (:meth:`~ringchain.numerics.Network.stack`) and integrated by
 :func:`~ringchain.numerics.simulate_batch` as one array problem, with its default method and
 tolerances unless told otherwise.  The batches are independent tasks run through any
-:class:`concurrent.futures.Executor`, as :func:`~ringchain.numerics.sweep` runs its points: local
+:class:`concurrent.futures.Executor`, as :func:`~ringchain.numerics.jobs.sweep` runs its points: local
 processes by default, or a Dask cluster (``executor=client.get_executor()``).
 
 Determinism.  Member i's chain comes from its own seed, the i-th child of the ensemble's
-(:func:`~ringchain.numerics.disorder.member_seeds`), so it does not depend on ``batch_size`` nor
+(:func:`~ringchain.numerics.layouts.disorder.member_seeds`), so it does not depend on ``batch_size`` nor
 on the number of workers.  For a given ``batch_size`` the results are identical whatever runs
 them; between batch sizes they agree to the integrator's tolerance, since an adaptive method
 steps a batch with one step size chosen for the whole batch (the members of a batch share their
-steps).  tests/numerics/test_ensemble.py checks both.
+steps).  tests/numerics/jobs/test_ensemble.py checks both.
 
 Readings.  Every ring's sensor (:attr:`~ringchain.numerics.Simulation.sensor_force`) is read by
 :func:`~ringchain.numerics.signals.peak`: the peak of its leading pulse (static tension included,
 as :meth:`~ringchain.numerics.Simulation.peak_force`) and its time.  A reading that fails (no
 complete pulse within ``t_end``) is NaN and left out of the summary, which counts the readings
-per ring.  The duration defaults to :func:`~ringchain.numerics.experiment.default_t_end` of the
+per ring.  The duration defaults to :func:`~ringchain.numerics.layouts.chain.default_t_end` of the
 ordered chain with the last ring as far sensor, the same for every member.
 """
 
@@ -42,12 +42,9 @@ import numpy as np
 from ringchain.theory import STANDARD_GRAVITY, Ring
 from ringchain.theory import _validate as v
 
-from . import signals
-from .chain import MODELS, Chain
-from .disorder import check_seed, check_spread, describe_spread, draw_rings, member_seeds
-from .executors import run_tasks
-from .experiment import default_t_end
-from .integrate import (
+from ..engine import signals
+from ..engine.executors import run_tasks
+from ..engine.integrate import (
     DEFAULT_SAMPLES,
     ENERGY_DRIFT_LIMIT,
     IntegrationError,
@@ -55,9 +52,11 @@ from .integrate import (
     impact_speeds,
     simulate_batch,
 )
-from .network import Network
-from .plots import new_figure
-from .results import Simulation
+from ..engine.network import Network
+from ..engine.plots import new_figure
+from ..engine.results import Simulation
+from ..layouts.chain import MODELS, Chain, default_t_end
+from ..layouts.disorder import check_seed, check_spread, describe_spread, draw_rings, member_seeds
 from .sweep import write_csv
 
 __all__ = [
@@ -239,7 +238,7 @@ class Ensemble:
     model : str
     m_eff_ratio : float
     spread : dict
-        The spreads drawn (:func:`~ringchain.numerics.disorder.check_spread`).
+        The spreads drawn (:func:`~ringchain.numerics.layouts.disorder.check_spread`).
     seed : numpy.random.SeedSequence
         The ensemble's seed; member i's is ``seeds[i]``, its i-th child.
     seeds : tuple of numpy.random.SeedSequence
@@ -260,7 +259,7 @@ class Ensemble:
         Centre distance of each pair of neighbours of each member, m.
     redrawn : ndarray, shape (count,)
         Values of each member drawn again because they would have made a ring impossible
-        (:mod:`~ringchain.numerics.disorder`, "Truncation").
+        (:mod:`~ringchain.numerics.layouts.disorder`, "Truncation").
     ordered_peak_force, ordered_arrival, ordered_baseline : ndarray, shape (n_rings,)
         The same readings on the ordered chain (every ring the nominal one), at the same impact.
     t : ndarray
@@ -419,7 +418,7 @@ def ensemble(ring, n_rings, count, *, spread, seed, model="dual-spring", m_eff_r
     spread : mapping
         ``"R"``, ``"r"``, ``"angle"`` (and for the power-law model ``"K"``, ``"m"``) to a relative
         standard deviation or a scipy.stats distribution of value/nominal
-        (:mod:`~ringchain.numerics.disorder`).
+        (:mod:`~ringchain.numerics.layouts.disorder`).
     seed : int or numpy.random.SeedSequence
         The ensemble's seed; member i draws from its i-th child.  The same seed gives the same ensemble.
     model : {"dual-spring", "power-law"}, optional
@@ -430,13 +429,13 @@ def ensemble(ring, n_rings, count, *, spread, seed, model="dual-spring", m_eff_r
     impact_velocity : float, optional
         Speed of ring 0, m/s, instead of a drop.
     t_end : float, optional
-        Duration of every run, s; default :func:`~ringchain.numerics.experiment.default_t_end` of the
+        Duration of every run, s; default :func:`~ringchain.numerics.layouts.chain.default_t_end` of the
         ordered chain with the last ring as the far sensor.
     traces : sequence of int, optional
         Rings whose sensor forces are kept (:attr:`Ensemble.traces`).
     executor : concurrent.futures.Executor, optional
         Where the batches run, e.g. a Dask ``Client(...).get_executor()``; default local processes
-        (``max_workers``, see :func:`~ringchain.numerics.sweep`: in a script, call under
+        (``max_workers``, see :func:`~ringchain.numerics.jobs.sweep`: in a script, call under
         ``if __name__ == "__main__":``).
     batch_size : int, optional
         Members integrated together as one stacked network (default :data:`DEFAULT_BATCH_SIZE`).
@@ -445,7 +444,7 @@ def ensemble(ring, n_rings, count, *, spread, seed, model="dual-spring", m_eff_r
     progress : bool, optional
         A tqdm progress bar on stderr.
     n_samples : int, optional
-        Samples of each record (default :data:`~ringchain.numerics.integrate.DEFAULT_SAMPLES`).
+        Samples of each record (default :data:`~ringchain.numerics.engine.integrate.DEFAULT_SAMPLES`).
     chain_options : mapping, optional
         :data:`CHAIN_OPTIONS` passed to the chains (``support``, dashpots, ``striker_mass``).
     **solver

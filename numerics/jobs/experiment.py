@@ -8,7 +8,8 @@ wave's speed of Eq. (8) at the near sensor's peak force.  ``ringchain simulate``
 (it writes the traces with :func:`~ringchain.numerics.write_traces`);
 :func:`~ringchain.numerics.paper_experiment` is it on the paper's own chain.
 
-:func:`default_t_end` gives the duration that lets the pulse pass the far sensor.
+The duration that lets the pulse pass the far sensor is the chain's own
+(:func:`~ringchain.numerics.layouts.chain.default_t_end`).
 """
 
 from __future__ import annotations
@@ -20,86 +21,20 @@ import numpy as np
 from ringchain.theory import STANDARD_GRAVITY, paper_data
 from ringchain.theory import _validate as v
 
-from . import signals
-from .chain import Chain, sensor_pair
-from .integrate import simulate
-from .plots import plot_sensor_traces
-from .results import Simulation
-from .traces import write_traces
+from ..engine import signals
+from ..engine.integrate import simulate
+from ..engine.plots import plot_sensor_traces
+from ..engine.results import Simulation
+from ..engine.traces import write_traces
+from ..layouts.chain import Chain, default_t_end, sensor_pair
 
-__all__ = ["Experiment", "run_experiment", "default_t_end", "MAX_DOUBLINGS"]
+__all__ = ["Experiment", "run_experiment", "MAX_DOUBLINGS"]
 
-#: Times a default duration (:func:`default_t_end`) is doubled while the leading pulse has not passed the far
-#: sensor by the end (:func:`run_experiment`, :func:`ringchain.numerics.sweep.run_points`): the estimate is a
+#: Times a default duration (:func:`~ringchain.numerics.layouts.chain.default_t_end`) is doubled while the leading
+#: pulse has not passed the far
+#: sensor by the end (:func:`run_experiment`, :func:`ringchain.numerics.jobs.sweep.run_points`): the estimate is a
 #: long-wave one, and a chain of two rings, or of rings metres across (R typed in mm), outruns it.
 MAX_DOUBLINGS = 4
-
-
-def default_t_end(chain: Chain, speeds, sensors) -> float:
-    """Duration that lets the leading pulse pass the far sensor, s.
-
-    The time the long-wave solitary wave of the chain's power law (Eq. (8)) needs to
-    carry its front 1.5 times the distance to ring ``sensors[1]`` plus half a wave width
-    (:func:`ringchain.theory.solitary_wave_width`), at a force estimate below the actual
-    peak (so the estimated speed is low and the duration long): a quarter of the peak
-    force of the striker's collision with ring 1 at the smallest impact speed (the striker of
-    :class:`~ringchain.numerics.Chain`, of mass ``striker_inertia``), and at least the weight
-    of one ring (the gravity prestress keeps weak waves fast).  For the dual-spring
-    chain the power law is the one fitted to its contact and bending springs in series
-    (Eq. 4).  :func:`run_points` doubles the duration if a pulse is still passing the far
-    sensor at the end.
-
-    The half width is capped at the chain's length: as n -> 1 the long-wave width grows
-    without bound (~ a/(n - 1)), but no pulse wider than the chain passes the sensor before
-    its reflection from the support comes back, and the capped duration stays finite
-    (without the cap, 79 s of simulated time at R/r = 100, 2.5e3 s at R/r = 200).
-    """
-    from ringchain.theory import fit_power_law, solitary_wave_speed, solitary_wave_width
-
-    if not isinstance(chain, Chain):
-        raise TypeError(f"chain must be a Chain, got {type(chain).__name__}")
-    speeds = np.atleast_1d(v.positive("speeds", speeds, "m/s"))
-    if speeds.size == 0:
-        raise ValueError("speeds must hold at least one impact speed (m/s)")
-    far = sensor_pair(sensors, chain.n_rings)[1]
-    if not chain.uniform:
-        return _varying_t_end(chain, speeds, far)
-    if chain.model == "dual-spring":
-        K, n = (float(x) for x in fit_power_law(K_c=chain.K_c, K_b=chain.K_b))
-    else:
-        K, n = chain.K, chain.n
-    speed = float(np.min(speeds))
-    # The striker m_s hitting ring 1 (m) at v stores mu v^2/2 at the peak of K delta^n, mu = m_s m/(m_s + m).
-    delta = ((n + 1.0) * 0.5 * _reduced_mass(chain, chain.m) * speed**2 / K) ** (1.0 / (n + 1.0))
-    force = max(0.25 * K * delta**n, chain.m_gravity * STANDARD_GRAVITY)
-    V = float(solitary_wave_speed(force, K=K, n=n, a=chain.a, m=chain.m))
-    width = min(float(solitary_wave_width(n=n, a=chain.a)), chain.n_rings * chain.a)
-    return (1.5 * far * chain.a + 0.5 * width) / V
-
-
-def _varying_t_end(chain: Chain, speeds, far: int) -> float:
-    """:func:`default_t_end` of a chain that changes along its length: the same estimate contact by
-    contact (each contact's power law, the heaviest ring), the pulse's time summed over the
-    contacts up to the far sensor."""
-    from ringchain.theory import fit_power_law, solitary_wave_speed, solitary_wave_width
-
-    pairs = slice(0, chain.n_rings - 1)
-    if chain.model == "dual-spring":
-        K, n = fit_power_law(K_c=chain.profile("K")[pairs], K_b=chain.profile("K_b")[: chain.n_rings - 1])
-    else:
-        K, n = chain.profile("K")[pairs], chain.profile("n")[pairs]
-    m, a, speed = float(np.max(chain.m)), chain.profile("a"), float(np.min(speeds))
-    delta = ((n + 1.0) * 0.5 * _reduced_mass(chain, m) * speed**2 / K) ** (1.0 / (n + 1.0))
-    force = np.maximum(0.25 * K * delta**n, float(np.min(chain.m_gravity)) * STANDARD_GRAVITY)
-    V = solitary_wave_speed(force, K=K, n=n, a=a, m=m)
-    width = min(float(np.max(solitary_wave_width(n=n, a=a))), float(np.sum(a)))
-    return float(1.5 * np.sum(a[:far] / V[:far]) + 0.5 * width / np.min(V))
-
-
-def _reduced_mass(chain: Chain, m: float) -> float:
-    """Reduced mass of the striker (ring 0, :attr:`Chain.striker_inertia`) and a ring of mass ``m``, kg."""
-    striker = chain.striker_inertia
-    return striker * m / (striker + m)
 
 
 @dataclass(frozen=True, eq=False)

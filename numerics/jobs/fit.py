@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from ringchain.theory import _validate as v
 
-from .traces import MIN_SAMPLES
+from ..engine.traces import MIN_SAMPLES
 
 __all__ = [
     "fit_static",

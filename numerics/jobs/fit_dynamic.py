@@ -30,12 +30,12 @@ import numpy as np
 from ringchain.theory import STANDARD_GRAVITY, impact_speed
 from ringchain.theory import _validate as v
 
-from .chain import Chain
+from ..engine.integrate import simulate, simulate_batch
+from ..engine.network import Network
+from ..engine.results import Simulation
+from ..engine.traces import noise_level, pulse_problem, starting_level
+from ..layouts.chain import Chain
 from .fit import FitError, FitResult, as_data, check_converged, dominated, minimize, result_from_lmfit, weak_directions
-from .integrate import simulate, simulate_batch
-from .network import Network
-from .results import Simulation
-from .traces import noise_level, pulse_problem, starting_level
 
 __all__ = [
     "fit_traces",
@@ -53,7 +53,7 @@ CHAIN_PARAMETERS = ("m", "gamma", "K", "n", "K_b", "gamma_b")
 
 #: Relative tolerance of the forward runs of a trace fit (the compiled pair, the runs of one Jacobian
 #: stepped together).  The sensor forces of the paper's chain differ from converged ones by about 5e-7
-#: of their peak (4e-6 at 1e-8; tests/numerics/test_fit.py), far below any measured noise, at a third
+#: of their peak (4e-6 at 1e-8; tests/numerics/jobs/test_fit.py), far below any measured noise, at a third
 #: of the cost of the pair's default 3e-10; looser, the forward differences of the Jacobian go wrong
 #: where contacts open (by up to 15 % with LSODA at 1e-7).
 FIT_RTOL = 1e-9
@@ -478,7 +478,7 @@ SPAN_RATIO = 100.0
 def _check_spans(records, chain):
     """Refuse a record whose span is far from the time the pulse needs to reach its sensors (SPAN_RATIO), with the
     likely cause: times in other units than s, or another chain than the one measured."""
-    from .experiment import default_t_end
+    from ..layouts.chain import default_t_end
 
     speeds = [rec.speed for rec in records]
     for r, rec in enumerate(records):

@@ -15,8 +15,8 @@ from ringchain.theory import STANDARD_GRAVITY, impedance, junction_coefficients,
 from ringchain.theory import _validate as v
 from scipy.special import erf
 
-from .chain import MODELS, Chain, initial_state
-from .integrate import simulate
+from ..engine.integrate import simulate
+from ..layouts.chain import MODELS, Chain, initial_state
 
 __all__ = ["JunctionReading", "junction_pulse"]
 

@@ -39,10 +39,10 @@ import numpy as np
 from ringchain.theory import Ring, n_per_mm_to_si, paper_data, series_stiffness_for_power_law
 from ringchain.theory import _validate as v
 
-from .chain import MODELS, Chain, sensor_pair
+from ..engine.plots import new_figure
+from ..engine.results import Simulation
+from ..layouts.chain import MODELS, Chain, sensor_pair
 from .experiment import run_experiment
-from .plots import new_figure
-from .results import Simulation
 
 __all__ = [
     "PaperExperiment",
@@ -322,8 +322,8 @@ def angle_table() -> Table:
     """
     from ringchain.theory import STAINLESS_STEEL_304, Ring, minimum_contact_angle, si_to_n_per_mm
 
-    from .contact_angle import HERTZ, contact_at_angle
-    from .contact_bem import HALF_SPACE_LIMIT
+    from ..contact.angle import HERTZ, contact_at_angle
+    from ..contact.bem import HALF_SPACE_LIMIT
 
     aspect = paper_data.TABLE_II_ASPECT_RATIO
     lowest = math.degrees(float(minimum_contact_angle(aspect, 1.0)))

@@ -43,12 +43,12 @@ import numpy as np
 from ringchain.theory import PAPER_TUBE_RADIUS, Ring, impact_speed, paper_data
 from ringchain.theory import _validate as v
 
-from . import signals
-from .chain import MODELS, Chain, sensor_pair, striker_convention
-from .chain_file import ChainFile, vary
-from .executors import InlineExecutor, run_tasks
-from .experiment import MAX_DOUBLINGS, default_t_end
-from .integrate import DEFAULT_MAX_SECONDS, RunTooLargeError, estimate_run, format_duration, simulate_batch
+from ..engine import signals
+from ..engine.executors import InlineExecutor, run_tasks
+from ..engine.integrate import DEFAULT_MAX_SECONDS, RunTooLargeError, estimate_run, format_duration, simulate_batch
+from ..layouts.chain import MODELS, Chain, default_t_end, sensor_pair, striker_convention
+from ..layouts.chain_file import ChainFile, vary
+from .experiment import MAX_DOUBLINGS
 
 __all__ = [
     "Point",
@@ -224,8 +224,8 @@ class Point:
 
 @dataclass(frozen=True)
 class FilePoint:
-    """One point of a sweep of a chain file: the chain of a :class:`~ringchain.numerics.chain_file.ChainFile`
-    (one field varied, :func:`~ringchain.numerics.chain_file.vary`) and one impact.
+    """One point of a sweep of a chain file: the chain of a :class:`~ringchain.numerics.layouts.chain_file.ChainFile`
+    (one field varied, :func:`~ringchain.numerics.layouts.chain_file.vary`) and one impact.
 
     Parameters
     ----------
@@ -490,7 +490,7 @@ def sweep(
         "spawn", which imports a calling script again in every worker: in a script, call
         :func:`sweep` under ``if __name__ == "__main__":`` (a call outside it raises
         ``RuntimeError`` before any worker starts; see
-        :mod:`ringchain.numerics.executors`).
+        :mod:`ringchain.numerics.engine.executors`).
     progress : bool, optional
         Show a tqdm progress bar (on stderr).
     t_end : float, optional
@@ -609,7 +609,8 @@ def _cell(value) -> str:
 def sweep_chain_file(description: ChainFile, field=None, values=(None,), *, model="dual-spring", m_eff_ratio=1.0,
                      drop_heights=None, impact_velocities=None, sensors=paper_data.SENSOR_RINGS, executor=None,
                      striker_mass="m_eff", **options) -> list[dict]:  # fmt: skip
-    """One row per value of ``field`` (:func:`~ringchain.numerics.chain_file.vary`) and impact, through :func:`sweep`.
+    """One row per value of ``field`` (:func:`~ringchain.numerics.layouts.chain_file.vary`) and impact, through
+    :func:`sweep`.
 
     Parameters
     ----------
@@ -619,7 +620,7 @@ def sweep_chain_file(description: ChainFile, field=None, values=(None,), *, mode
     values : sequence
         Its values (m, degrees or ring counts).
     model, m_eff_ratio, striker_mass
-        As in :meth:`~ringchain.numerics.chain_file.ChainFile.chain`.
+        As in :meth:`~ringchain.numerics.layouts.chain_file.ChainFile.chain`.
     drop_heights, impact_velocities : sequence of float
         The impacts (m, or m/s), integrated together as one batch per chain.
     sensors : (int, int)

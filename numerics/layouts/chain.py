@@ -80,16 +80,16 @@ import numpy as np
 from ringchain.theory import STANDARD_GRAVITY, Ring, fit_power_law, hertz_stiffness_pair, linear
 from ringchain.theory import _validate as v
 
+from ..engine.integrate import impact_speeds
+from ..engine.laws import LinearSpring, PowerLaw, Thornton
+from ..engine.network import ANCHOR, Links, Network
+from ..engine.results import BatchSimulation
 from .chain_kinds import GRADING_PROFILES, alternating_chain, graded_chain, joined_chain
 from .disorder import disordered_chain
-from .integrate import impact_speeds
-from .laws import LinearSpring, PowerLaw, Thornton
-from .network import ANCHOR, Links, Network
-from .results import BatchSimulation
 from .yielding import yielding_chain
 
 __all__ = ["Chain", "MODELS", "SUPPORTS", "GRADING_PROFILES", "STRIKERS", "initial_state", "sensor_pair", "ring_index",
-           "striker_convention"]  # fmt: skip
+           "default_t_end", "striker_convention"]  # fmt: skip
 
 #: What each parameter of a :class:`Chain` is given per, when it varies along the chain.
 _PROFILES = {"K": "contact", "n": "contact", "gamma": "contact", "m": "ring", "m_gravity": "ring", "K_b": "ring",
@@ -153,7 +153,7 @@ class Chain:
     r"""A chain of ``n_rings`` interlocked rings, ring 0 at the impact end.
 
     Build it with :meth:`power_law`, :meth:`dual_spring` or :meth:`from_ring` (the paper's
-    own chain: :func:`ringchain.numerics.paper.paper_chain`); a chain that changes along its
+    own chain: :func:`ringchain.numerics.jobs.paper.paper_chain`); a chain that changes along its
     length with :meth:`from_rings`, :meth:`graded`, :meth:`alternating` or :meth:`joined`; rings that
     differ at random with :meth:`disordered`.
     The contact law of both models is [K delta^n + gamma delta_dot]_+
@@ -197,7 +197,7 @@ class Chain:
         Inertial mass of the struck ring 0, kg, or None: ``m``, the paper's convention (also
         ``"m_eff"``; ``"m0"``: ``m_gravity`` of ring 0, a rigid striker; :attr:`striker_inertia`).
     delta_y, delta_max : float, ndarray or None
-        Yielding contacts (:mod:`~ringchain.numerics.yielding`): Thornton's approach at first yield and the largest
+        Yielding contacts (:mod:`.yielding`): Thornton's approach at first yield and the largest
         approach before the run, m (per contact); ``delta_y`` None: elastic Hertz contacts.
     """
 
@@ -576,6 +576,10 @@ class Chain:
         """Inertial mass of ring 0, the striker, kg: ``striker_mass``, or ``m`` of ring 0 (the paper's convention)."""
         return float(self.profile("m")[0]) if self.striker_mass is None else self.striker_mass
 
+    def striker_reduced_mass(self, m) -> float:
+        """Reduced mass of the striker (ring 0, :attr:`striker_inertia`) and a ring of mass ``m`` (kg), kg."""
+        return self.striker_inertia * m / (self.striker_inertia + m)
+
     @property
     def damped(self) -> bool:
         return bool(np.any(self.gamma > 0) or np.any(self.gamma_b > 0))
@@ -715,7 +719,7 @@ class Chain:
             return 0.0 - np.cumsum(e[..., ::-1], axis=-1)[..., ::-1]  # 0.0 - : no -0.0
         return np.concatenate([np.zeros((*e.shape[:-1], 1)), np.cumsum(e, axis=-1)], axis=-1)
 
-    # -- the model contract (ringchain.numerics.integrate) -------------------------------------------
+    # -- the model contract (ringchain.numerics.engine.integrate) -------------------------------------------
     def dynamics(self) -> Network:
         """What the engine integrates: :meth:`network`."""
         return self.network()
@@ -786,6 +790,67 @@ def ring_index(ring, n_rings: int) -> int:
     if not 0 <= i < n_rings:
         raise ValueError(f"ring {i} is not in a chain of {n_rings} rings (0..{n_rings - 1})")
     return i
+
+
+def default_t_end(chain: Chain, speeds, sensors) -> float:
+    """Duration that lets the leading pulse pass the far sensor, s.
+
+    The time the long-wave solitary wave of the chain's power law (Eq. (8)) needs to
+    carry its front 1.5 times the distance to ring ``sensors[1]`` plus half a wave width
+    (:func:`ringchain.theory.solitary_wave_width`), at a force estimate below the actual
+    peak (so the estimated speed is low and the duration long): a quarter of the peak
+    force of the striker's collision with ring 1 at the smallest impact speed (the striker of
+    :class:`~ringchain.numerics.Chain`, of mass ``striker_inertia``), and at least the weight
+    of one ring (the gravity prestress keeps weak waves fast).  For the dual-spring
+    chain the power law is the one fitted to its contact and bending springs in series
+    (Eq. 4).  :func:`run_points` doubles the duration if a pulse is still passing the far
+    sensor at the end.
+
+    The half width is capped at the chain's length: as n -> 1 the long-wave width grows
+    without bound (~ a/(n - 1)), but no pulse wider than the chain passes the sensor before
+    its reflection from the support comes back, and the capped duration stays finite
+    (without the cap, 79 s of simulated time at R/r = 100, 2.5e3 s at R/r = 200).
+    """
+    from ringchain.theory import fit_power_law, solitary_wave_speed, solitary_wave_width
+
+    if not isinstance(chain, Chain):
+        raise TypeError(f"chain must be a Chain, got {type(chain).__name__}")
+    speeds = np.atleast_1d(v.positive("speeds", speeds, "m/s"))
+    if speeds.size == 0:
+        raise ValueError("speeds must hold at least one impact speed (m/s)")
+    far = sensor_pair(sensors, chain.n_rings)[1]
+    if not chain.uniform:
+        return _varying_t_end(chain, speeds, far)
+    if chain.model == "dual-spring":
+        K, n = (float(x) for x in fit_power_law(K_c=chain.K_c, K_b=chain.K_b))
+    else:
+        K, n = chain.K, chain.n
+    speed = float(np.min(speeds))
+    # The striker m_s hitting ring 1 (m) at v stores mu v^2/2 at the peak of K delta^n, mu = m_s m/(m_s + m).
+    delta = ((n + 1.0) * 0.5 * chain.striker_reduced_mass(chain.m) * speed**2 / K) ** (1.0 / (n + 1.0))
+    force = max(0.25 * K * delta**n, chain.m_gravity * STANDARD_GRAVITY)
+    V = float(solitary_wave_speed(force, K=K, n=n, a=chain.a, m=chain.m))
+    width = min(float(solitary_wave_width(n=n, a=chain.a)), chain.n_rings * chain.a)
+    return (1.5 * far * chain.a + 0.5 * width) / V
+
+
+def _varying_t_end(chain: Chain, speeds, far: int) -> float:
+    """:func:`default_t_end` of a chain that changes along its length: the same estimate contact by
+    contact (each contact's power law, the heaviest ring), the pulse's time summed over the
+    contacts up to the far sensor."""
+    from ringchain.theory import fit_power_law, solitary_wave_speed, solitary_wave_width
+
+    pairs = slice(0, chain.n_rings - 1)
+    if chain.model == "dual-spring":
+        K, n = fit_power_law(K_c=chain.profile("K")[pairs], K_b=chain.profile("K_b")[: chain.n_rings - 1])
+    else:
+        K, n = chain.profile("K")[pairs], chain.profile("n")[pairs]
+    m, a, speed = float(np.max(chain.m)), chain.profile("a"), float(np.min(speeds))
+    delta = ((n + 1.0) * 0.5 * chain.striker_reduced_mass(m) * speed**2 / K) ** (1.0 / (n + 1.0))
+    force = np.maximum(0.25 * K * delta**n, float(np.min(chain.m_gravity)) * STANDARD_GRAVITY)
+    V = solitary_wave_speed(force, K=K, n=n, a=a, m=m)
+    width = min(float(np.max(solitary_wave_width(n=n, a=a))), float(np.sum(a)))
+    return float(1.5 * np.sum(a[:far] / V[:far]) + 0.5 * width / np.min(V))
 
 
 def sensor_pair(sensors, n_rings=None) -> tuple[int, int]:

@@ -22,7 +22,7 @@ Each ring's angle is the contact angle to the ring above it (the last ring's, to
 support); see :meth:`ringchain.numerics.Chain.from_rings`.  Angles are in degrees, as on
 the command line; lengths in m.  A malformed file is refused with a message naming the
 segment (counted from 1) and the field.  The file is UTF-8, with or without a byte-order mark, or
-UTF-16 (:func:`~ringchain.numerics.traces.read_text`).
+UTF-16 (:func:`~ringchain.numerics.engine.traces.read_text`).
 
 A sweep varies one field of one segment (:func:`vary`): ``"2.R"`` replaces segment 2's R,
 ``"2.R.last"`` only the last end of its grading (the grading parameter), ``"2.R.first"`` the first.
@@ -38,8 +38,8 @@ import numpy as np
 from ringchain.theory import Ring, get_material
 from ringchain.theory import _validate as v
 
+from ..engine.traces import read_text
 from .chain import GRADING_PROFILES, SUPPORTS, Chain
-from .traces import read_text
 
 try:  # Python 3.11+
     import tomllib
@@ -224,7 +224,8 @@ def parse_chain(text: str, source: str = "chain description") -> ChainFile:
 
 def read_chain_file(path) -> ChainFile:
     """A :class:`ChainFile` read from a TOML file (see the module): UTF-8, with or without a byte-order mark, or
-    UTF-16 with one (:func:`~ringchain.numerics.traces.read_text`); another encoding is refused naming the file."""
+    UTF-16 with one (:func:`~ringchain.numerics.engine.traces.read_text`);
+    another encoding is refused naming the file."""
     return dataclasses.replace(parse_chain(read_text(path), source=f"chain file {path}"), path=str(path))
 
 

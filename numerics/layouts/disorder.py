@@ -6,7 +6,7 @@ in the angle at which neighbours meet and, in the measured power law, in the con
 :class:`~ringchain.theory.Ring`; :meth:`~ringchain.numerics.Chain.disordered` builds the chain
 from the draw (through :meth:`~ringchain.numerics.Chain.from_rings`, so that every contact is
 the unequal-torus contact of its two rings, :func:`~ringchain.theory.hertz_stiffness_pair`);
-:func:`~ringchain.numerics.ensemble` runs many such chains.
+:func:`~ringchain.numerics.jobs.ensemble` runs many such chains.
 
 What is drawn
 -------------
@@ -34,7 +34,7 @@ condition for equal rings) -- and a contact without a single Hertz contact
 (:func:`~ringchain.theory.hertz_stiffness_pair` refuses its angle); an impossible contact draws
 its angle again if the angle is spread, else its two rings.  :class:`RingDraw` records how many
 values were drawn again; :meth:`~ringchain.numerics.Chain.disordered` warns with a
-:class:`DisorderWarning`, :func:`~ringchain.numerics.ensemble` records the count per member.
+:class:`DisorderWarning`, :func:`~ringchain.numerics.jobs.ensemble` records the count per member.
 
 Seeds
 -----

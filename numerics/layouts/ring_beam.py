@@ -47,7 +47,7 @@ __all__ = [
 ]
 
 #: Elements round the ring: the frequencies of orders k <= 6 are converged to better than 1e-5
-#: (tests/numerics/test_ring_beam.py); must be a multiple of 4 (nodes at the contacts and sides).
+#: (tests/numerics/layouts/test_ring_beam.py); must be a multiple of 4 (nodes at the contacts and sides).
 DEFAULT_ELEMENTS = 64
 
 #: Fixed-interface modes kept per ring by default; chosen by the convergence study in

@@ -1,7 +1,7 @@
 r"""The chain of rings that bend: :class:`RingChain`, a layout of the engine, and its runs.
 
 - :class:`RingChain`, :func:`simulate_rings` -- rings resolved as curved beams
-  (:class:`~ringchain.numerics.ring_beam.ReducedRing`) joined at their contact points by the
+  (:class:`~ringchain.numerics.layouts.ring_beam.ReducedRing`) joined at their contact points by the
   unilateral Hertz law F = K_c delta_+^(3/2) (Eq. (1)), hanging under gravity from a fixed
   support through one more contact, struck at the bottom as the lattices are
   (:class:`~ringchain.numerics.Chain`): a drop starts when the slack is taken up, ring 0
@@ -30,9 +30,9 @@ import numpy as np
 from ringchain.theory import STANDARD_GRAVITY, Ring
 from ringchain.theory import _validate as v
 
+from ..engine.integrate import impact_speeds, simulate
+from ..engine.results import BatchSimulation, EnergyBudget, Simulation
 from .chain import ring_index
-from .integrate import impact_speeds, simulate
-from .results import BatchSimulation, EnergyBudget, Simulation
 from .ring_beam import DEFAULT_ELEMENTS, DEFAULT_MODES, ReducedRing, RingModel
 
 __all__ = ["RingChain", "RingSimulation", "RingBatch", "simulate_rings", "RING_METHODS", "DEFAULT_RING_METHOD"]
@@ -200,7 +200,7 @@ class RingChain:
         """``ring`` as a ring index of this chain (ValueError naming it otherwise)."""
         return ring_index(ring, self.n_rings)
 
-    # -- the model contract (ringchain.numerics.integrate) -------------------------------------------
+    # -- the model contract (ringchain.numerics.engine.integrate) -------------------------------------------
     def dynamics(self) -> RingChain:
         """What the engine integrates: the chain itself (it implements the dynamics contract)."""
         return self
@@ -227,7 +227,7 @@ class RingChain:
     def result(self, **record) -> RingBatch:
         return RingBatch(chain=self, network=None, **record)
 
-    # -- the dynamics contract (ringchain.numerics.network) -------------------------------------------
+    # -- the dynamics contract (ringchain.numerics.engine.network) -------------------------------------------
     damped = False
 
     @property
@@ -377,7 +377,7 @@ def simulate_rings(chain: RingChain, t_end, *, impact_velocity=None, drop_height
         mode (:meth:`RingChain.max_frequency`).  The chain is undamped and its rings' fast modes
         make LSODA turn stiff (ten times slower with 8 or more modes); symplectic Verlet keeps
         the energy to ~1e-5 of the impact's at the default step and is second order
-        (tests/numerics/test_ring_beam.py).
+        (tests/numerics/layouts/test_ring_beam.py).
     **options
         As in :func:`~ringchain.numerics.simulate` (``n_samples``, ``rtol``, ``atol``, ``dt``,
         ``steps_per_period``, ``g``...).

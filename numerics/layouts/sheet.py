@@ -23,7 +23,7 @@ rings' planes (:func:`contact_law`): the Hertz contact of the pair (Eq. (1), ell
 angle, :func:`~ringchain.theory.hertz_stiffness_pair`) in series with the bending of the ring body
 (Eq. (2)), fitted over the force window (Eq. (4)), as :meth:`Chain.from_ring` does for a chain; below the
 angle theta_min where one Hertz contact no longer exists, the numerical contact of
-:mod:`~ringchain.numerics.contact_bem`.  The angle is a parameter (4-in-1 mail links its rings
+:mod:`~ringchain.numerics.contact.bem`.  The angle is a parameter (4-in-1 mail links its rings
 diagonally), one for every link or one per family, defaulting to the ring's own ``angle``.
 
 Why the power law only.  The dual-spring chain (Eqs. (5)-(6)) gives each ring two half-masses joined by
@@ -95,8 +95,8 @@ from ringchain.theory import (
 from ringchain.theory import _validate as v
 from ringchain.theory.sheet import FAMILY_NAMES, PATTERNS
 
-from .laws import PowerLaw
-from .network import ANCHOR, Links, Network
+from ..engine.laws import PowerLaw
+from ..engine.network import ANCHOR, Links, Network
 from .sheet_runs import SheetBatch
 
 __all__ = ["Sheet", "PATTERNS", "EDGES", "SHEET_MODELS", "contact_law"]
@@ -146,7 +146,7 @@ def contact_law(ring_a: Ring, ring_b: Ring | None = None, angle=None, window=DEF
     angle = ring_a.angle if angle is None else float(v.in_range("angle", angle, 0.0, np.pi / 2))
     same = dataclasses.replace(ring_b, angle=ring_a.angle) == ring_a
     if same and angle <= float(minimum_contact_angle(ring_a.R, ring_a.r)):
-        from .contact_angle import angle_power_law
+        from ..contact.angle import angle_power_law
 
         mat = ring_a.material
         law = angle_power_law(ring_a.R, ring_a.r, mat.E, mat.nu, angle, ring_a.K_b, tuple(window))
@@ -212,7 +212,7 @@ class Sheet:
     """A sheet of interlinked rings: a two-dimensional network and how it is loaded (see the module notes).
 
     Build it with :meth:`square`, :meth:`triangular` or :meth:`from_links`.  It implements the model
-    contract of :mod:`ringchain.numerics.integrate`, so ``simulate(sheet, t_end, impact_velocity=v)`` runs it.
+    contract of :mod:`ringchain.numerics.engine.integrate`, so ``simulate(sheet, t_end, impact_velocity=v)`` runs it.
 
     Attributes
     ----------
@@ -656,7 +656,7 @@ class Sheet:
         x[:, 1] = np.repeat(0.0 - np.cumsum(rise[::-1])[::-1], cols)
         return x.ravel()
 
-    # -- the model contract (ringchain.numerics.integrate) ------------------------------------------------
+    # -- the model contract (ringchain.numerics.engine.integrate) ------------------------------------------------
     def dynamics(self) -> Network:
         """What the engine integrates: :meth:`network`."""
         return self._network
@@ -697,5 +697,5 @@ def _model(model):
     if model == "dual-spring":
         raise ValueError("a sheet is the power-law model: the dual-spring ring (two half-masses joined by one "
                          "bending spring) has no counterpart where a ring is pulled at 4 or 6 contacts "
-                         "(ringchain.numerics.sheet)")  # fmt: skip
+                         "(ringchain.numerics.layouts.sheet)")  # fmt: skip
     return v.choice("model", model, SHEET_MODELS)

@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 from ringchain.theory import _validate as v
 
-from .results import NetworkSimulation
+from ..engine.results import NetworkSimulation
 
 __all__ = ["SheetSimulation", "SheetBatch", "read_sheet_run", "draw_link_forces", "write_force_frames"]
 
@@ -80,7 +80,7 @@ class SheetSimulation(NetworkSimulation):
         attrs = {"pattern": sheet.pattern or "links", "families": ", ".join(sheet.family_names),
                  "hanging": int(sheet.hanging), "boundary": sheet.boundary, "g_m_s2": float(self.g),
                  "impact_velocity_m_s": float(np.max(self.impact_velocity)),
-                 "method": str(self.stats.get("method", "")), "created_by": "ringchain.numerics.sheet"}  # fmt: skip
+                 "method": str(self.stats.get("method", "")), "created_by": "ringchain.numerics.Sheet"}  # fmt: skip
         if sheet.shape is not None:
             attrs["rows"], attrs["cols"] = sheet.shape
         if sheet.pretension is not None:
@@ -164,7 +164,7 @@ def write_force_frames(run: SheetSimulation, folder, count: int = 6, *, dpi: int
     """
     from matplotlib.colors import Normalize
 
-    from .plots import new_figure
+    from ..engine.plots import new_figure
 
     count = v.count("count", count, 1)
     if run.x.ndim != 2:

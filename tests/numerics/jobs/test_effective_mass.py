@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 from ringchain.numerics import Chain, simulate_batch
-from ringchain.numerics.effective_mass import (
+from ringchain.numerics.jobs.effective_mass import (
     arrival_times,
     fit_effective_mass,
     lowpass,

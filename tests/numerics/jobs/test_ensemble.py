@@ -10,10 +10,10 @@ import numpy as np
 import pytest
 import scipy.stats
 from ringchain.numerics import Chain, DisorderWarning, draw_rings, ensemble, simulate, summarize
-from ringchain.numerics.cli import main
-from ringchain.numerics.disorder import MAX_REDRAW_ROUNDS, member_seeds
-from ringchain.numerics.executors import InlineExecutor, run_tasks
-from ringchain.numerics.experiment import default_t_end
+from ringchain.numerics.cli.commands import main
+from ringchain.numerics.engine.executors import InlineExecutor, run_tasks
+from ringchain.numerics.layouts.chain import default_t_end
+from ringchain.numerics.layouts.disorder import MAX_REDRAW_ROUNDS, member_seeds
 from ringchain.theory import MIN_CHAIN_ASPECT_RATIO, Ring, impact_speed
 
 RING = Ring.from_aspect_ratio(9.0)
@@ -361,7 +361,7 @@ def test_no_edge_value_of_any_option_gives_a_traceback(capsys, tmp_path, monkeyp
     def work(*args, **kwargs):
         raise WorkStarted
 
-    monkeypatch.setattr(importlib.import_module("ringchain.numerics.ensemble"), "ensemble", work)
+    monkeypatch.setattr(importlib.import_module("ringchain.numerics.jobs.ensemble"), "ensemble", work)
     monkeypatch.chdir(tmp_path)
     for value in EDGE_VALUES:
         try:

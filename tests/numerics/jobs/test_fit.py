@@ -27,7 +27,7 @@ from ringchain.numerics import (
     read_traces,
     simulate,
 )
-from ringchain.numerics.fit_dynamic import FIT_RTOL, simulate_parameter_sets
+from ringchain.numerics.jobs.fit_dynamic import FIT_RTOL, simulate_parameter_sets
 from ringchain.theory import Ring, series_displacement, solitary_wave_speed
 
 #: The paper's chain (Table I, R/r = 9) with a contact dashpot of about 3 % of critical damping
@@ -66,7 +66,7 @@ PULSE = {6: np.exp(-(((T - 3e-4) / 5e-5) ** 2)), 12: 0.2 + 0.8 * np.exp(-(((T - 
 
 
 def test_read_traces_reads_what_simulate_writes(tmp_path):
-    from ringchain.numerics.cli import main
+    from ringchain.numerics.cli.commands import main
 
     path = tmp_path / "run.csv"
     assert main(["simulate", "--model", "power-law", "--drop-height", "0.01", "--samples", "301", "--out",
@@ -348,7 +348,7 @@ def test_trace_jacobian_matches_central_differences_column_by_column():
     # but scaled each record's v0 standard error by v0_first/v0_r.  Three drops (5, 20, 80 mm: speeds 0.31 to
     # 1.25 m/s), each column of the batched Jacobian against central differences of the residual.
     import lmfit
-    from ringchain.numerics.fit_dynamic import _records, _TraceProblem
+    from ringchain.numerics.jobs.fit_dynamic import _records, _TraceProblem
     from ringchain.theory import impact_speed
 
     chain = paper_chain("power-law")

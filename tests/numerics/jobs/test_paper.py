@@ -4,8 +4,8 @@ import math
 
 import pytest
 from ringchain import numerics
-from ringchain.numerics import paper
-from ringchain.numerics.cli import main
+from ringchain.numerics.cli.commands import main
+from ringchain.numerics.jobs import paper
 from ringchain.theory import paper_data
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"

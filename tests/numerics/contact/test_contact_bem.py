@@ -2,8 +2,9 @@
 
 import numpy as np
 import pytest
-from ringchain.numerics import contact_angle, contact_bem
-from ringchain.numerics.contact_bem import HalfSpaceWarning, contact_curve
+from ringchain.numerics.contact import angle as contact_angle
+from ringchain.numerics.contact import bem as contact_bem
+from ringchain.numerics.contact.bem import HalfSpaceWarning, contact_curve
 from ringchain.theory import (
     bending_stiffness,
     contact_ellipse,

@@ -18,7 +18,7 @@ from ringchain.numerics import (
     simulate,
     simulate_batch,
 )
-from ringchain.numerics.integrate import ENERGY_DRIFT_LIMIT, TOLERANCE_RANGE
+from ringchain.numerics.engine.integrate import ENERGY_DRIFT_LIMIT, TOLERANCE_RANGE
 
 PAPER = paper_chain("dual-spring")
 DROP = 0.05  # m: a 1 m/s impact, peak forces ~ 80 N
@@ -354,7 +354,7 @@ def test_an_integrator_failure_is_a_value_error_with_its_reason(monkeypatch, met
     # RuntimeError "odeint failed" (and an ODEintWarning).  The budget is cut (LSODA: from 1e6 to
     # 1e4 steps per sample; dopri5: from 1e7 to 1e4 steps) so that the failure comes in a fraction
     # of a second, not 20 s.
-    from ringchain.numerics import integrate
+    from ringchain.numerics.engine import integrate
 
     monkeypatch.setattr(integrate, budget, 10_000)
     chain = Chain.power_law(5, K=1e6, n=1.5, m=0.01, a=0.04)

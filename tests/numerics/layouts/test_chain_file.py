@@ -7,8 +7,8 @@ import math
 import numpy as np
 import pytest
 from ringchain.numerics import Chain, simulate
-from ringchain.numerics.chain_file import parse_chain, read_chain_file, vary
-from ringchain.numerics.cli import main
+from ringchain.numerics.cli.commands import main
+from ringchain.numerics.layouts.chain_file import parse_chain, read_chain_file, vary
 from ringchain.theory import Ring
 
 TWO_SEGMENTS = """

@@ -149,7 +149,7 @@ def test_a_simulated_drop_launches_the_wave_the_impact_law_predicts(law):
         F_80, F_100 = (signals.peak(sim.t, sim.contact_force[:, c])[1] for c in (80, 100))
         assert F_100 == pytest.approx(F_80, rel=1e-3)  # formed: measured 3e-4 (n = 1.107), 2e-7 (n = 3/2)
         # The energy the wave leaves behind: measured 1.19 % (n = 3/2) and 1.36 % (n = 1.107) below the law at
-        # both heights, as on the strikes of tests/numerics/test_linear_waves.py (1.1-1.4 %); the band is that
+        # both heights, as on the strikes of tests/numerics/layouts/test_linear_waves.py (1.1-1.4 %); the band is that
         # with 0.6 % to either side.  A kinetic-energy density 53 % too large puts the lattice 12-15 % above the
         # law (measured).
         assert 0.98 < F_100 / F_law < 0.995, (h, F_100 / F_law)

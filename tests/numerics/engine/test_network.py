@@ -74,7 +74,7 @@ def paper_power_law(x, u, K, n, gamma, m, m_g, anchored):
 def paper_dual_spring(x, u, K_c, K_b, gamma_c, gamma_b, m, m_g, anchored):
     """Eqs. (5)-(6) written as printed for cells (u_i, w_i), in the paper's sign.
 
-    Mapping (module docstring of ringchain.numerics.chain): ring j = (w_{j-1}, u_j), so our
+    Mapping (module docstring of ringchain.numerics.layouts.chain): ring j = (w_{j-1}, u_j), so our
     site 2j is w_{j-1} and site 2j+1 is u_j; w_{N-1} is the fixed support (if anchored).
     """
     N = len(x) // 2

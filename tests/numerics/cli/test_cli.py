@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from ringchain.numerics import Chain, simulate
-from ringchain.numerics.cli import main
+from ringchain.numerics.cli.commands import main
 from ringchain.theory import Ring, paper_data, si_to_n_per_mm, solitary_wave_speed
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
@@ -305,9 +305,9 @@ def no_work(monkeypatch):
     """Replace the solver and the sweep, so that a test sees whether the command started its work."""
     import importlib
 
-    from ringchain.numerics import experiment
+    from ringchain.numerics.jobs import experiment
 
-    sweep_module = importlib.import_module("ringchain.numerics.sweep")
+    sweep_module = importlib.import_module("ringchain.numerics.jobs.sweep")
 
     def work(*args, **kwargs):
         raise WorkStarted
@@ -674,7 +674,7 @@ def test_paper_refuses_a_drop_beyond_contact_mechanics_before_any_work(capsys, t
 
 
 def test_running_out_of_memory_is_one_line(capsys, monkeypatch, tmp_path):
-    from ringchain.numerics import experiment
+    from ringchain.numerics.jobs import experiment
 
     def exhausted(*args, **kwargs):
         raise MemoryError
@@ -705,7 +705,8 @@ def test_a_chain_too_long_for_the_command_line_is_refused_before_it_is_built(cap
 def test_a_chain_that_cannot_fit_in_memory_is_refused_before_its_network_is_built(capsys, monkeypatch, tmp_path):
     # Issue 24, item 11: the estimate came after the network (and the memory) was built.  With 100 MB
     # available, the 2e6 sites of 1e6 rings need 3.2e8 bytes at 160 bytes per site: 305 MB of 2^20 bytes.
-    from ringchain.numerics import RunTooLargeError, integrate
+    from ringchain.numerics import RunTooLargeError
+    from ringchain.numerics.engine import integrate
 
     monkeypatch.setattr(integrate, "_available_memory", lambda: 100 * 2**20)
 
@@ -724,7 +725,7 @@ def test_a_chain_that_cannot_fit_in_memory_is_refused_before_its_network_is_buil
 
 def test_simulate_records_only_the_rings_it_writes(capsys, monkeypatch, tmp_path):
     # Issue 24, item 11: --rings 100000 recorded every ring (5.4 GB) though only two sensors are written.
-    from ringchain.numerics import experiment
+    from ringchain.numerics.jobs import experiment
 
     recorded = []
 
@@ -752,7 +753,7 @@ def test_the_default_duration_grows_until_the_pulse_has_passed(capsys, tmp_path,
 
 def test_ctrl_c_ends_in_one_line(capsys, monkeypatch, tmp_path):
     # Issue 24, item 10: Ctrl-C gave a traceback.
-    from ringchain.numerics import experiment
+    from ringchain.numerics.jobs import experiment
 
     def interrupted(*args, **kwargs):
         raise KeyboardInterrupt
@@ -765,7 +766,7 @@ def test_ctrl_c_ends_in_one_line(capsys, monkeypatch, tmp_path):
 def test_a_reader_that_stops_early_ends_the_command_quietly():
     # Issue 24, item 15: `--json | head` printed "error: [Errno 32] Broken pipe" and Python's own complaint.
     program = ("import sys\n"
-               "from ringchain.numerics import cli\n"
+               "from ringchain.numerics.cli import commands as cli\n"
                "def info(args):\n"
                "    for k in range(200000):\n"
                "        print(k)\n"

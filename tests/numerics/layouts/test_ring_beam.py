@@ -3,9 +3,9 @@
 import numpy as np
 import pytest
 from ringchain.numerics import Chain, Simulation, simulate
-from ringchain.numerics.effective_mass import arrival_times
-from ringchain.numerics.ring_beam import ReducedRing, RingModel
-from ringchain.numerics.ring_chain import RingChain, RingSimulation, simulate_rings
+from ringchain.numerics.jobs.effective_mass import arrival_times
+from ringchain.numerics.layouts.ring_beam import ReducedRing, RingModel
+from ringchain.numerics.layouts.ring_chain import RingChain, RingSimulation, simulate_rings
 from ringchain.theory import Ring, bending_stiffness, ring_frequencies
 
 E, NU, RHO = 193e9, 0.29, 8000.0  # the package's stainless steel
@@ -219,7 +219,7 @@ def test_craig_bampton_with_all_modes_is_the_full_model():
 
 def test_reduction_converges_to_the_full_model():
     """Sensor traces (low-passed at 10 kHz, as for the arrival times) of a 6-ring chain, 0.8 ms."""
-    from ringchain.numerics.effective_mass import lowpass
+    from ringchain.numerics.jobs.effective_mass import lowpass
 
     runs = {m: simulate_rings(short_chain(m, n_rings=6), 8e-4, drop_height=0.05, n_samples=801)
             for m in (0, 4, 12, None)}  # fmt: skip

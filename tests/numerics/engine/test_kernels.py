@@ -1,4 +1,4 @@
-"""The compiled methods (ringchain.numerics.kernels) against SciPy's, their energy, max norm, batches and cache.
+"""The compiled methods (ringchain.numerics.engine.kernels) against SciPy's, their energy, max norm, batches and cache.
 
 Every compiled kernel costs a cold compile per process (the session's cache folder is fresh:
 conftest.py), so the tests reuse a few models and call the same few kernels: dopri5 for one run
@@ -17,13 +17,13 @@ from ringchain.numerics import (
     Links,
     Network,
     initial_state,
-    kernels,
     laws,
     paper_chain,
     simulate,
     simulate_batch,
 )
-from ringchain.numerics.ring_chain import RingChain
+from ringchain.numerics.engine import kernels
+from ringchain.numerics.layouts.ring_chain import RingChain
 from ringchain.theory import Ring
 
 DROP = 0.05  # m: a 1 m/s impact
@@ -311,7 +311,8 @@ def test_a_stack_of_different_chains_is_their_runs_alone():
 PROBE = """
 import sys
 import numpy as np
-from ringchain.numerics import Chain, kernels, simulate
+from ringchain.numerics import Chain, simulate
+from ringchain.numerics.engine import kernels
 chain = Chain.power_law(6, K=4.9e6, n=1.11, m=8.2e-3, a=0.04)
 sim = simulate(chain, 2e-4, impact_velocity=0.5, n_samples=21, method="verlet")
 print(kernels.CACHE)

@@ -6,7 +6,7 @@ c_F c_d^(-n) (K_c of Eq. 1 by c_F c_d^(-3/2), K_b by c_F/c_d), n unchanged, and 
 Eq. (8) unchanged; the order of the samples, and of the columns in a file, changes nothing.
 The fits must follow exactly, their covariance carried by the Jacobian of the change (K's
 factor c_d^(-n) depends on n, so K's standard error mixes with n's).  Before the least squares
-were solved in scaled units (:func:`ringchain.numerics.fit.minimize`), forces in uN stopped
+were solved in scaled units (:func:`ringchain.numerics.jobs.fit.minimize`), forces in uN stopped
 them early (n = 1.0883 +- 0.0036 where the same data in N give 1.0707).
 
 One change is not a symmetry: the speed fit with n free holds K fixed in N/m^n, a unit that

@@ -14,7 +14,7 @@
 - ``ringchain sheet --pattern square --size 40x40`` -- an impact on a sheet of rings (:mod:`.sheet_cli`).
 
 Inputs are SI (m, m/s, N) except contact angles, given in degrees.  Every input and every
-output path is checked before any work (:mod:`ringchain.numerics._cli_options`); a bad one
+output path is checked before any work (:mod:`ringchain.numerics.cli._options`); a bad one
 gives a one-line error naming the option, in the units it was given, and exit code 2;
 success exits 0, a result beyond its model's validity 1, Ctrl-C 130 (one line), a reader that
 closed the pipe 141 (quietly).  This module only parses, calls and prints: one function per
@@ -30,17 +30,17 @@ import sys
 import warnings
 from pathlib import Path
 
-from . import _cli_options as opt
-from . import sheet_cli
-from .ensemble_cli import add_parser as add_ensemble_parser
-from .paper import PAPER_DROP_HEIGHT, PAPER_FIGURES, STIFFNESS_SOURCES
+from ..jobs.paper import PAPER_DROP_HEIGHT, PAPER_FIGURES, STIFFNESS_SOURCES
+from . import _options as opt
+from . import sheet as sheet_cli
+from .ensemble import add_parser as add_ensemble_parser
 
 __all__ = ["main", "build_parser"]
 
 
 # -- ringchain paper -----------------------------------------------------------------------------
 def _paper(args) -> int:
-    from .paper import paper_job
+    from ..jobs.paper import paper_job
 
     h = float(args.drop_height)
     if not h > 0:
@@ -60,7 +60,7 @@ def _paper_checked(args) -> int:
 
 # -- ringchain ring ------------------------------------------------------------------------------
 def _ring(args) -> int:
-    from .contact_angle import contact_report
+    from ..contact.angle import contact_report
 
     opt.check_geometry(args.R / args.r, [args.angle], chain=False, given="arguments --R and --r", two_patches=True)
     F_lo, F_hi = args.window
@@ -88,7 +88,7 @@ def _ring(args) -> int:
 
 # -- ringchain simulate ------------------------------------------------------------------------------
 def _simulate(args) -> int:
-    from .experiment import run_experiment
+    from ..jobs.experiment import run_experiment
 
     if args.plot is not None and Path(args.plot).resolve() == Path(args.out).resolve():
         raise ValueError(f"arguments --out and --plot: both name {args.out}; give two files")
@@ -117,7 +117,7 @@ def _simulate(args) -> int:
 
 # -- ringchain sweep -------------------------------------------------------------------------------
 def _sweep(args) -> int:
-    from .sweep import sweep, write_csv
+    from ..jobs.sweep import sweep, write_csv
 
     opt.check_outputs([args.chain and args.chain.path], [("--out", args.out)])
     points = opt.sweep_points(args)
@@ -203,7 +203,7 @@ def _version() -> str:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from .integrate import METHODS
+    from ..engine.integrate import METHODS
 
     parser = _Parser(prog="ringchain", description=__doc__.split("\n\n")[0], allow_abbrev=False)
     parser.add_argument("--version", action="version", version=f"ringchain {_version()}")
@@ -262,7 +262,7 @@ def build_parser() -> argparse.ArgumentParser:
                        allow_abbrev=False).set_defaults(func=_cache_info)  # fmt: skip
     actions.add_parser("clear", help="remove every entry (the theory is derived again on next use)",
                        allow_abbrev=False).set_defaults(func=_cache_clear)  # fmt: skip
-    from .fit_cli import add_parser as add_fit_parser
+    from .fit import add_parser as add_fit_parser
 
     add_fit_parser(sub, geometry=opt.geometry_options)  # sets its own func (fit_cli.run)
     add_ensemble_parser(sub)  # ringchain ensemble: sets its own func (ensemble_cli.run)

@@ -15,7 +15,7 @@ r"""The striker: the inertia of the struck ring 0 (``striker_mass``), its moment
        m_eff (paper's)         1        -1.36 %        one wave, the striker recoils
        m0 (rigid)              2.70     -2.31 %        a train: 88.7 N, then 16.0 N, 4.8 N, ... (contact 100)
 
-   The lattice is scale invariant (tests/numerics/test_linear_waves.py), so these ratios hold at
+   The lattice is scale invariant (tests/numerics/layouts/test_linear_waves.py), so these ratios hold at
    every drop height and stiffness for this n and mass ratio.  A striker heavier than a ring
    keeps moving after the first wave leaves and launches smaller ones behind it, which take the
    energy the leading wave lacks; the law, which gives all the energy to one wave, is then a
@@ -30,11 +30,10 @@ import json
 import numpy as np
 import pytest
 from ringchain.numerics import STRIKERS, Chain, initial_state, paper_chain, signals, simulate
-from ringchain.numerics.chain import striker_convention
-from ringchain.numerics.chain_file import parse_chain
-from ringchain.numerics.cli import main
-from ringchain.numerics.experiment import default_t_end
-from ringchain.numerics.sweep import FilePoint, Point, run_points
+from ringchain.numerics.cli.commands import main
+from ringchain.numerics.jobs.sweep import FilePoint, Point, run_points
+from ringchain.numerics.layouts.chain import default_t_end, striker_convention
+from ringchain.numerics.layouts.chain_file import parse_chain
 from ringchain.theory import Ring, impact_amplitude, impact_speed, solitary_wave_speed
 
 RING = Ring.from_aspect_ratio(9.0)

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 from ringchain.numerics import read_sheet_run
-from ringchain.numerics.cli import build_parser, main
+from ringchain.numerics.cli.commands import build_parser, main
 
 
 def test_a_small_sheet_is_run_written_and_mapped(tmp_path, capsys):

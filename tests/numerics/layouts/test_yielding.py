@@ -4,9 +4,10 @@ viscoelastic contact and the ring's loss factor, and the paper's chain with anne
 import numpy as np
 import pytest
 from ringchain import theory
-from ringchain.numerics import Chain, Network, kernels, simulate
+from ringchain.numerics import Chain, Network, simulate
+from ringchain.numerics.engine import kernels
+from ringchain.numerics.jobs.paper import paper_chain
 from ringchain.numerics.laws import HuntCrossley, LinearSpring, Thornton, loss_factor_spring
-from ringchain.numerics.paper import paper_chain
 
 R, r, E, NU, Y = 22.5e-3, 2.5e-3, 193e9, 0.29, 215e6  # the paper's ring, annealed AISI 304
 M0 = 7900.0 * 2 * np.pi**2 * R * r**2  # kg, one ring

@@ -11,12 +11,21 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from ringchain.numerics import RunTooLargeError
-from ringchain.numerics.cli import main
-from ringchain.numerics.sweep import AXES, InlineExecutor, Point, default_t_end, expand, run_points, sweep, write_csv
+from ringchain.numerics.cli.commands import main
+from ringchain.numerics.jobs.sweep import (
+    AXES,
+    InlineExecutor,
+    Point,
+    default_t_end,
+    expand,
+    run_points,
+    sweep,
+    write_csv,
+)
 from ringchain.theory import Ring
 
-# The module (ringchain.numerics.sweep may name the function).
-sweep_module = importlib.import_module("ringchain.numerics.sweep")
+# The module (ringchain.numerics.jobs.sweep may name the function).
+sweep_module = importlib.import_module("ringchain.numerics.jobs.sweep")
 
 # A short power-law chain read at rings 2 and 5: each run takes a few hundredths of a second.
 SMALL = {"model": "power-law", "n_rings": 10, "sensors": (2, 5)}

@@ -3,7 +3,7 @@ capped_contact_curve) against Thornton's loading curve (theory/plastic.py)."""
 
 import numpy as np
 import pytest
-from ringchain.numerics.contact_plastic import CAPPED_KKT_TOLERANCE, capped_contact_curve
+from ringchain.numerics.contact.plastic import CAPPED_KKT_TOLERANCE, capped_contact_curve
 from ringchain.theory import equivalent_radius
 
 R, r, E, NU, Y = 22.5e-3, 2.5e-3, 193e9, 0.29, 215e6  # the paper's ring, annealed AISI 304

@@ -105,7 +105,7 @@ def bloch_amplitude(chain, params, qa, sigma=10.0, periods=4.0):
 
 
 def spectral_peaks(t, y, count, pad=16):
-    """Angular frequencies of the ``count`` strongest lines of y (:func:`ringchain.numerics.signals.spectrum`)."""
+    """Angular frequencies of the ``count`` strongest lines of y (:func:`~ringchain.numerics.signals.spectrum`)."""
     frequency, amplitude = signals.spectrum(t, y, pad=pad)
     lobe = int(2.5 * frequency.size * 2 / (pad * y.size)) + 1  # the Hann main lobe: 2 unpadded bins either side
     peaks = []
@@ -183,7 +183,7 @@ def formed_wave(n):
     # Until the slowest wave passes contact FAR + 10 (its speed from Eq. (8), within 2 %).
     t_end = (FAR + 10) / (0.98 * float(solitary_wave_speed(slowest, K=1.0, n=n, m=1.0, a=1.0)))
     # Verlet at 200 steps per period: F_m, E and P change by < 1e-5 with 400 (the error grows with the
-    # distance travelled; see tests/numerics/test_theory_vs_lattice.py).
+    # distance travelled; see tests/numerics/layouts/test_theory_vs_lattice.py).
     batch = simulate_batch(chain, t_end, impact_velocities=SPEEDS, gravity=False, method="verlet",
                            steps_per_period=200, n_samples=3001)  # fmt: skip
     support = float(solitary_wave_width(n=n, a=1.0))

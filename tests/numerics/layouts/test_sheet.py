@@ -4,7 +4,7 @@ hanging sheet against the hanging chain column by column, energy, records and Ne
 import numpy as np
 import pytest
 from ringchain.numerics import Chain, Sheet, read_sheet_run, simulate
-from ringchain.numerics.sheet import contact_law
+from ringchain.numerics.layouts.sheet import contact_law
 from ringchain.theory import Ring, sheet_dispersion
 
 RING = Ring.from_aspect_ratio(9.0)

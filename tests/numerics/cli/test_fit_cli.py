@@ -6,7 +6,7 @@ import json
 
 import numpy as np
 import pytest
-from ringchain.numerics.cli import main
+from ringchain.numerics.cli.commands import main
 from ringchain.theory import Ring, series_displacement, solitary_wave_speed
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"

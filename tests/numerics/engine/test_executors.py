@@ -6,8 +6,9 @@ import sys
 import textwrap
 
 import pytest
-from ringchain.numerics import executors, sweep
-from ringchain.numerics.executors import InlineExecutor, default_executor
+from ringchain.numerics import sweep
+from ringchain.numerics.engine import executors
+from ringchain.numerics.engine.executors import InlineExecutor, default_executor
 
 GRID = '{"R_over_r": [6.0, 9.0]}'  # static theory only: quick in any worker
 

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 from ringchain.numerics import STANDARD_GRAVITY as G
 from ringchain.numerics import Chain, Network, Simulation, initial_state, laws, simulate, simulate_batch
-from ringchain.numerics.junction import junction_pulse
+from ringchain.numerics.jobs.junction import junction_pulse
 from ringchain.theory import Ring, fit_power_law, hertz_stiffness_pair
 
 RNG_SEED = 13
@@ -123,7 +123,7 @@ def test_energy_is_conserved_without_dashpots_on_every_kind_of_varying_chain(cas
     energy = sim.energy()
     assert np.all(energy.dissipated == 0.0)
     drift = np.abs(energy.total - energy.total[0]).max() / energy.kinetic[0]
-    # As for the uniform chain (tests/numerics/test_integrate.py): LSODA at rtol 1e-9 over a short run
+    # As for the uniform chain (tests/numerics/engine/test_integrate.py): LSODA at rtol 1e-9 over a short run
     # (measured 2e-9 to 5e-8); Verlet's shadow energy at 60 steps per period, O((omega dt)^2) ~ 1e-3
     # (measured 1.5e-5 to 3.6e-4).
     assert drift < (1e-3 if method == "verlet" else 1e-6)
