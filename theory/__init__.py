@@ -16,7 +16,7 @@ Static theory of one contact (paper Sec. II, Eqs. 1-4, App. A):
   :func:`fit_power_law` -- the series law and its power-law reduction (Eqs. 3-4);
 - :class:`Ring`, :class:`Material` -- a ring of the chain and its material.
 
-Long waves (paper Sec. IV.C, App. B; modules :mod:`.longwave` and :mod:`.solitary`):
+Long waves (paper Sec. IV.C, App. B; modules :mod:`.longwave`, :mod:`.solitary` and :mod:`.prestressed`):
 
 - :func:`solitary_wave_speed`, :func:`solitary_wave_speed_from_velocity` -- V_s of the
   compact solitary wave (Eq. (8));
@@ -150,6 +150,7 @@ from .plastic import (
     thornton_unloading_force,
     yield_velocity,
 )
+from .prestressed import solitary_wave_speed_prestressed
 from .pulse import impact_amplitude, solitary_wave_energy, solitary_wave_momentum
 from .ring import bending_stiffness
 from .series import (
@@ -169,7 +170,6 @@ from .solitary import (
     solitary_wave_profile,
     solitary_wave_speed,
     solitary_wave_speed_from_velocity,
-    solitary_wave_speed_prestressed,
     solitary_wave_width,
 )
 from .subsurface import FirstYield, first_yield, subsurface_stress, yield_force

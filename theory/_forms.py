@@ -22,7 +22,7 @@ import numpy as np
 
 from ._codegen import sp
 
-__all__ = ["positive_differences", "split_product", "log_monomial", "power_law", "power_law_value"]
+__all__ = ["positive_differences", "split_product", "log_monomial", "power_law", "power_law_value", "tidy_powers"]
 
 
 def _leading_negative(add) -> bool:
@@ -137,3 +137,14 @@ def power_law_value(log_coefficient, exponent, variable):
         value += log_coefficient
         return np.exp(value, out=value)
     return np.exp(log_coefficient + exponent * value)
+
+
+def tidy_powers(expr):
+    """Merge powers and cancel their exponents (every base here is positive)."""
+    expr = expr.replace(lambda e: e.is_Pow and e.base.is_Add, lambda e: sp.Pow(sp.factor(e.base), e.exp))
+    expr = sp.expand_power_base(sp.powdenest(sp.expand_power_base(expr, force=True), force=True), force=True)
+    expr = sp.powsimp(expr, combine="exp", force=True)
+    expr = expr.replace(
+        lambda e: e.is_Pow and bool(e.exp.free_symbols), lambda e: sp.Pow(e.base, sp.factor(sp.cancel(e.exp)))
+    )
+    return sp.powsimp(expr, combine="exp", force=True)
