@@ -10,7 +10,7 @@ Static theory of one contact (paper Sec. II, Eqs. 1-4, App. A):
 - :func:`hertz_stiffness_pair` -- K_c of two different tori (radii, materials), for chains that vary;
 - :func:`contact_semi_axes` -- the semi-axes of the contact ellipse under a force (where it outgrows the tube);
 - :func:`torus_gap`, :func:`contact_patches` -- the exact gap of two tori beyond its quadratic
-  (Hertz) part, and the two contact points it has below theta_min (:mod:`.contact`, Sec. 4);
+  (Hertz) part, and the two contact points it has below theta_min (:mod:`.gap`);
 - :func:`bending_stiffness` -- K_b of one ring by Castigliano (Eq. 2);
 - :func:`series_displacement`, :func:`local_exponent`, :func:`crossover_force`,
   :func:`fit_power_law` -- the series law and its power-law reduction (Eqs. 3-4);
@@ -98,13 +98,10 @@ from . import curved_beam, paper_data
 from .contact import (
     contact_ellipse,
     contact_modulus,
-    contact_patches,
     contact_semi_axes,
     hertz_stiffness,
     hertz_stiffness_pair,
     minimum_contact_angle,
-    smallest_patch_angle,
-    torus_gap,
 )
 from .curved_beam import inextensional_frequency, ring_frequencies
 from .disorder import (  # issue 23: disorder
@@ -119,6 +116,7 @@ from .disorder import (  # issue 23: disorder
     impedance_spread,
     localization_length,
 )
+from .gap import contact_patches, smallest_patch_angle, torus_gap
 from .geometry import MIN_CHAIN_ASPECT_RATIO, PAPER_TUBE_RADIUS, Ring
 from .linear import (
     STANDARD_GRAVITY,

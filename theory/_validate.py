@@ -31,6 +31,7 @@ __all__ = [
     "distinct",
     "compact_wave_exponent",
     "compact_wave_chain",
+    "torus_radii",
 ]
 
 
@@ -203,6 +204,31 @@ def compact_wave_chain(K, n, a, m=None):
     if m is not None:
         out.append(positive("m", m, "kg"))
     return out
+
+
+def torus_radii(R, r):
+    """R, r as float arrays with 0 < 2 r < R, finite; a ValueError naming the problem otherwise.
+
+    The usual case (r one number) costs two reductions over R.
+    """
+    r = positive("r", r, "m")
+    R = as_array("R", R)
+    broadcast_shape(R=R, r=r)
+    if R.size and r.size == 1:
+        lo, hi = R.min(), R.max()
+        fine = bool(hi < np.inf and 0.5 * lo > r.reshape(()))  # False for NaN too; 0.5 R is exact
+    else:
+        fine = False
+    if not fine:
+        R = positive("R", R, "m")
+        if not np.all(0.5 * R > r):
+            with np.errstate(all="ignore"):
+                ratio = np.min(R / r)
+            raise ValueError(
+                "R must exceed 2 r: for R <= 2 r the relative curvature of two interlocked tori is not "
+                f"positive and Hertz contact does not apply (got R/r = {show(ratio)})"
+            )
+    return R, r
 
 
 def show(array) -> str:
