@@ -35,7 +35,8 @@ Linear waves and what the pulse carries (beyond the paper; modules :mod:`.linear
 - :func:`impact_speed` -- sqrt(2 g h), the speed of a dropped ring when its slack is taken up;
 - :func:`impact_amplitude` -- the peak force launched by a striker at speed v0 (F_m ~ v0^(2n/(n+1))).
 
-Disorder: rings that differ from one another (beyond the paper; module :mod:`.disorder`):
+Disorder: rings that differ from one another (beyond the paper; modules :mod:`.disorder`, :mod:`.scattering`
+and :mod:`.attenuation`):
 
 - :func:`effective_medium_speed`, :func:`harmonic_mean_speed` -- long linear waves: the homogenised
   speed <a>/sqrt(<m><1/k>) and the harmonic mean of the local speeds, from per-ring arrays;
@@ -95,6 +96,7 @@ chain (``sigma_K``, ``sigma_m``, ``correlation``, ``sigma_Z``) after the chain's
 """
 
 from . import curved_beam, paper_data
+from .attenuation import attenuated_travel_time, disorder_attenuation_length  # issue 23: disorder
 from .contact import (
     contact_ellipse,
     contact_modulus,
@@ -105,16 +107,12 @@ from .contact import (
 )
 from .curved_beam import inextensional_frequency, ring_frequencies
 from .disorder import (  # issue 23: disorder
-    attenuated_travel_time,
     chain_impedance_spread,
-    disorder_attenuation_length,
-    disorder_pulse_spread,
     disorder_speed_shift,
     disordered_solitary_wave_speed,
     effective_medium_speed,
     harmonic_mean_speed,
     impedance_spread,
-    localization_length,
 )
 from .gap import contact_patches, smallest_patch_angle, torus_gap
 from .geometry import MIN_CHAIN_ASPECT_RATIO, PAPER_TUBE_RADIUS, Ring
@@ -151,6 +149,7 @@ from .plastic import (
 from .prestressed import solitary_wave_speed_prestressed
 from .pulse import impact_amplitude, solitary_wave_energy, solitary_wave_momentum
 from .ring import bending_stiffness
+from .scattering import disorder_pulse_spread, localization_length  # issue 23: disorder
 from .series import (
     DEFAULT_FORCE_WINDOW,
     crossover_force,

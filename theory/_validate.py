@@ -32,6 +32,9 @@ __all__ = [
     "compact_wave_exponent",
     "compact_wave_chain",
     "torus_radii",
+    "spreads",
+    "exponent_between",
+    "finite_array_result",
 ]
 
 
@@ -229,6 +232,35 @@ def torus_radii(R, r):
                 f"positive and Hertz contact does not apply (got R/r = {show(ratio)})"
             )
     return R, r
+
+
+def spreads(sigma_K, sigma_m, correlation):
+    """Two relative spreads (>= 0) and their correlation (in [-1, 1]) of a disordered chain, as float arrays."""
+    sigma_K = nonnegative("sigma_K", sigma_K)
+    sigma_m = nonnegative("sigma_m", sigma_m)
+    correlation = in_range("correlation", correlation, -1.0, 1.0, closed_low=True, closed_high=True)
+    return sigma_K, sigma_m, correlation
+
+
+def exponent_between(n, low=1.0, high=np.inf):
+    """n in (low, high) for low 1 (the compact wave) or 0 (any power law), with what the bounds mean."""
+    try:
+        return in_range("n", n, low, high, closed_high=False)
+    except ValueError as error:
+        reason = {
+            1.0: "the compact solitary wave exists only for n > 1 (n = 1 is the linear chain)",
+            0.0: "the contact law F = K delta^n needs n > 0",
+        }[low]
+        if high < np.inf:
+            reason += f"; its strain profile has an infinite mean square wavenumber (a cusp) for n >= {high:g}"
+        raise ValueError(f"{error}: {reason}") from None
+
+
+def finite_array_result(value, what: str, inputs: str):
+    """``value`` as a float array (computed quietly), checked by :func:`finite_result`."""
+    with np.errstate(all="ignore"):
+        array = np.asarray(value, dtype=float)
+    return finite_result(array, what, inputs)
 
 
 def show(array) -> str:
