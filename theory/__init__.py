@@ -107,12 +107,10 @@ from .contact import (
 )
 from .curved_beam import inextensional_frequency, ring_frequencies
 from .disorder import (  # issue 23: disorder
-    chain_impedance_spread,
     disorder_speed_shift,
     disordered_solitary_wave_speed,
     effective_medium_speed,
     harmonic_mean_speed,
-    impedance_spread,
 )
 from .gap import contact_patches, smallest_patch_angle, torus_gap
 from .geometry import MIN_CHAIN_ASPECT_RATIO, PAPER_TUBE_RADIUS, Ring
@@ -149,7 +147,12 @@ from .plastic import (
 from .prestressed import solitary_wave_speed_prestressed
 from .pulse import impact_amplitude, solitary_wave_energy, solitary_wave_momentum
 from .ring import bending_stiffness
-from .scattering import disorder_pulse_spread, localization_length  # issue 23: disorder
+from .scattering import (  # issue 23: disorder
+    chain_impedance_spread,
+    disorder_pulse_spread,
+    impedance_spread,
+    localization_length,
+)
 from .series import (
     DEFAULT_FORCE_WINDOW,
     crossover_force,

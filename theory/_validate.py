@@ -35,6 +35,7 @@ __all__ = [
     "spreads",
     "exponent_between",
     "finite_array_result",
+    "rings",
 ]
 
 
@@ -261,6 +262,16 @@ def finite_array_result(value, what: str, inputs: str):
     with np.errstate(all="ignore"):
         array = np.asarray(value, dtype=float)
     return finite_result(array, what, inputs)
+
+
+def rings(name, value, unit):
+    """Per-ring values: positive, finite, at least one ring on the last axis (a number is one ring)."""
+    array = positive(name, value, unit)
+    if array.ndim == 0:
+        array = array[None]
+    if array.shape[-1] == 0:
+        raise ValueError(f"{name} must hold at least one ring: its last axis (the rings) is empty")
+    return array
 
 
 def show(array) -> str:

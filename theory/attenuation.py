@@ -234,8 +234,8 @@ def disorder_attenuation_length(*, n, a, sigma_Z):
     a : array_like
         Mean spacing of the rings, m.
     sigma_Z : array_like
-        Spread of ln Z, Z = sqrt(m k) (:func:`.disorder.impedance_spread`,
-        :func:`.disorder.chain_impedance_spread`), >= 0.
+        Spread of ln Z, Z = sqrt(m k) (:func:`.scattering.impedance_spread`,
+        :func:`.scattering.chain_impedance_spread`), >= 0.
 
     Returns
     -------

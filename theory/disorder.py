@@ -73,13 +73,13 @@ the spreads sigma_K (or sigma_k), sigma_m in the order of K and m, the correlati
 attenuation_length.  These are not in the package's list of chain parameters, and are keyword-only for the
 same reason: two relative spreads (or a spread and a spacing) have the same sign and range, so a swapped
 positional call would answer silently.  Functions of the chain alone (:func:`effective_medium_speed`,
-:func:`harmonic_mean_speed`, :func:`disorder_speed_shift`, :func:`impedance_spread`,
-:func:`chain_impedance_spread`, :func:`.attenuation.disorder_attenuation_length`) take keywords only, like
+:func:`harmonic_mean_speed`, :func:`disorder_speed_shift`, :func:`.scattering.impedance_spread`,
+:func:`.scattering.chain_impedance_spread`, :func:`.attenuation.disorder_attenuation_length`) take keywords only, like
 :func:`~ringchain.theory.solitary_wave_width`.
 
 Numeric functions: :func:`effective_medium_speed`, :func:`harmonic_mean_speed`,
-:func:`disordered_solitary_wave_speed`, :func:`disorder_speed_shift`,
-:func:`impedance_spread`, :func:`chain_impedance_spread`; :func:`equations` collects the displayed forms.
+:func:`disordered_solitary_wave_speed`, :func:`disorder_speed_shift`; :func:`equations` collects the
+displayed forms.  The impedance spread sigma_Z of a chain is in :mod:`.scattering`.
 """
 
 from __future__ import annotations
@@ -91,7 +91,7 @@ import numpy as np
 from . import _validate as v
 from . import linear, longwave, pulse, solitary
 from ._codegen import derived, sp
-from ._forms import merge_powers, sum_of_squares
+from ._forms import merge_powers
 
 __all__ = [
     "ESTIMATES",
@@ -117,8 +117,6 @@ __all__ = [
     "harmonic_mean_speed",
     "disordered_solitary_wave_speed",
     "disorder_speed_shift",
-    "impedance_spread",
-    "chain_impedance_spread",
 ]
 
 #: The two estimates of the mean speed over a disordered chain (step 6 of the module docstring).
@@ -625,25 +623,7 @@ def _shift_harmonic():
     return (s["n"], s["sigma_K"], s["sigma_m"], s["rho_mK"]), harmonic_mean_shift()
 
 
-@derived
-def _impedance_spread():
-    s = symbols()
-    n, sigma_K, sigma_m, rho = s["n"], s["sigma_K"], s["sigma_m"], s["rho_mK"]
-    stable = sum_of_squares(sp.expand(4 * impedance_variance()), sigma_m, sigma_K / n, rho)
-    return (n, sigma_K, sigma_m, rho), sp.sqrt(stable) / 2
-
-
 # --- validation helpers ------------------------------------------------------------------------------------
-
-
-def _rings(name, value, unit):
-    """Per-ring values: positive, finite, at least one ring on the last axis (a number is one ring)."""
-    array = v.positive(name, value, unit)
-    if array.ndim == 0:
-        array = array[None]
-    if array.shape[-1] == 0:
-        raise ValueError(f"{name} must hold at least one ring: its last axis (the rings) is empty")
-    return array
 
 
 def _log_mean(logs):
@@ -695,7 +675,7 @@ def effective_medium_speed(*, k, m, a):
     >>> round(float(effective_medium_speed(k=[1.0, 0.25], m=[1.0, 1.0], a=[1.0, 1.0])), 12)  # <1/k> = 5/2: sqrt(2/5)
     0.632455532034
     """
-    a, m, k = _rings("a", a, "m"), _rings("m", m, "kg"), _rings("k", k, "N/m")
+    a, m, k = v.rings("a", a, "m"), v.rings("m", m, "kg"), v.rings("k", k, "N/m")
     logs = (_log_mean(np.log(a)), _log_mean(np.log(m)), _log_mean(-np.log(k)))
     v.broadcast_shape(a=logs[0], m=logs[1], k=logs[2])
     with np.errstate(all="ignore"):
@@ -730,7 +710,7 @@ def harmonic_mean_speed(*, k, m, a):
     >>> round(float(harmonic_mean_speed(k=[1.0, 0.25], m=[1.0, 1.0], a=[1.0, 1.0])), 12)  # times 1 and 2: 2/3
     0.666666666667
     """
-    a, m, k = _rings("a", a, "m"), _rings("m", m, "kg"), _rings("k", k, "N/m")
+    a, m, k = v.rings("a", a, "m"), v.rings("m", m, "kg"), v.rings("k", k, "N/m")
     v.broadcast_shape(m=m, k=k)
     with np.errstate(all="ignore"):
         transit = _log_mean(0.5 * (np.log(m) - np.log(k)))
@@ -790,7 +770,7 @@ def disordered_solitary_wave_speed(F_m, *, estimate, K, n, m, a):
     estimate = _estimate(estimate)
     F_m = v.positive("F_m", F_m, "N")
     n = v.exponent_between(n)
-    K, a, m = _rings("K", K, "N/m^n"), _rings("a", a, "m"), _rings("m", m, "kg")
+    K, a, m = v.rings("K", K, "N/m^n"), v.rings("a", a, "m"), v.rings("m", m, "kg")
     with np.errstate(all="ignore"):
         log_a = _log_mean(np.log(a))
         if estimate == "effective-medium":
@@ -838,7 +818,7 @@ def disorder_speed_shift(*, estimate, n, sigma_K, sigma_m=0.0, correlation=0.0):
     -----
     Second order in the spreads, for independent or correlated cells alike (only one-cell
     moments enter); the error is of third order (fourth for symmetric distributions).  The
-    two estimates differ by sigma_Z^2/2 (:func:`impedance_spread`).  The linear chain
+    two estimates differ by sigma_Z^2/2 (:func:`.scattering.impedance_spread`).  The linear chain
     (n = 1): -sigma_k^2/2 for the effective medium.  Beyond the paper.
 
     Examples
@@ -859,93 +839,3 @@ def disorder_speed_shift(*, estimate, n, sigma_K, sigma_m=0.0, correlation=0.0):
         else:
             shift = _shift_harmonic(n, sigma_K, sigma_m, correlation)
     return v.finite_array_result(shift, "the speed shift", "exponent and spreads")
-
-
-def impedance_spread(*, n, sigma_K, sigma_m=0.0, correlation=0.0):
-    """Standard deviation sigma_Z of ln Z, Z = sqrt(m k) the impedance of a cell, for independent cells.
-
-    Parameters
-    ----------
-    n, sigma_K, sigma_m, correlation : array_like
-        As in :func:`disorder_speed_shift`.
-
-    Returns
-    -------
-    ndarray
-        sigma_Z = sqrt(sigma_m^2 + (sigma_K/n)^2 + 2 correlation sigma_m sigma_K/n)/2 (first
-        order in the spreads; :func:`impedance_variance`).  The impedance ratio of
-        neighbours does not depend on the force (:func:`impedance_ratio`), so one sigma_Z
-        serves every amplitude.
-
-    Notes
-    -----
-    For cells that are not independent (a contact shares its two rings with its
-    neighbours), what scattering needs is the long-wave variance Var(sum ln Z_j)/N
-    (:func:`chain_impedance_spread` estimates it from a chain).  Beyond the paper.
-
-    Examples
-    --------
-    >>> round(float(impedance_spread(n=1.0, sigma_K=0.2, sigma_m=0.2)), 12)  # sqrt(0.04 + 0.04)/2
-    0.141421356237
-    """
-    n = v.exponent_between(n, low=0.0)
-    sigma_K, sigma_m, correlation = v.spreads(sigma_K, sigma_m, correlation)
-    v.broadcast_shape(n=n, sigma_K=sigma_K, sigma_m=sigma_m, correlation=correlation)
-    with np.errstate(all="ignore"):
-        spread = _impedance_spread(n, sigma_K, sigma_m, correlation)
-    return v.finite_array_result(spread, "sigma_Z", "exponent and spreads")
-
-
-def chain_impedance_spread(*, K, n, m, lags=1):
-    """sigma_Z of a given chain: the long-wave spread of ln Z estimated from its rings, neighbour correlations included.
-
-    Parameters
-    ----------
-    K : array_like
-        Prefactor of each contact, N/m^n (last axis: N - 1 contacts, or N); contact j
-        pairs with ring j.
-    n : array_like
-        The common exponent, > 0 (1 for linear springs K = k), one per chain.
-    m : array_like
-        Mass of each ring, kg (last axis: N rings).
-    lags : int, optional
-        Neighbour correlations kept: a contact that depends on its two rings correlates
-        cells one apart (lags=1); independent cells need lags=0.
-
-    Returns
-    -------
-    ndarray
-        sqrt(c_0 + 2 sum_{l=1}^{lags} c_l), c_l the sample autocovariances (divided by the
-        number of cells) of ln Z_j = ln m_j/2 + ln K_j/(2n), clipped at zero.  The expected
-        value of the square falls short of sigma_Z^2 by about (2 lags + 1)/N of it; pool
-        members by averaging the squares.
-
-    Examples
-    --------
-    >>> m = [1.0, 4.0, 1.0, 4.0]
-    >>> round(float(chain_impedance_spread(K=[1.0, 1.0, 1.0, 1.0], n=1.0, m=m, lags=0)), 12)  # ln(2)/2
-    0.34657359028
-    """
-    if isinstance(lags, bool) or not isinstance(lags, (int, np.integer)) or lags < 0:
-        raise ValueError(f"lags must be a non-negative integer, got {lags!r}")
-    m, K = _rings("m", m, "kg"), _rings("K", K, "N/m^n")
-    n = v.exponent_between(n, low=0.0)
-    cells = K.shape[-1]
-    if m.shape[-1] not in (cells, cells + 1):
-        raise ValueError(
-            f"m has {m.shape[-1]} rings and K {cells} contacts: give N rings and N - 1 (or N) contacts, "
-            "contact j between ring j and ring j + 1"
-        )
-    if lags >= cells:
-        raise ValueError(f"lags must be smaller than the number of cells ({cells}), got {lags}")
-    with np.errstate(all="ignore"):
-        logs = 0.5 * np.log(m[..., :cells]) + np.log(K) / (2 * n[..., None])
-        deviation = logs - logs.mean(axis=-1, keepdims=True)
-        # In units of the largest deviation, so that no square overflows (ln K/(2n) is huge for n -> 0).
-        scale = np.max(np.abs(deviation), axis=-1, keepdims=True)
-        deviation = deviation / np.where(scale > 0, scale, 1.0)
-        variance = np.mean(deviation**2, axis=-1)
-        for lag in range(1, lags + 1):
-            variance = variance + 2 * np.sum(deviation[..., lag:] * deviation[..., :-lag], axis=-1) / cells
-        spread = scale[..., 0] * np.sqrt(np.maximum(variance, 0.0))
-    return v.finite_array_result(spread, "sigma_Z", "per-ring masses and contacts")

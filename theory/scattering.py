@@ -33,8 +33,10 @@ wave loses to the same reflections is in :mod:`.attenuation`.
 Signatures follow :mod:`.disorder`'s: what a function is evaluated at (the frequency omega, the
 distance) first and positional, everything else keyword-only, the spreads last.
 
-Numeric functions: :func:`localization_length`, :func:`disorder_pulse_spread`; :func:`equations`
-collects the displayed forms.
+Numeric functions: :func:`impedance_spread` (sigma_Z from the spreads, first order,
+:func:`.disorder.impedance_variance`) and :func:`chain_impedance_spread` (sigma_Z of a given chain,
+neighbour correlations included), :func:`localization_length`, :func:`disorder_pulse_spread`;
+:func:`equations` collects the displayed forms.
 """
 
 from __future__ import annotations
@@ -59,6 +61,8 @@ __all__ = [
     "equations",
     "localization_length",
     "disorder_pulse_spread",
+    "impedance_spread",
+    "chain_impedance_spread",
 ]
 
 
@@ -324,7 +328,7 @@ def disorder_pulse_spread(distance, *, a, sigma_Z):
     a : array_like
         Mean spacing of the rings, m.
     sigma_Z : array_like
-        Spread of ln Z (:func:`.disorder.impedance_spread`, or :func:`.disorder.chain_impedance_spread` for a
+        Spread of ln Z (:func:`impedance_spread`, or :func:`chain_impedance_spread` for a
         given chain), >= 0.
 
     Returns
@@ -355,3 +359,104 @@ def disorder_pulse_spread(distance, *, a, sigma_Z):
     with np.errstate(all="ignore"):
         spread = _pulse_spread(distance, a, sigma_Z)
     return v.finite_array_result(spread, "the spread", "distance, spacing and sigma_Z")
+
+
+# --- the impedance spread that scatters -------------------------------------------------------------------
+
+
+@derived
+def _impedance_spread():
+    s = symbols()
+    n, sigma_K, sigma_m, rho = s["n"], s["sigma_K"], s["sigma_m"], s["rho_mK"]
+    stable = sum_of_squares(sp.expand(4 * impedance_variance()), sigma_m, sigma_K / n, rho)
+    return (n, sigma_K, sigma_m, rho), sp.sqrt(stable) / 2
+
+
+def impedance_spread(*, n, sigma_K, sigma_m=0.0, correlation=0.0):
+    """Standard deviation sigma_Z of ln Z, Z = sqrt(m k) the impedance of a cell, for independent cells.
+
+    Parameters
+    ----------
+    n, sigma_K, sigma_m, correlation : array_like
+        As in :func:`.disorder.disorder_speed_shift`.
+
+    Returns
+    -------
+    ndarray
+        sigma_Z = sqrt(sigma_m^2 + (sigma_K/n)^2 + 2 correlation sigma_m sigma_K/n)/2 (first
+        order in the spreads; :func:`impedance_variance`).  The impedance ratio of
+        neighbours does not depend on the force (:func:`.disorder.impedance_ratio`), so one sigma_Z
+        serves every amplitude.
+
+    Notes
+    -----
+    For cells that are not independent (a contact shares its two rings with its
+    neighbours), what scattering needs is the long-wave variance Var(sum ln Z_j)/N
+    (:func:`chain_impedance_spread` estimates it from a chain).  Beyond the paper.
+
+    Examples
+    --------
+    >>> round(float(impedance_spread(n=1.0, sigma_K=0.2, sigma_m=0.2)), 12)  # sqrt(0.04 + 0.04)/2
+    0.141421356237
+    """
+    n = v.exponent_between(n, low=0.0)
+    sigma_K, sigma_m, correlation = v.spreads(sigma_K, sigma_m, correlation)
+    v.broadcast_shape(n=n, sigma_K=sigma_K, sigma_m=sigma_m, correlation=correlation)
+    with np.errstate(all="ignore"):
+        spread = _impedance_spread(n, sigma_K, sigma_m, correlation)
+    return v.finite_array_result(spread, "sigma_Z", "exponent and spreads")
+
+
+def chain_impedance_spread(*, K, n, m, lags=1):
+    """sigma_Z of a given chain: the long-wave spread of ln Z estimated from its rings, neighbour correlations included.
+
+    Parameters
+    ----------
+    K : array_like
+        Prefactor of each contact, N/m^n (last axis: N - 1 contacts, or N); contact j
+        pairs with ring j.
+    n : array_like
+        The common exponent, > 0 (1 for linear springs K = k), one per chain.
+    m : array_like
+        Mass of each ring, kg (last axis: N rings).
+    lags : int, optional
+        Neighbour correlations kept: a contact that depends on its two rings correlates
+        cells one apart (lags=1); independent cells need lags=0.
+
+    Returns
+    -------
+    ndarray
+        sqrt(c_0 + 2 sum_{l=1}^{lags} c_l), c_l the sample autocovariances (divided by the
+        number of cells) of ln Z_j = ln m_j/2 + ln K_j/(2n), clipped at zero.  The expected
+        value of the square falls short of sigma_Z^2 by about (2 lags + 1)/N of it; pool
+        members by averaging the squares.
+
+    Examples
+    --------
+    >>> m = [1.0, 4.0, 1.0, 4.0]
+    >>> round(float(chain_impedance_spread(K=[1.0, 1.0, 1.0, 1.0], n=1.0, m=m, lags=0)), 12)  # ln(2)/2
+    0.34657359028
+    """
+    if isinstance(lags, bool) or not isinstance(lags, (int, np.integer)) or lags < 0:
+        raise ValueError(f"lags must be a non-negative integer, got {lags!r}")
+    m, K = v.rings("m", m, "kg"), v.rings("K", K, "N/m^n")
+    n = v.exponent_between(n, low=0.0)
+    cells = K.shape[-1]
+    if m.shape[-1] not in (cells, cells + 1):
+        raise ValueError(
+            f"m has {m.shape[-1]} rings and K {cells} contacts: give N rings and N - 1 (or N) contacts, "
+            "contact j between ring j and ring j + 1"
+        )
+    if lags >= cells:
+        raise ValueError(f"lags must be smaller than the number of cells ({cells}), got {lags}")
+    with np.errstate(all="ignore"):
+        logs = 0.5 * np.log(m[..., :cells]) + np.log(K) / (2 * n[..., None])
+        deviation = logs - logs.mean(axis=-1, keepdims=True)
+        # In units of the largest deviation, so that no square overflows (ln K/(2n) is huge for n -> 0).
+        scale = np.max(np.abs(deviation), axis=-1, keepdims=True)
+        deviation = deviation / np.where(scale > 0, scale, 1.0)
+        variance = np.mean(deviation**2, axis=-1)
+        for lag in range(1, lags + 1):
+            variance = variance + 2 * np.sum(deviation[..., lag:] * deviation[..., :-lag], axis=-1) / cells
+        spread = scale[..., 0] * np.sqrt(np.maximum(variance, 0.0))
+    return v.finite_array_result(spread, "sigma_Z", "per-ring masses and contacts")

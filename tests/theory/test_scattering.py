@@ -234,3 +234,36 @@ def test_pulse_spread_and_localization_numbers():
     assert (
         impedance_spread(n=1.0, sigma_K=0.1, sigma_m=0.1, correlation=-1.0) == 0.0
     )  # exactly, the sum-of-squares form
+
+
+# --- numeric: impedance spreads ---------------------------------------------------------------------------
+
+
+def test_chain_impedance_spread_of_independent_and_shared_contacts():
+    rng = np.random.default_rng(8)
+    chains, rings, s = 200, 400, 0.1
+    m_ = np.exp(s * rng.standard_normal((chains, rings)))
+    K_ = np.exp(s * rng.standard_normal((chains, rings - 1)))
+    pooled = np.sqrt(np.mean(chain_impedance_spread(K=K_, n=1.5, m=m_, lags=0) ** 2))
+    expected = np.sqrt(s**2 / 4 + s**2 / (4 * 1.5**2))  # Var(ln m/2 + ln K/(2n)), independent
+    # 200 x 399 cells: the pooled variance has a relative standard error sqrt(2/79800) = 0.5 %, bias 1/399.
+    assert pooled == pytest.approx(expected, rel=0.01)
+    # A contact made of its two rings, K_j = (g_j g_{j+1})^(1/2): neighbours correlate; the long-wave variance of
+    # ln K/2 over cells is Var(ln g) (the sum telescopes into sum ln g) against Var(ln g)/2 cell by cell.
+    g = np.exp(s * rng.standard_normal((chains, rings)))
+    shared = np.sqrt(g[:, :-1] * g[:, 1:])
+    one = np.ones((chains, rings))
+    with_lag = np.sqrt(np.mean(chain_impedance_spread(K=shared, n=1.0, m=one, lags=1) ** 2))
+    without = np.sqrt(np.mean(chain_impedance_spread(K=shared, n=1.0, m=one, lags=0) ** 2))
+    assert with_lag == pytest.approx(s / 2, rel=0.02)  # ln Z = ln K/2: sd s/2; estimator error about 1 %
+    assert without == pytest.approx(s / 2 / np.sqrt(2), rel=0.02)
+
+
+@pytest.mark.parametrize("n_value", [1e-150, 1e-300])
+def test_chain_impedance_spread_of_a_tiny_exponent(n_value):
+    # ln K/(2n) is huge for n -> 0: its squared deviations overflowed (a RuntimeWarning, an error in this suite).
+    # With equal masses sigma_Z is exactly proportional to 1/n.
+    K_, m_ = [1.0, 2.0, 4.0, 3.0], [1.0, 1.0, 1.0, 1.0]
+    for lags in (0, 1):
+        unit = float(chain_impedance_spread(K=K_, n=1.0, m=m_, lags=lags))
+        assert float(chain_impedance_spread(K=K_, n=n_value, m=m_, lags=lags)) == pytest.approx(unit / n_value)
