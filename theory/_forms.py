@@ -14,6 +14,12 @@ unchanged), and :func:`split_product` separates a product into the factor that d
 given symbols (typically the arrays, such as the geometry or the force) and the rest
 (typically scalars, such as the material or the chain), so that the numeric function
 multiplies the two once, after each is evaluated on its own arguments.
+
+Shared by several derivations, on the symbolic side: :func:`tidy_powers` and :func:`merge_powers`
+merge the powers of positive bases (the first also cancels exponents and factors the bases of powers
+of sums: :mod:`.solitary`, :mod:`.prestressed`; the second only expands, flattens and combines:
+:mod:`.disorder`, :mod:`.attenuation`), and :func:`sum_of_squares` writes a variance of two
+correlated terms in a form that rounding cannot make negative (:mod:`.disorder`, :mod:`.scattering`).
 """
 
 from __future__ import annotations
