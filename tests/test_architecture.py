@@ -89,6 +89,11 @@ def test_the_command_line_is_thin_and_no_numerics_module_is_huge():
     assert {name: n for name, n in lines.items() if n > 900} == {}
 
 
+def test_theory_is_a_module_per_derivation_none_huge():
+    lines = {path.name: len(path.read_text().splitlines()) for path in (ROOT / "theory").glob("*.py")}
+    assert {name: n for name, n in lines.items() if n > 900} == {}
+
+
 @pytest.mark.parametrize("floor", ["network", "laws", "integrate", "results", "traces"])
 def test_the_engine_knows_no_layout_and_no_job(floor):
     above = {"chain", "chain_file", "ring_chain", "ring_beam", "paper", "experiment", "sweep", "fit", "fit_dynamic",
