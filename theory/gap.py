@@ -55,7 +55,7 @@ __all__ = [
 
 @functools.cache
 def gap_symbols():
-    """Symbols of the exact-gap section: x, y (position normal to the chain axis, m), X, Y, Z
+    """Symbols of the exact gap: x, y (position normal to the chain axis, m), X, Y, Z
     (a point in a torus's own frame, m), p, q (in-plane and out-of-plane offsets on one tube),
     L = R - r (the inner-equator radius), S, C = sin, cos of theta/2, u = sqrt(r^2 - q^2)."""
     x, y, X, Y, Z, p, q = sp.symbols("x y X Y Z p q", real=True)
