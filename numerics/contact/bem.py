@@ -228,7 +228,7 @@ class Tori:
     """The two tori at first contact and the frames in which their gap is measured."""
 
     def __init__(self, R, r, angle, frame):
-        from ringchain.theory.contact import contact_patches
+        from ringchain.theory.gap import contact_patches
 
         self.R, self.r, self.angle, self.frame = R, r, angle, frame
         c, gap, tilt = (float(x) for x in contact_patches(R, r, angle))
@@ -247,7 +247,7 @@ class Tori:
 
     def _common_normal(self):
         """Unit normal at the contact point at +c, pointing from ring 2 into ring 1."""
-        from ringchain.theory.contact import torus_distance
+        from ringchain.theory.gap import torus_distance
 
         point = self.c * self.e + np.array([0.0, 0.0, self.z0])
         _, gradient = torus_distance(*point, self.R, self.r)
@@ -257,7 +257,7 @@ class Tori:
 
     def _distance(self, ring, points):
         """Distance of ``points`` (3, ...) to ring 1 or 2 (first contact) and its gradient."""
-        from ringchain.theory.contact import torus_distance
+        from ringchain.theory.gap import torus_distance
 
         x, y, z = points
         if ring == 1:
@@ -524,7 +524,8 @@ def contact_curve(R, r, E, nu, angle, forces, *, frame="tangent", points_across=
     >>> [int(k) for k in curve.n_patches], curve.frame
     ([1, 1], 'tangent')
     """
-    from ringchain.theory.contact import contact_modulus, contact_patches
+    from ringchain.theory.contact import contact_modulus
+    from ringchain.theory.gap import contact_patches
 
     R = float(v.positive("R", R, "m"))
     r = float(v.positive("r", r, "m"))

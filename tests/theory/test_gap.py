@@ -1,13 +1,13 @@
-"""The exact gap of two interlocked tori (theory/contact.py, Sec. 4-5): derivation, its Hertz limit, two contacts."""
+"""The exact gap of two interlocked tori (theory/gap.py): derivation, its Hertz limit, two contacts."""
 
 import mpmath
 import numpy as np
 import pytest
 import sympy as sp
-from ringchain.theory import contact, contact_modulus, contact_patches, minimum_contact_angle, torus_gap
+from ringchain.theory import contact, contact_modulus, contact_patches, gap, minimum_contact_angle, torus_gap
 from scipy import optimize
 
-S, G = contact.symbols(), contact.gap_symbols()
+S, G = contact.symbols(), gap.gap_symbols()
 R, r, theta, L = S["R"], S["r"], S["theta"], G["L"]
 R_, r_ = 22.5e-3, 2.5e-3  # the paper's R/r = 9 ring
 
@@ -18,7 +18,7 @@ def test_torus_distance_against_sampled_centre_circle():
     phi = np.linspace(0, 2 * np.pi, 200_000, endpoint=False)
     circle = R_ * np.stack([np.cos(phi), np.zeros_like(phi), np.sin(phi)])
     points = rng.uniform(-1.2 * R_, 1.2 * R_, size=(5, 3))
-    D, _ = contact.torus_distance(*points.T, R_, r_)
+    D, _ = gap.torus_distance(*points.T, R_, r_)
     for point, value in zip(points, D, strict=True):
         brute = np.min(np.linalg.norm(circle - point[:, None], axis=0)) - r_
         # The sampled circle's chord error is R (pi/200000)^2/2 ~ 3e-12 m.
@@ -28,18 +28,18 @@ def test_torus_distance_against_sampled_centre_circle():
 def test_torus_distance_gradient_is_the_unit_normal():
     rng = np.random.default_rng(3)
     X, Y, Z = rng.uniform(-0.03, 0.03, size=(3, 50))
-    _D, gradient = contact.torus_distance(X, Y, Z, R_, r_)
+    _D, gradient = gap.torus_distance(X, Y, Z, R_, r_)
     assert np.allclose(np.linalg.norm(np.stack(gradient), axis=0), 1.0, rtol=1e-12)  # a distance function
     h = 1e-7
-    plus, minus = contact.torus_distance(X + h, Y, Z, R_, r_)[0], contact.torus_distance(X - h, Y, Z, R_, r_)[0]
+    plus, minus = gap.torus_distance(X + h, Y, Z, R_, r_)[0], gap.torus_distance(X - h, Y, Z, R_, r_)[0]
     numeric = (plus - minus) / (2 * h)
     assert np.allclose(gradient[0], numeric, atol=1e-7)  # central difference, error ~ h^2 D''' ~ 1e-10
 
 
 def test_inner_surface_lies_on_the_torus():
-    f = contact.inner_surface_height()
+    f = gap.inner_surface_height()
     p, q = G["p"], G["q"]
-    on_torus = contact.torus_distance_expr().subs({G["X"]: p, G["Y"]: q, G["Z"]: f + R - r})
+    on_torus = gap.torus_distance_expr().subs({G["X"]: p, G["Y"]: q, G["Z"]: f + R - r})
     # Evaluated at 40 digits with mpmath (SymPy's evalf of an exact zero keeps raising its precision).
     distance = sp.lambdify((p, q), on_torus.subs({R: 9, r: 1}), "mpmath")
     with mpmath.workdps(40):
@@ -51,7 +51,7 @@ def test_inner_surface_lies_on_the_torus():
 def test_quadratic_part_of_the_exact_gap_gives_the_hertz_curvatures():
     """App. A, Eqs. (A1)-(A2): the gap's quadratic form has eigenvalues A and B."""
     x, y = G["x"], G["y"]
-    quadratic = contact.surface_gap_quadratic()
+    quadratic = gap.surface_gap_quadratic()
     M = sp.Matrix(
         [
             [quadratic.coeff(x, 2), quadratic.coeff(x, 1).coeff(y, 1) / 2],
@@ -125,7 +125,7 @@ def test_tilt_is_the_slope_of_the_tube_at_the_contact_point():
     angle = np.radians(30.0)
     c, _, tilt = (float(v) for v in contact_patches(R_, r_, angle))
     p, q = c * np.cos(angle / 2), c * np.sin(angle / 2)
-    f = contact.inner_surface_height()
+    f = gap.inner_surface_height()
     height = sp.lambdify((G["p"], G["q"]), f.subs({R: sp.Rational(225, 10000), r: sp.Rational(25, 10000)}), "mpmath")
     with mpmath.workdps(30):
         slope = [mpmath.diff(lambda s: height(s, q), p), mpmath.diff(lambda s: height(p, s), q)]
