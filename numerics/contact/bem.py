@@ -2,13 +2,13 @@ r"""Numerical contact of two interlocked tori at every contact angle (boundary e
 
 The Hertz theory of :mod:`ringchain.theory.contact` (paper Eq. 1, App. A) replaces the gap
 between the tori by its quadratic part and holds above theta_min = arccos(1 - 2r/R) only.
-Here the exact gap (:func:`ringchain.theory.contact.torus_gap` and the torus distance
-:func:`~ringchain.theory.contact.torus_distance`) is loaded by a frictionless, non-adhesive
+Here the exact gap (:func:`ringchain.theory.gap.torus_gap` and the torus distance
+:func:`~ringchain.theory.gap.torus_distance`) is loaded by a frictionless, non-adhesive
 contact between elastic half-spaces, solved with FFT boundary elements on a non-periodic
 grid (ContactMechanics: Polonsky and Keer's constrained conjugate gradients on
 Hockney-padded Green's functions, :class:`ContactMechanics.FreeFFTElasticHalfSpace`).
 
-Geometry (:func:`~ringchain.theory.contact.contact_patches`).  At and above theta_min the
+Geometry (:func:`~ringchain.theory.gap.contact_patches`).  At and above theta_min the
 tori touch at one point on the chain axis.  Below it they touch at two points, at +-c along
 the bisector e of the ring planes, on the flanks of the tubes; the common normal n there
 leans by the tilt phi from the chain axis about e (e is perpendicular to n, by the symmetry
