@@ -58,6 +58,7 @@ Sheets of interlinked rings (beyond the paper, its Sec. V outlook; module :mod:`
 
 - :func:`sheet_dispersion` -- the in-plane branches of a pretensioned square (4-in-1) or triangular
   (6-in-1) sheet, from the network's energy to second order (axial stiffness k, geometric stiffness T/a);
+- :func:`sheet_group_velocity` -- the group velocity of each branch, grad_q omega (the front of a point source);
 - :func:`sheet_sound_speeds`, :class:`SheetSpeeds` -- its long-wave longitudinal and transverse speeds
   against the direction (anisotropic for the square sheet, isotropic for the triangular one).
 
@@ -165,7 +166,7 @@ from .series import (
     series_stiffness_for_power_law,
     si_to_n_per_mm,
 )
-from .sheet import SheetSpeeds, sheet_dispersion, sheet_sound_speeds
+from .sheet import SheetSpeeds, sheet_dispersion, sheet_group_velocity, sheet_sound_speeds
 from .solitary import (
     solitary_wave_profile,
     solitary_wave_speed,
@@ -236,6 +237,7 @@ __all__ = [
     "ring_frequencies",
     "inextensional_frequency",
     "sheet_dispersion",
+    "sheet_group_velocity",
     "sheet_sound_speeds",
     "SheetSpeeds",
     # issue 22: contacts that yield

@@ -31,9 +31,9 @@ Why energy and not momentum: on the lattice (tests/numerics/layouts/test_linear_
 striker of the chain's own mass gives the leading wave 97.6-99.4 % of its energy for
 n = 1.1-1.5, but 1.14-1.53 times its momentum (the striker and the first rings recoil
 towards the chain and carry the difference).  The energy law puts the amplitude of the
-formed wave 1.1-1.4 % too high (the measured error: the energy left behind and the
-long-wave error of the invariants partly cancel); the momentum law would be 14-36 %
-too low.
+formed wave 1.1-1.4 % too high (the measured error: the energy left behind, 0.6-2.4 %,
+and the long-wave error of the wave's energy, +1.39 to +0.25 %, both make it high and
+add); the momentum law would be 14-36 % too low.
 
 Numeric functions: :func:`solitary_wave_energy`, :func:`solitary_wave_momentum`,
 :func:`impact_amplitude`.

@@ -23,7 +23,7 @@ from ringchain.theory import _validate as v
 # -- option values: parsed and checked before any work, errors in the user's units ---------------------
 #: Most values of one sweep axis and most points of one sweep the command line runs: a guard against a
 #: typo such as ``--drop-height 0.01:0.1:1000000000``, which would exhaust the memory before any work
-#: (100000 points of static theory alone take a few minutes; :func:`ringchain.numerics.jobs.sweep` has no limit).
+#: (100000 points of static theory alone take a few minutes; :func:`ringchain.numerics.sweep` has no limit).
 MAX_GRID_POINTS = 100_000
 
 

@@ -13,7 +13,7 @@ Scale.  The members are integrated in batches of ``batch_size``: the chains of a
 stacked into one network (:meth:`~ringchain.numerics.Network.stack`) and integrated by
 :func:`~ringchain.numerics.simulate_batch` as one array problem, with its default method and
 tolerances unless told otherwise.  The batches are independent tasks run through any
-:class:`concurrent.futures.Executor`, as :func:`~ringchain.numerics.jobs.sweep` runs its points: local
+:class:`concurrent.futures.Executor`, as :func:`~ringchain.numerics.sweep` runs its points: local
 processes by default, or a Dask cluster (``executor=client.get_executor()``).
 
 Determinism.  Member i's chain comes from its own seed, the i-th child of the ensemble's
@@ -435,7 +435,7 @@ def ensemble(ring, n_rings, count, *, spread, seed, model="dual-spring", m_eff_r
         Rings whose sensor forces are kept (:attr:`Ensemble.traces`).
     executor : concurrent.futures.Executor, optional
         Where the batches run, e.g. a Dask ``Client(...).get_executor()``; default local processes
-        (``max_workers``, see :func:`~ringchain.numerics.jobs.sweep`: in a script, call under
+        (``max_workers``, see :func:`~ringchain.numerics.sweep`: in a script, call under
         ``if __name__ == "__main__":``).
     batch_size : int, optional
         Members integrated together as one stacked network (default :data:`DEFAULT_BATCH_SIZE`).
