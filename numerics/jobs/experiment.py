@@ -32,7 +32,7 @@ __all__ = ["Experiment", "run_experiment", "MAX_DOUBLINGS"]
 
 #: Times a default duration (:func:`~ringchain.numerics.layouts.chain.default_t_end`) is doubled while the leading
 #: pulse has not passed the far
-#: sensor by the end (:func:`run_experiment`, :func:`ringchain.numerics.sweep.run_points`): the estimate is a
+#: sensor by the end (:func:`run_experiment`, :func:`ringchain.numerics.jobs.sweep.run_points`): the estimate is a
 #: long-wave one, and a chain of two rings, or of rings metres across (R typed in mm), outruns it.
 MAX_DOUBLINGS = 4
 

@@ -307,7 +307,7 @@ def no_work(monkeypatch):
 
     from ringchain.numerics.jobs import experiment
 
-    sweep_module = importlib.import_module("ringchain.numerics.sweep")
+    sweep_module = importlib.import_module("ringchain.numerics.jobs.sweep")
 
     def work(*args, **kwargs):
         raise WorkStarted

@@ -361,7 +361,7 @@ def test_no_edge_value_of_any_option_gives_a_traceback(capsys, tmp_path, monkeyp
     def work(*args, **kwargs):
         raise WorkStarted
 
-    monkeypatch.setattr(importlib.import_module("ringchain.numerics.ensemble"), "ensemble", work)
+    monkeypatch.setattr(importlib.import_module("ringchain.numerics.jobs.ensemble"), "ensemble", work)
     monkeypatch.chdir(tmp_path)
     for value in EDGE_VALUES:
         try:

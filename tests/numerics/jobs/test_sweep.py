@@ -12,7 +12,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from ringchain.numerics import RunTooLargeError
 from ringchain.numerics.cli.commands import main
-from ringchain.numerics.sweep import (
+from ringchain.numerics.jobs.sweep import (
     AXES,
     InlineExecutor,
     Point,
@@ -24,8 +24,8 @@ from ringchain.numerics.sweep import (
 )
 from ringchain.theory import Ring
 
-# The module (ringchain.numerics.sweep may name the function).
-sweep_module = importlib.import_module("ringchain.numerics.sweep")
+# The module (ringchain.numerics.sweep names the function).
+sweep_module = importlib.import_module("ringchain.numerics.jobs.sweep")
 
 # A short power-law chain read at rings 2 and 5: each run takes a few hundredths of a second.
 SMALL = {"model": "power-law", "n_rings": 10, "sensors": (2, 5)}

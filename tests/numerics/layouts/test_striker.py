@@ -31,7 +31,7 @@ import numpy as np
 import pytest
 from ringchain.numerics import STRIKERS, Chain, initial_state, paper_chain, signals, simulate
 from ringchain.numerics.cli.commands import main
-from ringchain.numerics.sweep import FilePoint, Point, run_points
+from ringchain.numerics.jobs.sweep import FilePoint, Point, run_points
 from ringchain.numerics.layouts.chain import default_t_end, striker_convention
 from ringchain.numerics.layouts.chain_file import parse_chain
 from ringchain.theory import Ring, impact_amplitude, impact_speed, solitary_wave_speed
