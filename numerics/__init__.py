@@ -93,7 +93,7 @@ from .results import BatchSimulation, EnergyBudget, NetworkBatch, NetworkSimulat
 from .ring_beam import ReducedRing, RingModel
 from .ring_chain import RingChain, RingSimulation, simulate_rings
 from .sheet import Sheet
-from .sheet_runs import SheetBatch, SheetSimulation, read_sheet_run
+from .sheet_runs import SheetBatch, SheetSimulation, read_sheet_run, sheet_run_options
 from .signals import NoPulseError, PulseError, TruncatedPulseError, UnresolvedPulseError
 from .sweep import Point, sweep, write_csv
 from .traces import DataError, read_speed_amplitude, read_static, read_traces, write_traces
@@ -180,4 +180,5 @@ __all__ = [
     "SheetSimulation",
     "SheetBatch",
     "read_sheet_run",
+    "sheet_run_options",
 ]

@@ -43,6 +43,7 @@ from ringchain.theory import STANDARD_GRAVITY, Ring
 from ringchain.theory import _validate as v
 
 from . import signals
+from ._files import save_figure
 from .chain import MODELS, Chain
 from .disorder import check_seed, check_spread, describe_spread, draw_rings, member_seeds
 from .executors import run_tasks
@@ -388,7 +389,7 @@ class Ensemble:
         ax.plot(rings, self.ordered_peak_force, "k--", label="ordered chain")
         ax.set(xlabel="ring", ylabel="peak force (N)", title=title or describe_spread(self.spread))
         ax.legend(fontsize=8)
-        fig.savefig(path, dpi=120)
+        save_figure(fig, path, dpi=120)
 
 
 def _impact(drop_height, impact_velocity, g):

@@ -21,6 +21,8 @@ import json
 import sys
 from pathlib import Path
 
+from ._files import save_figure
+
 __all__ = ["add_parser", "run"]
 
 #: Free parameters of ``ringchain fit traces`` by default.
@@ -167,7 +169,7 @@ def _static(args) -> int:
         ax.set(ylabel="force (N)", title="quasi-static test")
         ax.legend()
         ax_r.set(xlabel="displacement (um)", ylabel="fit - data (N)")
-        fig.savefig(args.plot, dpi=120)
+        save_figure(fig, args.plot, dpi=120)
         print(f"plot written to {args.plot}")
     return 0
 
@@ -201,7 +203,7 @@ def _speed(args) -> int:
         ax.plot(F_m[order], (V_s + result.residual)[order], label=label)
         ax.set(xscale="log", xlabel="peak force F_m (N)", ylabel="wave speed V_s (m/s)")
         ax.legend()
-        fig.savefig(args.plot, dpi=120)
+        save_figure(fig, args.plot, dpi=120)
         print(f"plot written to {args.plot}")
     return 0
 
@@ -263,4 +265,4 @@ def _plot_traces(result, path, labels) -> None:
         ax.set(ylabel="force (N)", title=f"{label}: impact at {record.t0 * 1e3:.4g} ms, {record.v0:.4g} m/s")
         ax.legend(fontsize="x-small", ncol=2)
         ax_r.set(xlabel="measured time (ms)", ylabel="fit - data (N)")
-    fig.savefig(path, dpi=120)
+    save_figure(fig, path, dpi=120)

@@ -86,6 +86,7 @@ import functools
 import numpy as np
 from ringchain.theory import (
     DEFAULT_FORCE_WINDOW,
+    MATERIALS,
     STANDARD_GRAVITY,
     Ring,
     fit_power_law,
@@ -242,7 +243,7 @@ class Sheet:
 
     def __init__(self, network, *, family, family_names, K, n, m, m_gravity, pattern=None, shape=None,
                  hanging=False, boundary="clamped", pretension=None, tensions=None, support_links=None,
-                 edges=None):  # fmt: skip
+                 edges=None, ring=None, m_eff_ratio=1.0, gamma=0.0, link_angle=None):  # fmt: skip
         self._network = network
         self.pattern, self.shape = pattern, shape
         self.link_family, self.family_names = family, tuple(family_names)
@@ -251,6 +252,7 @@ class Sheet:
         self.static_tension_links = tensions
         self._support = support_links
         self._edges = edges
+        self.ring, self.m_eff_ratio, self.gamma, self.link_angle = ring, m_eff_ratio, gamma, link_angle
         self.struck_sites, self._field = np.zeros(0, dtype=np.intp), np.zeros((network.n_sites, 2))
 
     # -- constructors --------------------------------------------------------------------------------
@@ -398,7 +400,8 @@ class Sheet:
         sheet = cls(network, family=fam, family_names=names, K=K_f[fam], n=n_f[fam], m=ratio * m0,
                     m_gravity=m0 if hanging else 0.0, pattern=pattern, shape=(rows, cols), hanging=hanging,
                     boundary=boundary, pretension=tensions, support_links=np.flatnonzero(support),
-                    tensions=None if hanging else np.asarray(tensions)[fam], edges=edges)  # fmt: skip
+                    tensions=None if hanging else np.asarray(tensions)[fam], edges=edges, ring=ring,
+                    m_eff_ratio=ratio, gamma=gamma, link_angle=np.asarray(angles)[fam])  # fmt: skip
         return sheet.struck_at(struck, impact_direction)
 
     @classmethod
@@ -480,8 +483,60 @@ class Sheet:
                  "right": np.flatnonzero(positions[:, 0] >= hi[0] - tol)}  # fmt: skip
         uniform = float(ratio * m0[0]) if np.ptp(m0) == 0 else ratio * m0
         sheet = cls(network, family=np.zeros(L, dtype=np.intp), family_names=("link",), K=K, n=n, m=uniform,
-                    m_gravity=0.0, boundary="clamped", pretension=None, tensions=T, edges=edges)  # fmt: skip
+                    m_gravity=0.0, boundary="clamped", pretension=None, tensions=T, edges=edges,
+                    ring=per_site[0] if all(ring == per_site[0] for ring in per_site) else None, m_eff_ratio=ratio,
+                    gamma=law.gamma, link_angle=np.array(angles, dtype=float))  # fmt: skip
         return sheet.struck_at(struck, impact_direction)
+
+    @classmethod
+    def from_run(cls, run) -> Sheet:
+        """The sheet that made a run, rebuilt from its file (:meth:`SheetSimulation.to_netcdf`).
+
+        Parameters
+        ----------
+        run : xarray.Dataset or str or path
+            What :func:`~ringchain.numerics.read_sheet_run` returns, or the file.
+
+        Returns
+        -------
+        Sheet
+            The same network (masses, links, laws, rest geometry), loads and impact field:
+            ``simulate(Sheet.from_run(run), **sheet_run_options(run))`` gives the run's numbers again.
+        """
+        from .sheet_runs import EDGE_NAMES, read_sheet_run
+
+        ds = run if hasattr(run, "attrs") else read_sheet_run(run)
+        attrs = ds.attrs
+
+        def values(name):
+            return np.asarray(ds[name].values)
+
+        K, n, gamma = values("link_K").astype(float), values("link_n").astype(float), float(attrs["gamma_N_s_m"])
+        links = Links(values("network_link_i").astype(np.intp), values("network_link_j").astype(np.intp),
+                      PowerLaw(K, n, gamma), anchor=values("link_anchor"), shift=values("link_shift"),
+                      prestretch=values("link_prestretch"))  # fmt: skip
+        mass, weight = values("site_mass").astype(float), values("site_weight_mass").astype(float)
+        network = Network(mass, [links], weight_mass=weight, dim=2, positions=values("site_position"))
+        pattern = None if attrs["pattern"] == "links" else str(attrs["pattern"])
+        hanging = bool(attrs["hanging"])
+        tension = values("link_static_tension").astype(float)
+        ring = None  # descriptive only: the network above carries every number the run used
+        if "R_m" in attrs:
+            mat = MATERIALS.get(str(attrs["material"]))
+            if mat is not None and (mat.E, mat.nu, mat.rho) == (attrs["E_Pa"], attrs["nu"], attrs["rho_kg_m3"]):
+                ring = Ring(float(attrs["R_m"]), float(attrs["r_m"]), material=mat,
+                            angle=float(attrs["ring_angle_rad"]), thin=bool(attrs["thin"]))  # fmt: skip
+        pretension = None if hanging or pattern is None else tuple(np.atleast_1d(attrs.get("pretension_N", 0.0)))
+        sheet = cls(network, family=values("network_link_family").astype(np.intp),
+                    family_names=tuple(str(attrs["families"]).split(", ")), K=K, n=n,
+                    m=float(mass[0]) if np.ptp(mass) == 0 else mass, m_gravity=float(np.max(weight)), pattern=pattern,
+                    shape=(int(attrs["rows"]), int(attrs["cols"])) if "rows" in attrs else None, hanging=hanging,
+                    boundary=str(attrs["boundary"]), pretension=pretension, tensions=None if hanging else tension,
+                    support_links=np.atleast_1d(attrs["support_links"]).astype(np.intp),
+                    edges={name: np.atleast_1d(attrs[f"edge_{name}"]).astype(np.intp) for name in EDGE_NAMES},
+                    ring=ring, m_eff_ratio=float(attrs["m_eff_ratio"]), gamma=gamma,
+                    link_angle=values("link_angle").astype(float))  # fmt: skip
+        return sheet.struck_at(values("impact_field").astype(float))
 
     # -- the layout ----------------------------------------------------------------------------------
     def network(self) -> Network:

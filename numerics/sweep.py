@@ -44,6 +44,7 @@ from ringchain.theory import PAPER_TUBE_RADIUS, Ring, impact_speed, paper_data
 from ringchain.theory import _validate as v
 
 from . import signals
+from ._files import write_text
 from .chain import MODELS, Chain, sensor_pair, striker_convention
 from .chain_file import ChainFile, vary
 from .executors import InlineExecutor, run_tasks
@@ -591,8 +592,7 @@ def write_csv(rows: Iterable[dict], file=None) -> str | None:
     if hasattr(file, "write"):
         file.write(text)
     else:
-        with open(file, "w", newline="") as handle:
-            handle.write(text)
+        write_text(file, text)  # whole or not at all
     return None
 
 

@@ -21,6 +21,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ._files import replacing
+
 __all__ = [
     "DataError",
     "read_text",
@@ -374,5 +376,6 @@ def write_traces(path, sim, sensors) -> None:
     support = sim.support_force
     if support is not None:
         columns["support_N"] = support
-    np.savetxt(path, np.column_stack(list(columns.values())), delimiter=",", header=",".join(columns), comments="",
-               fmt="%.17g")  # fmt: skip
+    with replacing(path) as tmp:  # whole or not at all
+        np.savetxt(tmp, np.column_stack(list(columns.values())), delimiter=",", header=",".join(columns),
+                   comments="", fmt="%.17g")  # fmt: skip
