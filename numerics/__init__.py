@@ -56,7 +56,8 @@ What each module owns:
   and figures (``ringchain paper``); :mod:`.sweep` -- :func:`sweep` over grids and chain files through
   any executor; :mod:`.ensemble` -- :func:`ensemble` of disordered chains, read at every ring
   (``ringchain ensemble``); :mod:`.fit`, :mod:`.fit_dynamic` -- :func:`fit_static`, :func:`fit_speed_amplitude`,
-  :func:`fit_speed_rings`, :func:`fit_traces`; :mod:`.contact_bem` -- :func:`contact_curve`, :func:`angle_power_law`;
+  :func:`fit_speed_rings`, :func:`fit_speed_lattice`,
+  :func:`fit_traces`; :mod:`.contact_bem` -- :func:`contact_curve`, :func:`angle_power_law`;
   :mod:`.effective_mass` -- :func:`predict_effective_mass`; :mod:`.junction` -- the small pulse at a
   junction; :mod:`.signals` -- peaks, arrivals, time of flight, widths, spectra.
 """
@@ -71,7 +72,7 @@ from .disorder import DisorderWarning, draw_rings
 from .dissipation import energy_shares, equivalent_contact_dashpot, second_impact
 from .effective_mass import fit_effective_mass, predict_effective_mass
 from .ensemble import Ensemble, Summary, ensemble, summarize
-from .fit import FitError, FitResult, fit_speed_amplitude, fit_speed_rings, fit_static
+from .fit import FitError, FitResult, fit_speed_amplitude, fit_speed_lattice, fit_speed_rings, fit_static
 from .fit_dynamic import TraceRecord, fit_traces
 from .integrate import (
     ADAPTIVE_METHODS,
@@ -159,6 +160,7 @@ __all__ = [
     "fit_static",
     "fit_speed_amplitude",
     "fit_speed_rings",
+    "fit_speed_lattice",
     "fit_traces",
     "FitResult",
     "FitError",

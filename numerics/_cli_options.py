@@ -699,6 +699,26 @@ def speed_rings(args, rows):
     return [rings[key] for key in zip(rows["R"], rows["r"], rows["angle"], rows["material"], strict=True)]
 
 
+def speed_points(rows, rings) -> list:
+    """The chain and impact of every row of a sweep's file (:func:`~ringchain.numerics.read_speed_amplitude`'s
+    rows with a "model"), as :class:`~ringchain.numerics.Point` s for
+    :func:`~ringchain.numerics.fit_speed_lattice` (``rings``: each row's Ring)."""
+    from .sweep import Point
+
+    points = []
+    for k, ring in enumerate(rings):
+        striker = rows["striker"][k]
+        drop = rows.get("drop_height_m", [None] * len(rings))[k]
+        speed = float(rows["impact_velocity_m_s"][k])
+        impact = {"drop_height": drop} if drop is not None else {"impact_velocity": speed}
+        points.append(Point(R_over_r=aspect_ratio(ring.R, ring.r), r=ring.r, angle=ring.angle,
+                            material=ring.material.name, model=rows["model"][k], n_rings=int(rows["n_rings"][k]),
+                            sensors=(int(rows["sensor_near"][k]), int(rows["sensor_far"][k])),
+                            striker_mass=striker if striker in ("m_eff", "m0") else float(rows["striker_mass_kg"][k]),
+                            **impact))  # fmt: skip
+    return points
+
+
 def trace_chain(args):
     """The starting chain of ``ringchain fit traces`` (of --chain FILE, or of the ring options, with --K and --n
     for a power law) and its ring 0's mass m0 (kg)."""
