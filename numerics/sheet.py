@@ -96,6 +96,7 @@ from ringchain.theory import (
 from ringchain.theory import _validate as v
 from ringchain.theory.sheet import FAMILY_NAMES, PATTERNS
 
+from .integrate import check_model_size
 from .laws import PowerLaw
 from .network import ANCHOR, Links, Network
 from .sheet_runs import SheetBatch
@@ -162,7 +163,12 @@ def contact_law(ring_a: Ring, ring_b: Ring | None = None, angle=None, window=DEF
 
 
 def _per_family(name, value, families, check, unit):
-    """One value per family: a tuple gives them in the family order, anything else is shared."""
+    """One value per family: a sequence (tuple, list, array) gives them in the family order, a number is shared."""
+    if not isinstance(value, str) and np.ndim(value) == 1:
+        value = tuple(np.asarray(value, dtype=object).tolist())
+    elif np.ndim(value) > 1:
+        raise ValueError(f"{name} is one value or one per link family ({', '.join(families)}), got shape "
+                         f"{np.shape(value)}")  # fmt: skip
     if isinstance(value, tuple):
         if len(value) != len(families):
             raise ValueError(f"{name} is one value or a tuple of {len(families)} (one per link family: "
@@ -173,6 +179,29 @@ def _per_family(name, value, families, check, unit):
 
 def _angle(name, value, unit):
     return v.in_range(name, value, 0.0, np.pi / 2)
+
+
+#: Bytes per ring of a sheet's network before any run (positions, links, laws, rest geometry; measured
+#: 1.1 kB per site of a 100x100 square sheet with tracemalloc): a sheet that cannot fit is refused before it is built.
+_BYTES_PER_SITE = 1500
+
+#: Largest relative difference between a link's length and the spacing 2(R - r) of its rings (plus its static
+#: extension) that :meth:`Sheet.from_links` accepts: positions in millimetres are 1000 times too far apart.
+LINK_LENGTH_TOLERANCE = 0.5
+
+
+def _check_link_lengths(positions, pairs, anchor_points, per_site):
+    """Refuse links whose length is far from 2(R - r) (positions in mm, not m), or of zero length."""
+    far = np.where((pairs[:, 1] == ANCHOR)[:, None], anchor_points, positions[np.where(pairs[:, 1] == ANCHOR, 0,
+                                                                                         pairs[:, 1])])  # fmt: skip
+    length = np.hypot(*(far - positions[pairs[:, 0]]).T)
+    spacing = np.array([per_site[i].spacing for i in pairs[:, 0]])
+    ratio = length / spacing
+    worst = int(np.argmax(np.abs(np.log(np.maximum(ratio, 1e-300)))))
+    if not abs(ratio[worst] - 1.0) <= LINK_LENGTH_TOLERANCE:
+        raise ValueError(f"links[{worst}] is {length[worst]:.4g} m long, {ratio[worst]:.3g} times the spacing "
+                         f"2(R - r) = {spacing[worst]:.4g} m of its rings: positions are in m (not mm), and "
+                         "linked rings lie about 2(R - r) apart")  # fmt: skip
 
 
 class _Lattice:
@@ -286,7 +315,8 @@ class Sheet:
         gamma : float, optional
             Contact dashpot, N s/m, inside each contact's bracket (Eq. (7)).
         struck : str, sequence of int or array_like, optional
-            What the impact sets moving (module notes); default "bottom".
+            What the impact sets moving (module notes); default "bottom" (nothing, for a sheet periodic along
+            y, which has no bottom edge: strike sites with ``impact_direction`` or give a velocity field).
         impact_direction : float or (float, float), optional
             Direction of the struck sites' velocity, rad from x or a vector; default the outward normal of
             their edge.
@@ -323,13 +353,14 @@ class Sheet:
 
     @classmethod
     def _grid(cls, pattern, rows, cols, ring, *, model="power-law", angle=None, m_eff_ratio=1.0, hanging=False,
-              pretension=None, boundary=None, gamma=0.0, struck="bottom", impact_direction=None,
+              pretension=None, boundary=None, gamma=0.0, struck=None, impact_direction=None,
               window=DEFAULT_FORCE_WINDOW):  # fmt: skip
         if not isinstance(ring, Ring):
             raise TypeError(f"ring must be a ringchain.theory.Ring, got {type(ring).__name__}")
         ring.check_chain()
         _model(model)
         rows, cols = v.count("rows", rows, 2), v.count("cols", cols, 2)
+        check_model_size(rows * cols, _BYTES_PER_SITE, f"the {rows}x{cols} sheet's network")
         hanging = v.flag("hanging", hanging)
         names = FAMILY_NAMES[pattern]
         ratio = float(v.in_range("m_eff_ratio", m_eff_ratio, 0.0, 1.0))
@@ -397,6 +428,8 @@ class Sheet:
                           positions=positions)  # fmt: skip
         edges = {"bottom": np.flatnonzero(r == 0), "top": np.flatnonzero(r == rows - 1),
                  "left": np.flatnonzero(c == 0), "right": np.flatnonzero(c == cols - 1)}  # fmt: skip
+        if struck is None:
+            struck = () if wrap_y else "bottom"
         sheet = cls(network, family=fam, family_names=names, K=K_f[fam], n=n_f[fam], m=ratio * m0,
                     m_gravity=m0 if hanging else 0.0, pattern=pattern, shape=(rows, cols), hanging=hanging,
                     boundary=boundary, pretension=tensions, support_links=np.flatnonzero(support),
@@ -444,6 +477,13 @@ class Sheet:
         if pairs.ndim != 2 or pairs.shape[1] != 2 or pairs.dtype.kind not in "iu" or pairs.shape[0] < 1:
             raise ValueError(f"links must be an integer array of site pairs, shape (n_links, 2), got {pairs.shape}")
         L = pairs.shape[0]
+        bad = np.flatnonzero((pairs[:, 0] < 0) | (pairs[:, 0] >= S) | (pairs[:, 1] < ANCHOR) | (pairs[:, 1] >= S))
+        if bad.size:
+            raise ValueError(f"links[{bad[0]}] = {pairs[bad[0]].tolist()} names a site outside 0..{S - 1} (-1: a fixed "
+                             "point)")  # fmt: skip
+        same = np.flatnonzero(pairs[:, 0] == pairs[:, 1])
+        if same.size:
+            raise ValueError(f"links[{same[0]}] = {pairs[same[0]].tolist()} joins a site to itself")
         per_site = [rings] * S if isinstance(rings, Ring) else list(rings)
         if len(per_site) != S or not all(isinstance(ring, Ring) for ring in per_site):
             raise ValueError(f"rings must be one Ring or {S} Rings (one per site)")
@@ -452,6 +492,7 @@ class Sheet:
             raise ValueError("anchored links (second site -1) need their fixed points: give anchors")
         anchor_points = np.zeros((L, 2)) if anchors is None else np.broadcast_to(v.as_float("anchors", anchors),
                                                                                  (L, 2))  # fmt: skip
+        _check_link_lengths(positions, pairs, anchor_points, per_site)
         angles = np.broadcast_to(v.in_range("angle", per_site[0].angle if angle is None else angle, 0.0, np.pi / 2),
                                  (L,))  # fmt: skip
         laws = {}
@@ -599,6 +640,7 @@ class Sheet:
         S = self.n_sites
         field = np.zeros((S, 2))
         if isinstance(struck, str):
+            self._check_edge(struck)
             sites = self.edge(struck)
             if impact_direction is None:
                 impact_direction = EDGES[struck]
@@ -619,10 +661,17 @@ class Sheet:
                 on = [name for name in EDGES if np.all(np.isin(sites, self._edges[name]))]
                 if not on:
                     raise ValueError("the struck sites lie on no single edge: give impact_direction (rad, or a vector)")
+                if len(on) > 1:
+                    raise ValueError(f"the struck sites lie on the {' and '.join(on)} edges (a corner): give "
+                                     "impact_direction (rad, or a vector)")  # fmt: skip
+                self._check_edge(on[0])
                 impact_direction = EDGES[on[0]]
         if sites.size:
             direction = np.asarray(v.as_float("impact_direction", impact_direction), dtype=float)
             if direction.ndim == 0:
+                if not abs(float(direction)) <= 2 * np.pi:
+                    raise ValueError(f"impact_direction is an angle in rad, at most 2 pi in size, got "
+                                     f"{float(direction):g} (degrees? give np.radians of them)")  # fmt: skip
                 direction = np.array([np.cos(direction), np.sin(direction)])
             if direction.shape != (2,) or not np.any(direction):
                 raise ValueError(f"impact_direction must be an angle (rad) or a non-zero 2-vector, got {direction!r}")
@@ -630,6 +679,15 @@ class Sheet:
         out = copy.copy(self)
         out.struck_sites, out._field = sites, field
         return out
+
+    def _check_edge(self, name):
+        """Refuse an edge a periodic direction joins to the opposite one (it has no outward normal)."""
+        wraps = self.boundary == "periodic" and (name in ("left", "right") or not self.hanging)
+        if wraps:
+            lines = "columns" if name in ("left", "right") else "rows"
+            raise ValueError(f"a periodic sheet has no {name} edge (its {lines} "
+                             "wrap around, linking it to the opposite one): strike sites with impact_direction (rad), "
+                             "or give a velocity field")  # fmt: skip
 
     @property
     def impact_field(self) -> np.ndarray:
@@ -718,6 +776,12 @@ class Sheet:
 
     def impact_state(self, speeds, dropped, gravity, g):
         """Displacements and velocities of B runs at t = 0 (module notes); ``speeds`` validated (m/s)."""
+        if not np.any(self._field) or not np.any(speeds):
+            raise ValueError("nothing sets the sheet moving: give struck sites (struck=...; none are struck) and an "
+                             "impact_velocity (m/s) or a drop_height (m) above 0, or an initial state"
+                             if not np.any(self._field) else
+                             "nothing sets the sheet moving: give an impact_velocity (m/s) or a drop_height (m) above "
+                             "0, or an initial state")  # fmt: skip
         if dropped:
             if not self.hanging:
                 raise ValueError("a drop (drop_height) needs a hanging sheet: give impact_velocity to a sheet lying "

@@ -11,6 +11,7 @@ r"""What a sheet's run returns, its fields in NetCDF files, and maps of its link
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -253,7 +254,8 @@ def write_force_frames(run: SheetSimulation, folder, count: int = 6, *, dpi: int
     """Maps of the link forces of one run at ``count`` evenly spaced times, one PNG each, into ``folder``.
 
     One colour scale (0 to the largest force of the run) for every frame.  Returns the paths written
-    (``frame_000.png``, ...); the folder is created if needed.
+    (``frame_000.png``, ...); the folder is created if needed, and frames of an earlier run beyond ``count``
+    (``frame_NNN.png``) are removed, so that the folder holds this run's maps only.
     """
     from matplotlib.colors import Normalize
 
@@ -276,6 +278,9 @@ def write_force_frames(run: SheetSimulation, folder, count: int = 6, *, dpi: int
         path = folder / f"frame_{k:03d}.png"
         save_figure(fig, path, dpi=dpi)
         paths.append(path)
+    for stale in folder.glob("frame_*.png"):  # frames of an earlier, longer run: not of this one
+        if re.fullmatch(r"frame_\d{3,}\.png", stale.name) and stale not in paths:
+            stale.unlink()
     return paths
 
 
