@@ -181,9 +181,10 @@ def _angle(name, value, unit):
     return v.in_range(name, value, 0.0, np.pi / 2)
 
 
-#: Bytes per ring of a sheet's network before any run (positions, links, laws, rest geometry; measured
-#: 1.1 kB per site of a 100x100 square sheet with tracemalloc): a sheet that cannot fit is refused before it is built.
-_BYTES_PER_SITE = 1500
+#: Bytes per ring at the peak of building a sheet's network (positions, links, laws, rest geometry; measured with
+#: tracemalloc: 510 for a square and 700 for a triangular sheet of 100x100, tests/numerics/test_sheet_estimate.py):
+#: a sheet that cannot fit is refused before it is built.
+_BYTES_PER_SITE = 1000
 
 #: Largest relative difference between a link's length and the spacing 2(R - r) of its rings (plus its static
 #: extension) that :meth:`Sheet.from_links` accepts: positions in millimetres are 1000 times too far apart.
