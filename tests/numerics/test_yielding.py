@@ -216,7 +216,7 @@ def test_first_yield_is_johnsons_1_60_Y_for_the_paper_contact():
     # The engine's yielding chain takes its delta_y from there: the same hand number.
     ring = theory.Ring(R, r, material=theory.Material("steel-0.3", E=E, nu=nu, rho=7900.0, source="this test"))
     chain = Chain.from_rings([ring] * 3, yield_strength=Y)
-    assert chain.delta_y[0] == pytest.approx(delta_hand, rel=2e-2)
+    assert np.ravel(chain.delta_y)[0] == pytest.approx(delta_hand, rel=2e-2)
 
 
 def test_compiled_hunt_crossley_never_pulls():
@@ -270,7 +270,7 @@ def test_verlet_is_second_order_on_a_harmonic_oscillator():
     for steps in (100, 200):
         dt = 2 * np.pi / omega / steps
         sim = simulate(net, t_end, initial=(np.array([0.0, 1e-6]), np.zeros(2)), gravity=False, method="verlet",
-                       dt=dt, n_samples=3)  # fmt: skip
+                       dt=dt, n_samples=3, max_energy_drift=None)  # fmt: skip
         e = sim.x[-1, 1] - sim.x[-1, 0]
         dt = sim.stats["dt"]  # the step the kernel took (t_end a whole number of them)
         modified = 2 * np.arcsin(omega * dt / 2) / dt  # the exact frequency of the Verlet map
