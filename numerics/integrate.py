@@ -161,11 +161,9 @@ _SECONDS_PER_SITE_STEP = {"verlet": 3e-8, "dopri5": 2e-7}
 # contacts' openings and closings cost rejected steps the linearised modes do not show.
 _DOPRI5_STEPS_PER_PERIOD = 7.0
 
-# A network in two or three dimensions (a sheet): its general stepper (a scatter of link forces to sites) costs
-# this many times a chain's step per coordinate, and what follows the run (link_force, energy(), the NetCDF file)
-# costs about this many seconds per link and sample, and builds this many temporary arrays of links x samples at
-# its peak; measured on 30x30 and 60x60 square sheets with tracemalloc (tests/numerics/test_sheet_estimate.py) and
-# timed by benchmarks/bench_sheet_estimate.py.
+# A sheet (2-3D network): its stepper costs this many times a chain's per coordinate; what follows the run (link_force,
+# energy(), the file) this many seconds per link and sample, and this many temporary arrays of links x samples at its
+# peak (tracemalloc: tests/numerics/test_sheet_estimate.py; processor time: benchmarks/bench_sheet_estimate.py).
 _PLANAR_STEP_COST = 6.5  # dopri5 takes 2.4x the steps the linearised modes suggest, each 2.7x a chain's per coordinate
 _SECONDS_PER_LINK_SAMPLE = 1e-6
 _LINK_TEMPORARIES = 10
@@ -187,14 +185,8 @@ class IntegrationError(ValueError):
 class RunTooLargeError(ValueError):
     """A run that would need more memory or time than allowed; the message says how to shrink it.
 
-    Attributes
-    ----------
-    needed, limit : int or None
-        Bytes the run needs and the bytes available or allowed (None for a run refused for its duration).
-    estimate : RunEstimate or None
-        The run's estimate, where one was made.
-    seconds : float or None
-        The longest duration allowed, s (a run refused for its duration).
+    Attributes: ``needed`` and ``limit`` (bytes needed, and available or allowed; None for a duration),
+    ``estimate`` (the :class:`RunEstimate`, where one was made), ``seconds`` (the longest duration allowed, s).
     """
 
     def __init__(self, message, *, needed=None, limit=None, estimate=None, seconds=None):
@@ -685,31 +677,21 @@ def _check_size(estimate: RunEstimate, rings, max_memory, max_seconds):
             f"this run needs about {format_bytes(estimate.memory)} of memory ({estimate.describe(memory=False)}), "
             f"more than the {format_bytes(limit)} {'available' if max_memory is None else 'allowed (max_memory)'}"
             f"{smaller}; or take fewer samples (n_samples or t_eval) or fewer runs per batch",
-            needed=estimate.memory,
-            limit=limit,
-            estimate=estimate,
-        )
+            needed=estimate.memory, limit=limit, estimate=estimate,
+        )  # fmt: skip
     if max_seconds is not None:
         max_seconds = float(v.positive("max_seconds", max_seconds, "s"))
         if estimate.seconds is not None and estimate.seconds > max_seconds:
             raise RunTooLargeError(
                 f"this run would take roughly {format_duration(estimate.seconds)} ({estimate.describe()}), more "
                 f"than max_seconds = {max_seconds:g} s; shorten t_end, take a larger dt (below the stability "
-                "limit) or fewer runs, or raise max_seconds",
-                estimate=estimate,
-                seconds=max_seconds,
-            )
+                "limit) or fewer runs, or raise max_seconds", estimate=estimate, seconds=max_seconds,
+            )  # fmt: skip
 
 
 def check_model_size(sites: int, bytes_per_site: int, what: str) -> None:
-    """Refuse, before anything is allocated, a model whose ``what`` needs more than the memory available.
-
-    Raises
-    ------
-    RunTooLargeError
-        Naming the sites, the bytes (``bytes_per_site`` per site) and the memory available; its
-        ``needed`` and ``limit`` attributes give them in bytes.
-    """
+    """Refuse (:class:`RunTooLargeError`), before anything is allocated, a model whose ``what`` needs more than
+    the memory available at ``bytes_per_site`` bytes per site."""
     available = _available_memory()
     needed = int(bytes_per_site) * int(sites)
     if available is not None and needed > available:
