@@ -27,12 +27,14 @@ def test_fit_speed_of_a_sweep_recovers_its_m_eff_ratio(tmp_path, capsys, model, 
     # The interval is no wider than the engine's resolution allows: 2e-5 relative standard error at least
     # (LATTICE_SPEED_RESOLUTION), t_{0.975, 2} = 4.3: under 1e-3 relative half-width.
     assert high - low < 2e-3 * ratio
-    # The paper's route on the same pairs: biased high by more than its own interval (1-10 %: the forming pulse).
-    assert main(["fit", "speed", str(path), "--eq8", "--json"]) == 0
-    eq8 = json.loads(capsys.readouterr().out)
-    assert eq8["intervals_95"]["m_eff_ratio"][0] > ratio
-    # The same least squares, closed form against lmfit's (stopped within its ftol of 1e-8 of the minimum).
-    assert fit["fixed"]["eq8_m_eff_ratio"] == pytest.approx(eq8["values"]["m_eff_ratio"], rel=1e-5)
+    # The paper's route on the same pairs: biased high, beyond the lattice fit's interval (1-10 %: the forming pulse).
+    assert fit["fixed"]["eq8_m_eff_ratio"] > high
+    if model == "power-law":  # (Eq. (8)'s shape misses the dual-spring chain's three speeds: its fit refuses them)
+        assert main(["fit", "speed", str(path), "--eq8", "--json"]) == 0
+        eq8 = json.loads(capsys.readouterr().out)
+        assert eq8["intervals_95"]["m_eff_ratio"][0] > ratio
+        # The same least squares, closed form against lmfit's (stopped within its ftol of 1e-8 of the minimum).
+        assert fit["fixed"]["eq8_m_eff_ratio"] == pytest.approx(eq8["values"]["m_eff_ratio"], rel=1e-5)
     assert 0.01 < fit["fixed"]["eq8_bias"] < 0.10
 
 

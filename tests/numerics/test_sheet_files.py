@@ -129,8 +129,8 @@ def test_a_truncated_or_foreign_file_is_refused_naming_it(tmp_path, small_run):
         (lambda: Sheet.square(4, 3, RING, pretension=(1.0, 2.0), m_eff_ratio=0.5, gamma=0.01, struck=[1]),
          {"impact_velocity": 0.3}),
         (lambda: Sheet.square(4, 3, RING, hanging=True, m_eff_ratio=0.37), {"drop_height": 0.01}),
-        (lambda: Sheet.triangular(4, 3, RING, pretension=(1.0, 2.0, 2.0), boundary="periodic", struck="bottom",
-                                  angle=(1.2, 1.5, 1.5)), {"impact_velocity": 0.2}),
+        (lambda: Sheet.triangular(4, 3, RING, pretension=(1.0, 2.0, 2.0), boundary="periodic", struck=[1],
+                                  impact_direction=-np.pi / 2, angle=(1.2, 1.5, 1.5)), {"impact_velocity": 0.2}),
         (lambda: Sheet.from_links([[0, 0], [RING.spacing, 0]], [[0, 1], [1, -1]], RING, struck=[0],
                                   anchors=[[0, 0], [2 * RING.spacing, 0]], impact_direction=np.pi), {
              "impact_velocity": 0.2}),
