@@ -46,7 +46,7 @@ from .engine.traces import DataError, read_speed_amplitude, read_static, read_tr
 from .jobs.dissipation import energy_shares, equivalent_contact_dashpot, second_impact
 from .jobs.effective_mass import fit_effective_mass, predict_effective_mass
 from .jobs.ensemble import Ensemble, Summary, ensemble, summarize
-from .jobs.fit import FitError, FitResult, fit_speed_amplitude, fit_speed_rings, fit_static
+from .jobs.fit import FitError, FitResult, fit_speed_amplitude, fit_speed_lattice, fit_speed_rings, fit_static
 from .jobs.fit_dynamic import TraceRecord, fit_traces
 from .jobs.paper import STIFFNESS_SOURCES, PaperExperiment, paper_chain, paper_experiment
 from .jobs.sweep import Point, sweep, write_csv
@@ -55,7 +55,7 @@ from .layouts.disorder import DisorderWarning, draw_rings
 from .layouts.ring_beam import ReducedRing, RingModel
 from .layouts.ring_chain import RingChain, RingSimulation, simulate_rings
 from .layouts.sheet import Sheet
-from .layouts.sheet_runs import SheetBatch, SheetSimulation, read_sheet_run
+from .layouts.sheet_runs import SheetBatch, SheetSimulation, read_sheet_run, sheet_run_options
 
 # The engine's laws and signals under their public module names (one module, two names: an import of
 # ringchain.numerics.laws finds it here after the package is imported, and objects compare equal).
@@ -123,6 +123,7 @@ __all__ = [
     "fit_static",
     "fit_speed_amplitude",
     "fit_speed_rings",
+    "fit_speed_lattice",
     "fit_traces",
     "FitResult",
     "FitError",
@@ -144,4 +145,5 @@ __all__ = [
     "SheetSimulation",
     "SheetBatch",
     "read_sheet_run",
+    "sheet_run_options",
 ]

@@ -568,8 +568,16 @@ def _maximum(values, slope, *params):
     return peak, zeta
 
 
+#: Smallest yield strength taken, Pa: softer than any metal or polymer of a ring (lead yields at about 5 MPa); a
+#: smaller Y is a strength in MPa given as Pa (215 for 215e6), which would give forces 1e18 times too small.
+MIN_YIELD_STRENGTH = 1e6
+
+
 def _check_yield_inputs(R, r, E, nu, Y, angle):
     Y = v.positive("Y", Y, "Pa")
+    if Y.size and np.min(Y) < MIN_YIELD_STRENGTH:
+        raise ValueError(f"Y = {float(np.min(Y)):g} Pa is below 1 MPa, softer than any ring's material: Y is in Pa "
+                         f"(215 MPa is 215e6)")  # fmt: skip
     A, _, m = contact_ellipse(R, r, angle)  # validates R > 2 r and the angle, with errors that say why
     K_c = hertz_stiffness(R, r, E, nu, angle)  # validates E and nu
     v.broadcast_shape(R=R, r=r, E=E, nu=nu, Y=Y, angle=angle)

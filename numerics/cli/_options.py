@@ -142,8 +142,25 @@ def striker_mass(text: str):
         raise argparse.ArgumentTypeError(one_line(exc).replace("striker_mass", "striker mass")) from None
 
 
-LENGTH_R = positive("R", "m")
-LENGTH_r = positive("r", "m")
+#: Largest ring radius the command line takes, m: a ring over a metre is a radius in mm given as m (--R 22.5).
+MAX_RING_RADIUS = 1.0
+
+
+def ring_length(what):
+    """A radius in m, > 0 and at most :data:`MAX_RING_RADIUS` (a value in mm is refused, naming the unit)."""
+
+    def check(x):
+        x = float(v.positive(what, x, "m"))
+        if x > MAX_RING_RADIUS:
+            raise ValueError(f"{what} = {x:g} m is a ring over {MAX_RING_RADIUS:g} m: radii are in m ({x:g} mm is "
+                             f"{x / 1000:g})")  # fmt: skip
+        return x
+
+    return Checked(float, check)
+
+
+LENGTH_R = ring_length("R")
+LENGTH_r = ring_length("r")
 ASPECT = positive("R/r", "")
 ANGLE = Checked(float, lambda x: float(v.in_range("contact angle (deg)", x, 0.0, 90.0)))
 M_EFF_RATIO = fraction("m_eff/m0")
@@ -245,15 +262,16 @@ def plot_file(text: str) -> str:
 
 
 def output_folder(text: str) -> str:
-    """argparse type of an output folder: an existing folder, or one that can be created."""
+    """argparse type of an output folder: an existing folder, or a new one in an existing folder (never a chain of
+    missing folders: a typo in a path is refused, as for an output file)."""
     path = Path(text)
     if not text:
         raise argparse.ArgumentTypeError("the folder name is empty")
     if path.exists() and not path.is_dir():
         raise argparse.ArgumentTypeError(f"{text} exists and is not a folder")
-    parent = path
-    while not parent.exists() and parent != parent.parent:
-        parent = parent.parent
+    parent = path if path.exists() else path.parent
+    if not parent.exists():
+        raise argparse.ArgumentTypeError(f"cannot write the folder {text}: the folder {parent} does not exist")
     if not parent.is_dir():
         raise argparse.ArgumentTypeError(f"cannot create the folder {text}: {parent} is not a folder")
     if not os.access(parent, os.W_OK | os.X_OK):
@@ -369,17 +387,56 @@ def ring_of(R, r, material, angle_deg, what, *, thin=False, window=None):
     return ring
 
 
+def too_large(exc, remedy: str, option: str | None = None) -> ValueError:
+    """A RunTooLargeError of the engine said with the command line's own remedies (its options, not Python's)."""
+    from ..engine.integrate import format_bytes, format_duration
+
+    where = f"argument {option}: " if option else ""
+    estimate = exc.estimate
+    size = "" if estimate is None else f" ({estimate.describe(memory=False)})"
+    if exc.needed is not None:
+        what = "a run" if estimate is None else "this run"
+        return ValueError(f"{where}{what} needs about {format_bytes(exc.needed)} of memory{size}, more than the "
+                          f"{format_bytes(exc.limit)} available; {remedy}")  # fmt: skip
+    if exc.seconds is not None and estimate is not None:
+        return ValueError(f"{where}this run would take roughly {format_duration(estimate.seconds)}{size}, more than "
+                          f"{format_duration(exc.seconds)}; {remedy}")  # fmt: skip
+    return ValueError(f"{where}{one_line(exc)}")
+
+
+#: The engine's remedies in Python's words, and the same in the command line's options (:func:`naming_solver`).
+SOLVER_REMEDIES = (
+    ("take a smaller rtol (and atol), or method='verlet'", "give a smaller --rtol, or --method verlet"),
+    ("try a larger rtol or atol, or method='odeint'", "try a larger --rtol, or --method odeint"),
+    ("take a smaller dt or more steps_per_period", "give --method dopri5 (adaptive steps)"),
+)
+
+
 @contextlib.contextmanager
-def naming_size(args):
-    """A run the engine refuses as too large: add the command line's remedies."""
-    from ..engine.integrate import RunTooLargeError
+def naming_solver(args):
+    """A run the engine stops (:class:`~ringchain.numerics.IntegrationError`): its remedies as options."""
+    from ..engine.integrate import IntegrationError
 
     try:
         yield
+    except IntegrationError as exc:
+        text = one_line(exc)
+        for python, command in SOLVER_REMEDIES:
+            text = text.replace(python, command)
+        raise ValueError(text) from None
+
+
+@contextlib.contextmanager
+def naming_size(args):
+    """A run the engine refuses as too large: the command line's remedies."""
+    from ..engine.integrate import RunTooLargeError
+
+    try:
+        with naming_solver(args):
+            yield
     except RunTooLargeError as exc:
         chain = "fewer rings in --chain's file" if getattr(args, "chain", None) is not None else "fewer --rings"
-        raise ValueError(f"{one_line(exc)}. From the command line: {chain}, fewer --samples or a shorter "
-                         "--t-end") from None  # fmt: skip
+        raise too_large(exc, f"take {chain}, fewer --samples or a shorter --t-end") from None
 
 
 @contextlib.contextmanager
@@ -421,17 +478,17 @@ def geometry_options(p, *, many=False, R_required=False):
            help="inertial over ring mass m_eff/m0 in (0, 1] (default 1; the paper fits 0.33-0.37)")  # fmt: skip
 
 
-def impact_options(p, *, many=False, required=False):
-    """The impact on ring 0: --drop-height or --impact-velocity."""
+def impact_options(p, *, many=False, required=False, struck="ring 0"):
+    """The impact on ring 0 (``struck``: what is struck, in the help): --drop-height or --impact-velocity."""
     impact = p.add_mutually_exclusive_group(required=required)
     if many:
         impact.add_argument("--drop-height", type=Values(DROP_HEIGHT), nargs="+", metavar="M", help="drop heights, m")
         impact.add_argument("--impact-velocity", type=Values(IMPACT_VELOCITY), nargs="+", metavar="M/S",
                             help="impact speeds, m/s")  # fmt: skip
     else:
-        impact.add_argument("--drop-height", type=DROP_HEIGHT, metavar="M", help="free-fall height of ring 0, m")
+        impact.add_argument("--drop-height", type=DROP_HEIGHT, metavar="M", help=f"free-fall height of {struck}, m")
         impact.add_argument("--impact-velocity", type=IMPACT_VELOCITY, metavar="M/S",
-                            help="impact speed of ring 0, m/s")  # fmt: skip
+                            help=f"impact speed of {struck}, m/s")  # fmt: skip
 
 
 def executor_options(p, *, default_batch: int, what: str = "runs of one chain"):
@@ -698,6 +755,26 @@ def speed_rings(args, rows):
             where = f"the ring of {args.file}, line {line} (R = {R:g} m, r = {r:g} m)"
             rings[R, r, angle, name] = ring_of(R, r, name or "stainless", math.degrees(angle), where)
     return [rings[key] for key in zip(rows["R"], rows["r"], rows["angle"], rows["material"], strict=True)]
+
+
+def speed_points(rows, rings) -> list:
+    """The chain and impact of every row of a sweep's file (:func:`~ringchain.numerics.read_speed_amplitude`'s
+    rows with a "model"), as :class:`~ringchain.numerics.Point` s for
+    :func:`~ringchain.numerics.fit_speed_lattice` (``rings``: each row's Ring)."""
+    from ..jobs.sweep import Point
+
+    points = []
+    for k, ring in enumerate(rings):
+        striker = rows["striker"][k]
+        drop = rows.get("drop_height_m", [None] * len(rings))[k]
+        speed = float(rows["impact_velocity_m_s"][k])
+        impact = {"drop_height": drop} if drop is not None else {"impact_velocity": speed}
+        points.append(Point(R_over_r=aspect_ratio(ring.R, ring.r), r=ring.r, angle=ring.angle,
+                            material=ring.material.name, model=rows["model"][k], n_rings=int(rows["n_rings"][k]),
+                            sensors=(int(rows["sensor_near"][k]), int(rows["sensor_far"][k])),
+                            striker_mass=striker if striker in ("m_eff", "m0") else float(rows["striker_mass_kg"][k]),
+                            **impact))  # fmt: skip
+    return points
 
 
 def trace_chain(args):

@@ -3,7 +3,9 @@
 - ``ringchain fit static FILE`` -- F = K delta^n and the series law (Eqs. 3-4) fitted to a
   quasi-static test (``displacement_m``, ``force_N``), with AIC and BIC to tell them apart;
 - ``ringchain fit speed FILE`` -- m_eff/m0 (and n) through Eq. (8) from (peak force, speed)
-  pairs (``peak_force_N``, ``speed_m_s``, or a ``ringchain sweep`` file);
+  pairs (``peak_force_N``, ``speed_m_s``); of a ``ringchain sweep`` file, with the lattice's own
+  speeds between the file's sensors as the model (:func:`~ringchain.numerics.fit_speed_lattice`: Eq. (8)
+  reads m_eff/m0 high where the pulse is still forming; ``--eq8`` asks for the paper's route);
 - ``ringchain fit traces FILE [FILE ...]`` -- a chain fitted to sensor traces (the CSV of
   ``ringchain simulate --out``), files fitted jointly.
 
@@ -20,6 +22,8 @@ from __future__ import annotations
 import json
 import sys
 from pathlib import Path
+
+from ..engine._files import save_figure
 
 __all__ = ["add_parser", "run"]
 
@@ -79,7 +83,10 @@ def add_parser(sub, *, geometry) -> None:
     p = kinds.add_parser("speed", help="m_eff/m0 through Eq. (8) from (peak force, speed) pairs", allow_abbrev=False)
     p.add_argument("file", metavar="FILE", help="CSV with peak_force_N and speed_m_s (or a ringchain sweep CSV)")
     chain_by_law(p)
-    p.add_argument("--free-n", action="store_true", help="fit the exponent n too")
+    p.add_argument("--free-n", action="store_true", help="fit the exponent n too (Eq. (8) route)")
+    p.add_argument("--eq8", action="store_true",
+                   help="fit Eq. (8) even to a sweep's file (the paper's route: biased where the pulse is still "
+                        "forming; by default a sweep's pairs are fitted with the lattice's own speeds)")  # fmt: skip
     common(p)
 
     p = kinds.add_parser("traces", help="a chain fitted to sensor traces (ringchain simulate --out files)",
@@ -167,7 +174,7 @@ def _static(args) -> int:
         ax.set(ylabel="force (N)", title="quasi-static test")
         ax.legend()
         ax_r.set(xlabel="displacement (um)", ylabel="fit - data (N)")
-        fig.savefig(args.plot, dpi=120)
+        save_figure(fig, args.plot, dpi=120)
         print(f"plot written to {args.plot}")
     return 0
 
@@ -180,8 +187,15 @@ def _speed(args) -> int:
     F_m, V_s, rows = read_speed_amplitude(args.file, geometry=True)
     rings = opt.speed_rings(args, rows)
     start = args.m_eff_ratio if "m_eff_ratio" in opt.given(args) else None  # None: fit_speed_amplitude's own
-    result = fit_speed_rings(F_m, V_s, rings, K=args.K, n=args.n, free_n=args.free_n, start=start,
-                             max_nfev=args.max_evaluations)  # fmt: skip
+    if rows is not None and "model" in rows and not (args.eq8 or args.free_n or args.K is not None):
+        from .fit import fit_speed_lattice
+
+        with opt.computing(f"the chains of {args.file}"):
+            points = opt.speed_points(rows, rings)
+        result = fit_speed_lattice(F_m, V_s, points, start=start, max_nfev=args.max_evaluations)
+    else:
+        result = fit_speed_rings(F_m, V_s, rings, K=args.K, n=args.n, free_n=args.free_n, start=start,
+                                 max_nfev=args.max_evaluations)  # fmt: skip
     _print(args, {"speed": result})
     if not args.json and "K" in result.fixed:
         source = "given" if args.K is not None else "the ring's series law, Eq. 4"
@@ -201,7 +215,7 @@ def _speed(args) -> int:
         ax.plot(F_m[order], (V_s + result.residual)[order], label=label)
         ax.set(xscale="log", xlabel="peak force F_m (N)", ylabel="wave speed V_s (m/s)")
         ax.legend()
-        fig.savefig(args.plot, dpi=120)
+        save_figure(fig, args.plot, dpi=120)
         print(f"plot written to {args.plot}")
     return 0
 
@@ -263,4 +277,4 @@ def _plot_traces(result, path, labels) -> None:
         ax.set(ylabel="force (N)", title=f"{label}: impact at {record.t0 * 1e3:.4g} ms, {record.v0:.4g} m/s")
         ax.legend(fontsize="x-small", ncol=2)
         ax_r.set(xlabel="measured time (ms)", ylabel="fit - data (N)")
-    fig.savefig(path, dpi=120)
+    save_figure(fig, path, dpi=120)

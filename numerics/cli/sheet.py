@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import argparse
 import math
+import re
+from pathlib import Path
 
 from . import _options as opt
 
@@ -33,6 +35,18 @@ def sheet_size(text: str) -> tuple[int, int]:
     if rows * cols > MAX_SITES:
         raise argparse.ArgumentTypeError(f"{text} is {rows * cols} rings; the command line runs at most {MAX_SITES}")
     return rows, cols
+
+
+#: Extensions of the NetCDF file ``--out`` writes (NetCDF-4, an HDF5 file): another is refused, never changed.
+NETCDF_EXTENSIONS = (".nc", ".nc4")
+
+
+def netcdf_file(text: str) -> str:
+    """argparse type of --out: an output file named as NetCDF (``.nc``), checked writable before any work."""
+    if Path(text).suffix.lower() not in NETCDF_EXTENSIONS:
+        raise argparse.ArgumentTypeError(f"{text}: a sheet's fields are written as NetCDF-4; name the file with "
+                                         f"{' or '.join(NETCDF_EXTENSIONS)} (e.g. run.nc)")  # fmt: skip
+    return opt.output_file(text)
 
 
 def struck_option(text: str):
@@ -57,6 +71,9 @@ def add_parser(sub) -> None:
 
     p = sub.add_parser("sheet", help="an impact on a sheet of interlinked rings; fields to NetCDF",
                        allow_abbrev=False, description=__doc__.split("\n\n")[0])  # fmt: skip
+    # ROWSxCOLS and ROW,COL may start with a minus sign: read "-3x4" and "-1,2" as values (refused with a reason),
+    # not as unknown options (argparse's "expected one argument").
+    p._negative_number_matcher = re.compile(r"^-\d")
     p.add_argument("--pattern", choices=PATTERNS, default="square", help="4-in-1 (square) or 6-in-1 (triangular)")
     p.add_argument("--size", type=sheet_size, default=(20, 20), metavar="ROWSxCOLS", help="rows x columns (20x20)")
     opt.geometry_options(p)
@@ -74,16 +91,28 @@ def add_parser(sub) -> None:
     p.add_argument("--struck", type=struck_option, default="point", metavar="WHERE",
                    help="bottom, top, left, right (a whole edge), point (default: the middle of the bottom edge) "
                         "or ROW,COL (a site of an edge)")  # fmt: skip
-    opt.impact_options(p, required=True)
+    opt.impact_options(p, required=True, struck="the struck rings")
+    p.add_argument("--impact-direction", type=opt.Checked(float, lambda x: float(opt.v.in_range(
+                   "impact direction (deg)", x, -360.0, 360.0))), metavar="DEG",
+                   help="direction of the struck rings' velocity, degrees from x (default: the outward normal of "
+                        "their edge; needed on a periodic sheet)")  # fmt: skip
     p.add_argument("--gamma", type=opt.Checked(float, lambda x: float(opt.v.nonnegative("gamma", x, "N s/m"))),
                    default=0.0, metavar="NS/M", help="contact dashpot, N s/m (default 0)")  # fmt: skip
     p.add_argument("--t-end", type=opt.DURATION, default=1e-3, metavar="S", help="duration, s (default 1e-3)")
     p.add_argument("--samples", type=opt.Checked(int, check_samples), default=201, help="samples (default 201)")
     p.add_argument("--method", choices=METHODS, default=None, help="integrator (default simulate's)")
-    p.add_argument("--out", type=opt.output_file, required=True, metavar="NC", help="NetCDF file of the fields")
+    p.add_argument("--rtol", type=opt.Checked(float, _rtol), default=None, metavar="X",
+                   help="relative tolerance of the adaptive methods (default the method's)")  # fmt: skip
+    p.add_argument("--out", type=netcdf_file, required=True, metavar="NC", help="NetCDF file of the fields (.nc)")
     p.add_argument("--plot", type=opt.output_folder, metavar="DIR", help="folder for maps of the link forces")
     p.add_argument("--frames", type=opt.integer("frames", 1), default=6, help="maps with --plot (default 6)")
     p.set_defaults(func=run)
+
+
+def _rtol(x):
+    from ..engine.integrate import TOLERANCE_RANGE
+
+    return float(opt.v.in_range("rtol", x, *TOLERANCE_RANGE))
 
 
 def _sheet(args):
@@ -113,29 +142,49 @@ def _sheet(args):
         row, col = struck
         if not (0 <= row < rows and 0 <= col < cols):
             raise ValueError(f"argument --struck: site ({row}, {col}) is not in a sheet of {rows}x{cols}")
-        if row not in (0, rows - 1) and col not in (0, cols - 1):
+        if row not in (0, rows - 1) and col not in (0, cols - 1) and args.impact_direction is None:
             raise ValueError(f"argument --struck: site ({row}, {col}) is not on an edge of the {rows}x{cols} sheet "
-                             "(it moves away from the sheet, along the edge's outward normal)")  # fmt: skip
+                             "(it moves away from the sheet, along the edge's outward normal); or give "
+                             "--impact-direction")  # fmt: skip
+        if row in (0, rows - 1) and col in (0, cols - 1) and args.impact_direction is None:
+            raise ValueError(f"argument --struck: site ({row}, {col}) is a corner of the {rows}x{cols} sheet, on two "
+                             "edges: give --impact-direction (deg), or strike a site of one edge")  # fmt: skip
         struck = [row * cols + col]
+    if args.impact_direction is None and args.boundary == "periodic" and not args.hanging:
+        raise ValueError("argument --struck: a periodic flat sheet has no edges (its rows and columns wrap around, "
+                         "each linked to the opposite one): give --impact-direction (deg)")  # fmt: skip
+    if args.boundary == "periodic" and struck in ("left", "right"):
+        raise ValueError(f"argument --struck: the {struck} edge of a periodic sheet wraps around to the opposite one; "
+                         "strike the bottom, or ROW,COL with --impact-direction (deg)")  # fmt: skip
+    if isinstance(struck, str) and args.impact_direction is not None:
+        raise ValueError("argument --impact-direction: a whole edge moves along its outward normal; give --struck "
+                         "ROW,COL to strike one site in another direction")  # fmt: skip
     pretension = None if args.pretension is None else (
         args.pretension[0] if len(args.pretension) == 1 else tuple(args.pretension))  # fmt: skip
     build = Sheet.square if args.pattern == "square" else Sheet.triangular
     with opt.computing(f"the {args.pattern} sheet of {rows}x{cols} rings"):
         return build(rows, cols, ring, angle=math.radians(args.angle), m_eff_ratio=args.m_eff_ratio,
                      hanging=args.hanging, pretension=pretension, boundary=args.boundary, gamma=args.gamma,
-                     struck=struck)  # fmt: skip
+                     struck=struck, impact_direction=None if args.impact_direction is None else
+                     math.radians(args.impact_direction))  # fmt: skip
 
 
 def run(args) -> int:
     """Run ``ringchain sheet``: build, strike, integrate, write; returns the exit code."""
-    from ..engine.integrate import simulate
+    from ..engine.integrate import RunTooLargeError, simulate
     from ..layouts.sheet_runs import write_force_frames
 
     sheet = _sheet(args)
     impact = {"drop_height": args.drop_height} if args.drop_height is not None else {
         "impact_velocity": args.impact_velocity}  # fmt: skip
     options = {"method": args.method} if args.method else {}
-    result = simulate(sheet, args.t_end, n_samples=args.samples, **impact, **options)
+    if args.rtol is not None:
+        options["rtol"] = args.rtol
+    with opt.naming_solver(args):
+        try:
+            result = simulate(sheet, args.t_end, n_samples=args.samples, **impact, **options)
+        except RunTooLargeError as exc:
+            raise opt.too_large(exc, "take a smaller --size, fewer --samples or a shorter --t-end", "--size") from None
     result.to_netcdf(args.out)
     forces = result.link_force
     rows, cols = sheet.shape

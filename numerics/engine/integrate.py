@@ -85,6 +85,7 @@ __all__ = [
     "format_bytes",
     "format_duration",
     "check_samples",
+    "check_model_size",
     "impact_speeds",
     "verlet_step",
     "EnergyWatch",
@@ -160,6 +161,12 @@ _SECONDS_PER_SITE_STEP = {"verlet": 3e-8, "dopri5": 2e-7}
 # contacts' openings and closings cost rejected steps the linearised modes do not show.
 _DOPRI5_STEPS_PER_PERIOD = 7.0
 
+# A sheet (2-3D network): its stepper costs this many times a chain's per coordinate; what follows the run (link_force,
+# energy(), the file) this many seconds per link and sample, and this many temporary arrays of links x samples at its
+# peak (tracemalloc: tests/numerics/test_sheet_estimate.py; processor time: benchmarks/bench_sheet_estimate.py).
+_PLANAR_STEP_COST = 6.5  # dopri5 takes 2.4x the steps the linearised modes suggest, each 2.7x a chain's per coordinate
+_SECONDS_PER_LINK_SAMPLE = 1e-6
+_LINK_TEMPORARIES = 10
 # Bytes per site of a chain's network, dynamics and initial state, built before a run can be estimated (measured:
 # 153 per site for a dual-spring chain of 1e6 rings); a chain that needs more than the memory available is refused
 # before they are built (issue 24, item 11: 1e8 rings took 15.7 GB and 34 s before the estimate refused them).
@@ -176,7 +183,15 @@ class IntegrationError(ValueError):
 
 
 class RunTooLargeError(ValueError):
-    """A run that would need more memory or time than allowed; the message says how to shrink it."""
+    """A run that would need more memory or time than allowed; the message says how to shrink it.
+
+    Attributes: ``needed`` and ``limit`` (bytes needed, and available or allowed; None for a duration),
+    ``estimate`` (the :class:`RunEstimate`, where one was made), ``seconds`` (the longest duration allowed, s).
+    """
+
+    def __init__(self, message, *, needed=None, limit=None, estimate=None, seconds=None):
+        super().__init__(message)
+        self.needed, self.limit, self.estimate, self.seconds = needed, limit, estimate, seconds
 
 
 # -- the methods --------------------------------------------------------------------------------------
@@ -362,7 +377,8 @@ class RunEstimate:
     ----------
     method : str
     runs, sites, samples : int
-        Runs of the batch, coordinates of one run (lattice sites of a chain), samples of the record.
+        Runs of the batch, coordinates of one run (``sites``: one per lattice site of a chain, two per ring of
+        a sheet), samples of the record.
     recorded_sites : int
         Coordinates whose x and u are kept (all, or those the sensors of ``rings`` need).
     steps : int or None
@@ -372,7 +388,13 @@ class RunEstimate:
         Verlet step, s (None for the adaptive methods).
     memory : int
         Bytes: the record (x, u and the dissipated energy), the forces derived from it,
-        and the solver's own arrays.
+        and the solver's own arrays; for a network in two or three dimensions (a sheet), the peak of
+        its link forces and energies computed from the record.
+    post_seconds : float
+        Rough duration of what a sheet's run does after the integration (link forces, energies,
+        writing its file), s; 0 for a chain.
+    planar : bool
+        A network in two or three dimensions (its general stepper costs more per site than a chain's).
     """
 
     method: str
@@ -383,10 +405,12 @@ class RunEstimate:
     steps: int | None
     dt: float | None
     memory: int
+    post_seconds: float = 0.0
+    planar: bool = False
 
     @property
     def work(self) -> int | None:
-        """Steps x sites x runs (the compiled methods), or None."""
+        """Steps x coordinates x runs (the compiled methods), or None."""
         return None if self.steps is None else self.steps * self.sites * self.runs
 
     @property
@@ -394,16 +418,20 @@ class RunEstimate:
         """Rough duration of a compiled run, s, at the per-step costs measured on a 2-core machine."""
         if self.steps is None:
             return None
-        return self.steps * (_SECONDS_PER_STEP + _SECONDS_PER_SITE_STEP[self.method] * self.sites * self.runs)
+        per_site = _SECONDS_PER_SITE_STEP[self.method] * (_PLANAR_STEP_COST if self.planar else 1.0)
+        return self.steps * (_SECONDS_PER_STEP + per_site * self.sites * self.runs) + self.post_seconds
 
     def describe(self, memory=True) -> str:
         """One line: the run's size, work, rough duration and (unless ``memory`` is False) memory."""
-        size = f"{self.runs} run(s) x {self.sites} sites x {self.samples} samples"
+        size = f"{self.runs} run(s) x {self.sites} coordinates x {self.samples} samples"
         steps = f"Verlet steps of {self.dt:.3g} s" if self.dt is not None else f"{self.method} steps (expected)"
         work = (
             ""
             if self.steps is None
-            else (f", {self.steps:.3g} {steps} = {self.work:.3g} site-steps (roughly {format_duration(self.seconds)})")
+            else (
+                f", {self.steps:.3g} {steps} = {self.work:.3g} coordinate-steps (roughly "
+                f"{format_duration(self.seconds)})"
+            )
         )
         return f"{size}{work}" + (f", {format_bytes(self.memory)} of memory" if memory else "")
 
@@ -546,12 +574,8 @@ def _prepare(model, t_end, impact_velocities, drop_heights, gravity, t_eval, n_s
         raise ValueError(f"method must be one of {METHODS}, got {method!r}")
     # A layout (a Chain) builds its network only now: refuse one that cannot fit before building it.
     sites = getattr(model, "n_sites", None) if callable(getattr(model, "network", None)) else None
-    available = None if sites is None else _available_memory()
-    if available is not None and _SETUP_BYTES_PER_SITE * sites > available:
-        raise RunTooLargeError(
-            f"a model of {sites} sites needs about {format_bytes(_SETUP_BYTES_PER_SITE * sites)} for its network and "
-            f"initial state alone, more than the {format_bytes(available)} available; take fewer rings"
-        )
+    if sites is not None:
+        check_model_size(sites, _SETUP_BYTES_PER_SITE, "its network and initial state")
     dyn = model.dynamics()
     if getattr(dyn, "stateful", False) and method not in COMPILED_METHODS:
         raise ValueError(
@@ -603,9 +627,14 @@ def _prepare(model, t_end, impact_velocities, drop_heights, gravity, t_eval, n_s
             steps = max(1, math.ceil(t_end / verlet_step(dyn, float(scales[0].max()), per_period)))
         n_state = 2 * B * N + (B if dyn.damped else 0)
         solver = 8 * n_state * (2 * min(T, max(1, CHUNK_BYTES // (8 * n_state))) + 30)  # output, copies, LSODA
-    derived = (getattr(dyn, "n_links", N) if rings is None else 2 * len(rings)) * 8 * B * T  # forces derived later
-    memory = 8 * B * T * (2 * K + 1) + derived + solver
-    estimate = RunEstimate(method, B, N, T, K, steps, dt, int(memory))
+    links = getattr(dyn, "n_links", N) if rings is None else 2 * len(rings)
+    planar = getattr(dyn, "dim", 1) > 1
+    # The forces derived later (link_force, kept) and, in two or three dimensions, the temporaries of the links'
+    # geometry that link_force and energy() build at their peak (after the solver's arrays are freed).
+    derived = links * 8 * B * T * (1 + (_LINK_TEMPORARIES if planar else 0))
+    memory = 8 * B * T * (2 * K + 1) + (derived + solver if not planar else max(derived, solver))
+    post = _SECONDS_PER_LINK_SAMPLE * links * B * T if planar else 0.0
+    estimate = RunEstimate(method, B, N, T, K, steps, dt, int(memory), post, planar)
     prepared = dict(t_end=t_end, t_eval=t_eval, g=g, gravity=gravity, x0=x0, u0=u0, scales=scales, rings=rings,
                     keep=keep, dt=dt, rtol=rtol, atol=atol, dynamics=dyn)  # fmt: skip
     return estimate, prepared
@@ -647,16 +676,30 @@ def _check_size(estimate: RunEstimate, rings, max_memory, max_seconds):
         raise RunTooLargeError(
             f"this run needs about {format_bytes(estimate.memory)} of memory ({estimate.describe(memory=False)}), "
             f"more than the {format_bytes(limit)} {'available' if max_memory is None else 'allowed (max_memory)'}"
-            f"{smaller}; or take fewer samples (n_samples or t_eval) or fewer runs per batch"
-        )
+            f"{smaller}; or take fewer samples (n_samples or t_eval) or fewer runs per batch",
+            needed=estimate.memory, limit=limit, estimate=estimate,
+        )  # fmt: skip
     if max_seconds is not None:
         max_seconds = float(v.positive("max_seconds", max_seconds, "s"))
         if estimate.seconds is not None and estimate.seconds > max_seconds:
             raise RunTooLargeError(
                 f"this run would take roughly {format_duration(estimate.seconds)} ({estimate.describe()}), more "
                 f"than max_seconds = {max_seconds:g} s; shorten t_end, take a larger dt (below the stability "
-                "limit) or fewer runs, or raise max_seconds"
-            )
+                "limit) or fewer runs, or raise max_seconds", estimate=estimate, seconds=max_seconds,
+            )  # fmt: skip
+
+
+def check_model_size(sites: int, bytes_per_site: int, what: str) -> None:
+    """Refuse (:class:`RunTooLargeError`), before anything is allocated, a model whose ``what`` needs more than
+    the memory available at ``bytes_per_site`` bytes per site."""
+    available = _available_memory()
+    needed = int(bytes_per_site) * int(sites)
+    if available is not None and needed > available:
+        raise RunTooLargeError(
+            f"a model of {sites} sites needs about {format_bytes(needed)} for {what} alone, more than the "
+            f"{format_bytes(available)} available; take fewer rings",
+            needed=needed, limit=available,
+        )  # fmt: skip
 
 
 def simulate_batch(

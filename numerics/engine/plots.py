@@ -6,6 +6,8 @@
 
 from __future__ import annotations
 
+from ._files import save_figure
+
 __all__ = ["new_figure", "plot_sensor_traces"]
 
 
@@ -30,4 +32,4 @@ def plot_sensor_traces(path, sim, sensors, title: str) -> None:
         ax.plot(sim.t * 1e3, sim.sensor(k), label=f"ring {k}")
     ax.set(xlabel="time after impact (ms)", ylabel="sensor force (N)", title=title)
     ax.legend()
-    fig.savefig(path, dpi=120)
+    save_figure(fig, path, dpi=120)

@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import signals
+from ._files import replacing
 
 __all__ = ["EnergyBudget", "NetworkSimulation", "NetworkBatch", "Simulation", "BatchSimulation"]
 
@@ -317,7 +318,7 @@ class Simulation(NetworkSimulation):
             columns[f"contact_{i}_{i + 1}_N"] = self.contact_force[:, i]
         if self.support_force is not None:
             columns["support_N"] = self.support_force
-        with open(path, "w", newline="") as handle:
+        with replacing(path) as tmp, open(tmp, "w", newline="") as handle:  # whole or not at all
             writer = csv.writer(handle)
             writer.writerow(columns)
             writer.writerows(np.column_stack(list(columns.values())).tolist())

@@ -21,6 +21,8 @@ from pathlib import Path
 
 import numpy as np
 
+from ._files import replacing
+
 __all__ = [
     "DataError",
     "read_text",
@@ -325,11 +327,15 @@ def read_speed_amplitude(path, *, geometry=False):
         N and m/s.
     rings : dict or None
         With ``geometry``: {"R", "r" (m), "angle" (rad): arrays, "material": list of str,
-        "line": the file's line of each row}, or None if the file names no rings.
+        "line": the file's line of each row}, or None if the file names no rings; a sweep's file
+        also gives each row's chain and impact: "model", "striker" (lists of str) and the columns
+        ``n_rings``, ``sensor_near``, ``sensor_far``, ``striker_mass_kg``, ``drop_height_m``,
+        ``impact_velocity_m_s`` it has (arrays).
     """
     columns, lines, numbers = read_table(
         path, [("peak_force_N", "speed_m_s"), ("peak_force_near_N", "wave_speed_m_s")], minimum=3,
-        optional=("R_m", "r_m", "angle_rad", "angle_deg"), text=("material",),
+        optional=("R_m", "r_m", "angle_rad", "angle_deg", *_CHAIN_COLUMNS),
+        text=("material", "model", "striker_mass", "drop_height_m"),
     )  # fmt: skip
     F_m, V_s = ((columns["peak_force_N"], columns["speed_m_s"]) if "peak_force_N" in columns else
                 (columns["peak_force_near_N"], columns["wave_speed_m_s"]))  # fmt: skip
@@ -349,8 +355,17 @@ def read_speed_amplitude(path, *, geometry=False):
     else:
         angle = np.full(F_m.size, math.pi / 2)
     material = columns.get("material") or ["stainless"] * F_m.size
-    return F_m, V_s, {"R": columns["R_m"], "r": columns["r_m"], "angle": angle, "material": material,
-                      "line": np.array(lines)}  # fmt: skip
+    rows = {"R": columns["R_m"], "r": columns["r_m"], "angle": angle, "material": material, "line": np.array(lines)}
+    if "model" in columns and all(name in columns for name in _CHAIN_COLUMNS[:3]):  # a sweep's chains and impacts
+        rows.update(model=columns["model"], striker=columns.get("striker_mass") or ["m_eff"] * F_m.size,
+                    **{name: columns[name] for name in _CHAIN_COLUMNS if name in columns})  # fmt: skip
+        if "drop_height_m" in columns:  # empty where a row was struck at a speed
+            rows["drop_height_m"] = [float(h) if h else None for h in columns["drop_height_m"]]
+    return F_m, V_s, rows
+
+
+#: Columns of a sweep's file that give each row's chain and impact (:func:`read_speed_amplitude`).
+_CHAIN_COLUMNS = ("n_rings", "sensor_near", "sensor_far", "striker_mass_kg", "impact_velocity_m_s")
 
 
 def write_traces(path, sim, sensors) -> None:
@@ -374,5 +389,6 @@ def write_traces(path, sim, sensors) -> None:
     support = sim.support_force
     if support is not None:
         columns["support_N"] = support
-    np.savetxt(path, np.column_stack(list(columns.values())), delimiter=",", header=",".join(columns), comments="",
-               fmt="%.17g")  # fmt: skip
+    with replacing(path) as tmp:  # whole or not at all
+        np.savetxt(tmp, np.column_stack(list(columns.values())), delimiter=",", header=",".join(columns),
+                   comments="", fmt="%.17g")  # fmt: skip

@@ -43,6 +43,7 @@ from ringchain.theory import STANDARD_GRAVITY, Ring
 from ringchain.theory import _validate as v
 
 from ..engine import signals
+from ..engine._files import save_figure
 from ..engine.executors import run_tasks
 from ..engine.integrate import (
     DEFAULT_SAMPLES,
@@ -57,6 +58,7 @@ from ..engine.plots import new_figure
 from ..engine.results import Simulation
 from ..layouts.chain import MODELS, Chain, default_t_end
 from ..layouts.disorder import check_seed, check_spread, describe_spread, draw_rings, member_seeds
+from .experiment import MAX_DOUBLINGS
 from .sweep import write_csv
 
 __all__ = [
@@ -387,7 +389,7 @@ class Ensemble:
         ax.plot(rings, self.ordered_peak_force, "k--", label="ordered chain")
         ax.set(xlabel="ring", ylabel="peak force (N)", title=title or describe_spread(self.spread))
         ax.legend(fontsize=8)
-        fig.savefig(path, dpi=120)
+        save_figure(fig, path, dpi=120)
 
 
 def _impact(drop_height, impact_velocity, g):
@@ -496,6 +498,7 @@ def ensemble(ring, n_rings, count, *, spread, seed, model="dual-spring", m_eff_r
     speed, dropped, drop_height = _impact(drop_height, impact_velocity, g)
     ordered = Chain.from_ring(ring, n_rings, model, m_eff_ratio=m_eff_ratio, **chain_options)
     traces = tuple(ordered.ring_index(k) for k in ([traces] if np.ndim(traces) == 0 else traces))
+    retries = MAX_DOUBLINGS if t_end is None else 0  # a default duration grows until the pulse has passed
     if t_end is None:
         t_end = default_t_end(ordered, [speed], (0, n_rings - 1))
     t_end = float(v.positive("t_end", t_end, "s"))
@@ -505,6 +508,12 @@ def ensemble(ring, n_rings, count, *, spread, seed, model="dual-spring", m_eff_r
                max_energy_drift=energy_limit, **solver)  # fmt: skip
     # The ordered chain first, in this process: it checks the solver's options before any worker starts.
     reference = run_members(ring, n_rings, {}, seeds[:1], **run)
+    # As run_experiment does: the default duration of a short chain (2 rings) may end before the leading pulse has
+    # passed every ring of the ordered chain; double it (at most MAX_DOUBLINGS times) until it has.
+    while retries and np.isnan(reference["peak_force"][0]).any():
+        retries -= 1
+        t_end = run["t_end"] = 2.0 * t_end
+        reference = run_members(ring, n_rings, {}, seeds[:1], **run)
     chunks = [seeds[k : k + batch_size] for k in range(0, count, batch_size)]
     results = run_tasks(run_members, [(ring, n_rings, spread, chunk) for chunk in chunks], executor, options=run,
                         max_workers=max_workers, progress=progress, sizes=[len(c) for c in chunks], name="ensemble",

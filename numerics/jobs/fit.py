@@ -31,6 +31,8 @@ __all__ = [
     "fit_static",
     "fit_speed_amplitude",
     "fit_speed_rings",
+    "fit_speed_lattice",
+    "LATTICE_SPEED_RESOLUTION",
     "FitResult",
     "FitError",
     "STATIC_MODELS",
@@ -672,3 +674,125 @@ def fit_speed_rings(F_m, V_s, rings, *, K=None, n=None, free_n=False, start=None
                       for k in distinct for R, r, angle, material in [k])  # fmt: skip
     note = f"one m_eff/m0 fitted to pairs from {len(distinct)} rings, each with its own K, n (Eq. 4), a and m0: {names}"
     return dataclasses.replace(result, notes=(*result.notes, note))
+
+
+#: Relative accuracy of a wave speed the engine computes with its default settings (the sensor forces of the
+#: paper's chain within 1.3e-5 of their peak, tests/numerics/test_kernels.py): a floor on the standard error of
+#: :func:`fit_speed_lattice`, whose forward model reproduces a sweep's own speeds to ~1e-9 at its solution.
+LATTICE_SPEED_RESOLUTION = 1e-5
+
+
+def _loglog(F, F_k, V_k, slope):
+    """V at forces ``F`` from the pairs (F_k, V_k) of one chain: piecewise linear in log-log, its end segments
+    (or ``slope`` for one pair) extended beyond them."""
+    order = np.argsort(F_k)
+    x, y, q = np.log(F_k[order]), np.log(V_k[order]), np.log(F)
+    if x.size == 1 or np.ptp(x) == 0:
+        return np.exp(y[0] + slope * (q - x[0]))
+    inside = np.interp(q, x, y)
+    low = y[0] + (y[1] - y[0]) / (x[1] - x[0]) * (q - x[0])
+    high = y[-1] + (y[-1] - y[-2]) / (x[-1] - x[-2]) * (q - x[-1])
+    return np.exp(np.where(q < x[0], low, np.where(q > x[-1], high, inside)))
+
+
+def fit_speed_lattice(F_m, V_s, points, *, start=None, max_iterations=8, max_nfev=None) -> FitResult:
+    """Fit m_eff/m0 to (peak force, wave speed) pairs with the lattice itself as the forward model.
+
+    Eq. (8) is the speed of the fully formed solitary wave.  Near the impact the pulse is still forming and
+    runs slower (2.3 % between rings 6 and 12 of the paper's power-law chain at R/r 9), so :func:`fit_speed_amplitude`
+    reads m_eff/m0 high there (4.4 % at 0.37; book/fitting.md).  Here the speed a pair is compared with is
+    the one the engine measures for that chain, between the same sensors, after the same impact: the chain
+    is run at a trial ratio rho_k with the pairs' impacts (:func:`ringchain.numerics.sweep`), its
+    speed-amplitude relation V_k(F) interpolated (log-log) at the measured forces, and scaled to any other
+    ratio rho as V_k(F) sqrt(rho_k/rho) (exact for the paper's striker, whose mass is m_eff: the equations of
+    motion keep their form with time scaled by sqrt(m_eff)).  rho_k is then moved to the fitted rho and the
+    runs repeated, until rho no longer moves (a fixed point: the runs at rho reproduce the pairs).
+
+    Parameters
+    ----------
+    F_m, V_s : array_like
+        Peak forces at the near sensor (N) and wave speeds between the sensors (m/s), as a sweep writes them.
+    points : sequence of Point
+        The chain and impact of each pair (:class:`~ringchain.numerics.Point`: ring, model, rings,
+        sensors, striker, drop height or impact speed); their ``m_eff_ratio`` is ignored.
+    start : float, optional
+        First trial ratio (default the Eq. (8) route's least-squares value, at most 1).
+    max_iterations : int, optional
+        Most rounds of runs (each round is one batch of ``len(points)`` runs).
+    max_nfev : int, optional
+        As in :func:`fit_speed_amplitude`.
+
+    Returns
+    -------
+    FitResult
+        "m_eff_ratio"; its standard error at least :data:`LATTICE_SPEED_RESOLUTION` relative in the speeds
+        (2e-5 in the ratio).  ``fixed`` holds ``eq8_m_eff_ratio`` (the Eq. (8) route's value on the same
+        pairs) and ``eq8_bias`` (that value over the fitted one, less 1); a note says it in words.
+    """
+    import lmfit
+    from ringchain.theory import solitary_wave_speed
+
+    from .sweep import Point, sweep
+
+    F_m = v.positive("F_m", as_data("F_m", F_m, "N", 2), "N")
+    V_s = v.positive("V_s", as_data("V_s", V_s, "m/s", 2), "m/s")
+    points = list(points)
+    if F_m.shape != V_s.shape or len(points) != F_m.size:
+        raise ValueError(f"F_m, V_s and points must have one entry per pair, got {F_m.size}, {V_s.size} and "
+                         f"{len(points)}")  # fmt: skip
+    for i, point in enumerate(points):
+        if not isinstance(point, Point) or not point.dynamic:
+            raise ValueError(f"points[{i}] must be a Point with its impact (drop_height or impact_velocity)")
+    laws = {}
+    for point in points:
+        if point.ring not in laws:
+            laws[point.ring] = point.ring.power_law()
+    K = np.array([laws[p.ring][0] for p in points])
+    n = np.array([laws[p.ring][1] for p in points])
+    g = solitary_wave_speed(F_m, K=K, n=n, m=np.array([p.ring.mass for p in points]), a=np.array([p.ring.spacing
+                            for p in points]))  # fmt: skip
+    c = float(np.sum(g * V_s) / np.sum(g * g))  # Eq. (8): V = c g(F), c = (m_eff/m0)^(-1/2), linear least squares
+    eq8 = c**-2
+    rho_k = min(1.0, eq8 if start is None else float(v.in_range("start", start, 0.0, 1.0)))
+    keys = [dataclasses.replace(p, m_eff_ratio=1.0) for p in points]
+    chains = {}
+    for i, key in enumerate(keys):
+        chains.setdefault(dataclasses.replace(key, drop_height=None, impact_velocity=None), []).append(i)
+    scale = float(np.max(V_s))
+    runs = 0
+    for _ in range(v.count("max_iterations", max_iterations, 1)):
+        rows = sweep([dataclasses.replace(p, m_eff_ratio=rho_k) for p in points], max_workers=0)
+        runs += len(points)
+        F_k = np.array([row["peak_force_near_N"] for row in rows], dtype=float)
+        V_k = np.array([row["wave_speed_m_s"] for row in rows], dtype=float)
+        if not np.all(np.isfinite(F_k) & np.isfinite(V_k)):
+            raise FitError(f"the lattice at m_eff/m0 = {rho_k:.6g} gives no wave speed for some pairs (no pulse "
+                           "between the sensors): check the pairs' chains and impacts")  # fmt: skip
+        at_rho_k = np.empty_like(V_s)
+        for members in chains.values():
+            index = np.array(members)
+            at_rho_k[index] = _loglog(F_m[index], F_k[index], V_k[index], float((n[index[0]] - 1) / (2 * n[index[0]])))
+        params = lmfit.Parameters()
+        params.add("m_eff_ratio", value=rho_k * float(np.sum(at_rho_k * V_s) / np.sum(at_rho_k**2)) ** -2, min=0.0)
+
+        def speeds(p, at_rho_k=at_rho_k, rho_k=rho_k):
+            return at_rho_k * np.sqrt(rho_k / p["m_eff_ratio"].value)
+
+        out = minimize(lambda p, speeds=speeds: speeds(p) - V_s, params, residual_scale=scale, max_nfev=max_nfev)
+        rho = float(out.params["m_eff_ratio"].value)
+        if abs(min(rho, 1.0) / rho_k - 1.0) < 1e-7:
+            break
+        rho_k = min(rho, 1.0)
+    else:
+        raise FitError(f"the lattice fit did not settle in {max_iterations} rounds of runs (last m_eff/m0 = {rho:.6g})")
+    floor = (2.0 * LATTICE_SPEED_RESOLUTION * rho) ** 2  # V ~ rho^(-1/2): a relative speed error e moves rho by 2e
+    covariance = np.array([[float(out.covar[0, 0]) + floor]]) if out.covar is not None else None
+    spread = float(np.sum(np.square(V_s - V_s.mean())))
+    bias = eq8 / rho - 1.0
+    note = (f"the Eq. (8) route on these pairs gives m_eff/m0 = {eq8:.4g}, {100 * bias:+.2f} % off the lattice's "
+            f"{rho:.4g} (the pulse between the sensors is not the fully formed wave of Eq. (8))")  # fmt: skip
+    return result_from_lmfit("speed-amplitude (lattice)", out, ["m_eff_ratio"], speeds(out.params) - V_s,
+                             spread=spread if spread > 0 else math.inf, resolution=ANALYTIC_RESOLUTION,
+                             covariance=covariance, fixed={"eq8_m_eff_ratio": eq8, "eq8_bias": bias},
+                             data_scale=scale, notes=(note,), n_forward_runs=runs,
+                             n_batches=runs // len(points))  # fmt: skip

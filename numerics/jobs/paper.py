@@ -39,6 +39,7 @@ import numpy as np
 from ringchain.theory import Ring, n_per_mm_to_si, paper_data, series_stiffness_for_power_law
 from ringchain.theory import _validate as v
 
+from ..engine._files import save_figure
 from ..engine.plots import new_figure
 from ..engine.results import Simulation
 from ..layouts.chain import MODELS, Chain, sensor_pair
@@ -453,7 +454,7 @@ def write_figures(out, runs) -> list[Path]:
 
     def save(fig, name):
         path = out / name
-        fig.savefig(path, dpi=120)
+        save_figure(fig, path, dpi=120)
         written.append(path)
 
     # n against R/r (Sec. IV.A).

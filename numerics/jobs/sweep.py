@@ -44,6 +44,7 @@ from ringchain.theory import PAPER_TUBE_RADIUS, Ring, impact_speed, paper_data
 from ringchain.theory import _validate as v
 
 from ..engine import signals
+from ..engine._files import write_text
 from ..engine.executors import InlineExecutor, run_tasks
 from ..engine.integrate import DEFAULT_MAX_SECONDS, RunTooLargeError, estimate_run, format_duration, simulate_batch
 from ..layouts.chain import MODELS, Chain, default_t_end, sensor_pair, striker_convention
@@ -591,8 +592,7 @@ def write_csv(rows: Iterable[dict], file=None) -> str | None:
     if hasattr(file, "write"):
         file.write(text)
     else:
-        with open(file, "w", newline="") as handle:
-            handle.write(text)
+        write_text(file, text)  # whole or not at all
     return None
 
 

@@ -86,6 +86,7 @@ import functools
 import numpy as np
 from ringchain.theory import (
     DEFAULT_FORCE_WINDOW,
+    MATERIALS,
     STANDARD_GRAVITY,
     Ring,
     fit_power_law,
@@ -95,6 +96,7 @@ from ringchain.theory import (
 from ringchain.theory import _validate as v
 from ringchain.theory.sheet import FAMILY_NAMES, PATTERNS
 
+from ..engine.integrate import check_model_size
 from ..engine.laws import PowerLaw
 from ..engine.network import ANCHOR, Links, Network
 from .sheet_runs import SheetBatch
@@ -161,7 +163,12 @@ def contact_law(ring_a: Ring, ring_b: Ring | None = None, angle=None, window=DEF
 
 
 def _per_family(name, value, families, check, unit):
-    """One value per family: a tuple gives them in the family order, anything else is shared."""
+    """One value per family: a sequence (tuple, list, array) gives them in the family order, a number is shared."""
+    if not isinstance(value, str) and np.ndim(value) == 1:
+        value = tuple(np.asarray(value, dtype=object).tolist())
+    elif np.ndim(value) > 1:
+        raise ValueError(f"{name} is one value or one per link family ({', '.join(families)}), got shape "
+                         f"{np.shape(value)}")  # fmt: skip
     if isinstance(value, tuple):
         if len(value) != len(families):
             raise ValueError(f"{name} is one value or a tuple of {len(families)} (one per link family: "
@@ -172,6 +179,30 @@ def _per_family(name, value, families, check, unit):
 
 def _angle(name, value, unit):
     return v.in_range(name, value, 0.0, np.pi / 2)
+
+
+#: Bytes per ring at the peak of building a sheet's network (positions, links, laws, rest geometry; measured with
+#: tracemalloc: 510 for a square and 700 for a triangular sheet of 100x100, tests/numerics/test_sheet_estimate.py):
+#: a sheet that cannot fit is refused before it is built.
+_BYTES_PER_SITE = 1000
+
+#: Largest relative difference between a link's length and the spacing 2(R - r) of its rings (plus its static
+#: extension) that :meth:`Sheet.from_links` accepts: positions in millimetres are 1000 times too far apart.
+LINK_LENGTH_TOLERANCE = 0.5
+
+
+def _check_link_lengths(positions, pairs, anchor_points, per_site):
+    """Refuse links whose length is far from 2(R - r) (positions in mm, not m), or of zero length."""
+    far = np.where((pairs[:, 1] == ANCHOR)[:, None], anchor_points, positions[np.where(pairs[:, 1] == ANCHOR, 0,
+                                                                                         pairs[:, 1])])  # fmt: skip
+    length = np.hypot(*(far - positions[pairs[:, 0]]).T)
+    spacing = np.array([per_site[i].spacing for i in pairs[:, 0]])
+    ratio = length / spacing
+    worst = int(np.argmax(np.abs(np.log(np.maximum(ratio, 1e-300)))))
+    if not abs(ratio[worst] - 1.0) <= LINK_LENGTH_TOLERANCE:
+        raise ValueError(f"links[{worst}] is {length[worst]:.4g} m long, {ratio[worst]:.3g} times the spacing "
+                         f"2(R - r) = {spacing[worst]:.4g} m of its rings: positions are in m (not mm), and "
+                         "linked rings lie about 2(R - r) apart")  # fmt: skip
 
 
 class _Lattice:
@@ -242,7 +273,7 @@ class Sheet:
 
     def __init__(self, network, *, family, family_names, K, n, m, m_gravity, pattern=None, shape=None,
                  hanging=False, boundary="clamped", pretension=None, tensions=None, support_links=None,
-                 edges=None):  # fmt: skip
+                 edges=None, ring=None, m_eff_ratio=1.0, gamma=0.0, link_angle=None):  # fmt: skip
         self._network = network
         self.pattern, self.shape = pattern, shape
         self.link_family, self.family_names = family, tuple(family_names)
@@ -251,6 +282,7 @@ class Sheet:
         self.static_tension_links = tensions
         self._support = support_links
         self._edges = edges
+        self.ring, self.m_eff_ratio, self.gamma, self.link_angle = ring, m_eff_ratio, gamma, link_angle
         self.struck_sites, self._field = np.zeros(0, dtype=np.intp), np.zeros((network.n_sites, 2))
 
     # -- constructors --------------------------------------------------------------------------------
@@ -284,7 +316,8 @@ class Sheet:
         gamma : float, optional
             Contact dashpot, N s/m, inside each contact's bracket (Eq. (7)).
         struck : str, sequence of int or array_like, optional
-            What the impact sets moving (module notes); default "bottom".
+            What the impact sets moving (module notes); default "bottom" (nothing, for a sheet periodic along
+            y, which has no bottom edge: strike sites with ``impact_direction`` or give a velocity field).
         impact_direction : float or (float, float), optional
             Direction of the struck sites' velocity, rad from x or a vector; default the outward normal of
             their edge.
@@ -321,13 +354,14 @@ class Sheet:
 
     @classmethod
     def _grid(cls, pattern, rows, cols, ring, *, model="power-law", angle=None, m_eff_ratio=1.0, hanging=False,
-              pretension=None, boundary=None, gamma=0.0, struck="bottom", impact_direction=None,
+              pretension=None, boundary=None, gamma=0.0, struck=None, impact_direction=None,
               window=DEFAULT_FORCE_WINDOW):  # fmt: skip
         if not isinstance(ring, Ring):
             raise TypeError(f"ring must be a ringchain.theory.Ring, got {type(ring).__name__}")
         ring.check_chain()
         _model(model)
         rows, cols = v.count("rows", rows, 2), v.count("cols", cols, 2)
+        check_model_size(rows * cols, _BYTES_PER_SITE, f"the {rows}x{cols} sheet's network")
         hanging = v.flag("hanging", hanging)
         names = FAMILY_NAMES[pattern]
         ratio = float(v.in_range("m_eff_ratio", m_eff_ratio, 0.0, 1.0))
@@ -395,10 +429,13 @@ class Sheet:
                           positions=positions)  # fmt: skip
         edges = {"bottom": np.flatnonzero(r == 0), "top": np.flatnonzero(r == rows - 1),
                  "left": np.flatnonzero(c == 0), "right": np.flatnonzero(c == cols - 1)}  # fmt: skip
+        if struck is None:
+            struck = () if wrap_y else "bottom"
         sheet = cls(network, family=fam, family_names=names, K=K_f[fam], n=n_f[fam], m=ratio * m0,
                     m_gravity=m0 if hanging else 0.0, pattern=pattern, shape=(rows, cols), hanging=hanging,
                     boundary=boundary, pretension=tensions, support_links=np.flatnonzero(support),
-                    tensions=None if hanging else np.asarray(tensions)[fam], edges=edges)  # fmt: skip
+                    tensions=None if hanging else np.asarray(tensions)[fam], edges=edges, ring=ring,
+                    m_eff_ratio=ratio, gamma=gamma, link_angle=np.asarray(angles)[fam])  # fmt: skip
         return sheet.struck_at(struck, impact_direction)
 
     @classmethod
@@ -441,6 +478,13 @@ class Sheet:
         if pairs.ndim != 2 or pairs.shape[1] != 2 or pairs.dtype.kind not in "iu" or pairs.shape[0] < 1:
             raise ValueError(f"links must be an integer array of site pairs, shape (n_links, 2), got {pairs.shape}")
         L = pairs.shape[0]
+        bad = np.flatnonzero((pairs[:, 0] < 0) | (pairs[:, 0] >= S) | (pairs[:, 1] < ANCHOR) | (pairs[:, 1] >= S))
+        if bad.size:
+            raise ValueError(f"links[{bad[0]}] = {pairs[bad[0]].tolist()} names a site outside 0..{S - 1} (-1: a fixed "
+                             "point)")  # fmt: skip
+        same = np.flatnonzero(pairs[:, 0] == pairs[:, 1])
+        if same.size:
+            raise ValueError(f"links[{same[0]}] = {pairs[same[0]].tolist()} joins a site to itself")
         per_site = [rings] * S if isinstance(rings, Ring) else list(rings)
         if len(per_site) != S or not all(isinstance(ring, Ring) for ring in per_site):
             raise ValueError(f"rings must be one Ring or {S} Rings (one per site)")
@@ -449,6 +493,7 @@ class Sheet:
             raise ValueError("anchored links (second site -1) need their fixed points: give anchors")
         anchor_points = np.zeros((L, 2)) if anchors is None else np.broadcast_to(v.as_float("anchors", anchors),
                                                                                  (L, 2))  # fmt: skip
+        _check_link_lengths(positions, pairs, anchor_points, per_site)
         angles = np.broadcast_to(v.in_range("angle", per_site[0].angle if angle is None else angle, 0.0, np.pi / 2),
                                  (L,))  # fmt: skip
         laws = {}
@@ -480,8 +525,60 @@ class Sheet:
                  "right": np.flatnonzero(positions[:, 0] >= hi[0] - tol)}  # fmt: skip
         uniform = float(ratio * m0[0]) if np.ptp(m0) == 0 else ratio * m0
         sheet = cls(network, family=np.zeros(L, dtype=np.intp), family_names=("link",), K=K, n=n, m=uniform,
-                    m_gravity=0.0, boundary="clamped", pretension=None, tensions=T, edges=edges)  # fmt: skip
+                    m_gravity=0.0, boundary="clamped", pretension=None, tensions=T, edges=edges,
+                    ring=per_site[0] if all(ring == per_site[0] for ring in per_site) else None, m_eff_ratio=ratio,
+                    gamma=law.gamma, link_angle=np.array(angles, dtype=float))  # fmt: skip
         return sheet.struck_at(struck, impact_direction)
+
+    @classmethod
+    def from_run(cls, run) -> Sheet:
+        """The sheet that made a run, rebuilt from its file (:meth:`SheetSimulation.to_netcdf`).
+
+        Parameters
+        ----------
+        run : xarray.Dataset or str or path
+            What :func:`~ringchain.numerics.read_sheet_run` returns, or the file.
+
+        Returns
+        -------
+        Sheet
+            The same network (masses, links, laws, rest geometry), loads and impact field:
+            ``simulate(Sheet.from_run(run), **sheet_run_options(run))`` gives the run's numbers again.
+        """
+        from .sheet_runs import EDGE_NAMES, read_sheet_run
+
+        ds = run if hasattr(run, "attrs") else read_sheet_run(run)
+        attrs = ds.attrs
+
+        def values(name):
+            return np.asarray(ds[name].values)
+
+        K, n, gamma = values("link_K").astype(float), values("link_n").astype(float), float(attrs["gamma_N_s_m"])
+        links = Links(values("network_link_i").astype(np.intp), values("network_link_j").astype(np.intp),
+                      PowerLaw(K, n, gamma), anchor=values("link_anchor"), shift=values("link_shift"),
+                      prestretch=values("link_prestretch"))  # fmt: skip
+        mass, weight = values("site_mass").astype(float), values("site_weight_mass").astype(float)
+        network = Network(mass, [links], weight_mass=weight, dim=2, positions=values("site_position"))
+        pattern = None if attrs["pattern"] == "links" else str(attrs["pattern"])
+        hanging = bool(attrs["hanging"])
+        tension = values("link_static_tension").astype(float)
+        ring = None  # descriptive only: the network above carries every number the run used
+        if "R_m" in attrs:
+            mat = MATERIALS.get(str(attrs["material"]))
+            if mat is not None and (mat.E, mat.nu, mat.rho) == (attrs["E_Pa"], attrs["nu"], attrs["rho_kg_m3"]):
+                ring = Ring(float(attrs["R_m"]), float(attrs["r_m"]), material=mat,
+                            angle=float(attrs["ring_angle_rad"]), thin=bool(attrs["thin"]))  # fmt: skip
+        pretension = None if hanging or pattern is None else tuple(np.atleast_1d(attrs.get("pretension_N", 0.0)))
+        sheet = cls(network, family=values("network_link_family").astype(np.intp),
+                    family_names=tuple(str(attrs["families"]).split(", ")), K=K, n=n,
+                    m=float(mass[0]) if np.ptp(mass) == 0 else mass, m_gravity=float(np.max(weight)), pattern=pattern,
+                    shape=(int(attrs["rows"]), int(attrs["cols"])) if "rows" in attrs else None, hanging=hanging,
+                    boundary=str(attrs["boundary"]), pretension=pretension, tensions=None if hanging else tension,
+                    support_links=np.atleast_1d(attrs["support_links"]).astype(np.intp),
+                    edges={name: np.atleast_1d(attrs[f"edge_{name}"]).astype(np.intp) for name in EDGE_NAMES},
+                    ring=ring, m_eff_ratio=float(attrs["m_eff_ratio"]), gamma=gamma,
+                    link_angle=values("link_angle").astype(float))  # fmt: skip
+        return sheet.struck_at(values("impact_field").astype(float))
 
     # -- the layout ----------------------------------------------------------------------------------
     def network(self) -> Network:
@@ -544,6 +641,7 @@ class Sheet:
         S = self.n_sites
         field = np.zeros((S, 2))
         if isinstance(struck, str):
+            self._check_edge(struck)
             sites = self.edge(struck)
             if impact_direction is None:
                 impact_direction = EDGES[struck]
@@ -564,10 +662,17 @@ class Sheet:
                 on = [name for name in EDGES if np.all(np.isin(sites, self._edges[name]))]
                 if not on:
                     raise ValueError("the struck sites lie on no single edge: give impact_direction (rad, or a vector)")
+                if len(on) > 1:
+                    raise ValueError(f"the struck sites lie on the {' and '.join(on)} edges (a corner): give "
+                                     "impact_direction (rad, or a vector)")  # fmt: skip
+                self._check_edge(on[0])
                 impact_direction = EDGES[on[0]]
         if sites.size:
             direction = np.asarray(v.as_float("impact_direction", impact_direction), dtype=float)
             if direction.ndim == 0:
+                if not abs(float(direction)) <= 2 * np.pi:
+                    raise ValueError(f"impact_direction is an angle in rad, at most 2 pi in size, got "
+                                     f"{float(direction):g} (degrees? give np.radians of them)")  # fmt: skip
                 direction = np.array([np.cos(direction), np.sin(direction)])
             if direction.shape != (2,) or not np.any(direction):
                 raise ValueError(f"impact_direction must be an angle (rad) or a non-zero 2-vector, got {direction!r}")
@@ -575,6 +680,15 @@ class Sheet:
         out = copy.copy(self)
         out.struck_sites, out._field = sites, field
         return out
+
+    def _check_edge(self, name):
+        """Refuse an edge a periodic direction joins to the opposite one (it has no outward normal)."""
+        wraps = self.boundary == "periodic" and (name in ("left", "right") or not self.hanging)
+        if wraps:
+            lines = "columns" if name in ("left", "right") else "rows"
+            raise ValueError(f"a periodic sheet has no {name} edge (its {lines} "
+                             "wrap around, linking it to the opposite one): strike sites with impact_direction (rad), "
+                             "or give a velocity field")  # fmt: skip
 
     @property
     def impact_field(self) -> np.ndarray:
@@ -663,6 +777,12 @@ class Sheet:
 
     def impact_state(self, speeds, dropped, gravity, g):
         """Displacements and velocities of B runs at t = 0 (module notes); ``speeds`` validated (m/s)."""
+        if not np.any(self._field) or not np.any(speeds):
+            raise ValueError("nothing sets the sheet moving: give struck sites (struck=...; none are struck) and an "
+                             "impact_velocity (m/s) or a drop_height (m) above 0, or an initial state"
+                             if not np.any(self._field) else
+                             "nothing sets the sheet moving: give an impact_velocity (m/s) or a drop_height (m) above "
+                             "0, or an initial state")  # fmt: skip
         if dropped:
             if not self.hanging:
                 raise ValueError("a drop (drop_height) needs a hanging sheet: give impact_velocity to a sheet lying "

@@ -11,15 +11,24 @@ r"""What a sheet's run returns, its fields in NetCDF files, and maps of its link
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 from ringchain.theory import _validate as v
 
+from ..engine._files import replacing, save_figure
 from ..engine.results import NetworkSimulation
 
-__all__ = ["SheetSimulation", "SheetBatch", "read_sheet_run", "draw_link_forces", "write_force_frames"]
+__all__ = [
+    "SheetSimulation",
+    "SheetBatch",
+    "read_sheet_run",
+    "sheet_run_options",
+    "draw_link_forces",
+    "write_force_frames",
+]
 
 
 @dataclass(frozen=True, eq=False)
@@ -87,12 +96,16 @@ class SheetSimulation(NetworkSimulation):
             attrs["pretension_N"] = np.asarray(sheet.pretension, dtype=float)
         if self.drop_height is not None:
             attrs["drop_height_m"] = float(np.max(self.drop_height))
+        data.update(_network_variables(sheet, net))
+        attrs.update(_inputs(sheet, self.stats))
         return xr.Dataset(data, coords=coords, attrs=attrs)
 
     def to_netcdf(self, path, every: int = 1) -> None:
         """Write :meth:`to_dataset` to a NetCDF file (NetCDF-4 through h5netcdf; read it with
         :func:`read_sheet_run` or ``xarray.open_dataset``)."""
-        self.to_dataset(every).to_netcdf(path, engine="h5netcdf")
+        dataset = self.to_dataset(every)
+        with replacing(path) as tmp:  # whole or not at all: an interrupt leaves the previous file
+            dataset.to_netcdf(tmp, engine="h5netcdf")
 
 
 @dataclass(frozen=True, eq=False)
@@ -111,11 +124,92 @@ class SheetBatch(SheetSimulation):
         )  # fmt: skip
 
 
+def _network_variables(sheet, net) -> dict:
+    """Every input of the sheet's network, on dimensions of its own (all sites, all links), SI units.
+
+    With these, :meth:`~ringchain.numerics.Sheet.from_run` rebuilds the very network that ran, whatever
+    part of it the run recorded.
+    """
+    both, one = ("network_site", "component"), ("network_link",)
+    links = ("network_link", "component")
+    return {
+        "site_mass": (("network_site",), np.broadcast_to(net.mass, (net.n_sites,)),
+                      {"units": "kg", "long_name": "inertial mass of each ring (m_eff)"}),
+        "site_weight_mass": (("network_site",), np.broadcast_to(net.weight_mass, (net.n_sites,)),
+                             {"units": "kg", "long_name": "mass gravity acts on (m0 hanging, 0 lying flat)"}),
+        "site_position": (both, net.positions, {"units": "m", "long_name": "rest position of every ring centre"}),
+        "impact_field": (both, sheet.impact_field, {"units": "1", "long_name": "velocity per unit impact speed"}),
+        "network_link_i": (one, net.i),
+        "network_link_j": (one, net.j, {"long_name": "far site, -1 for a fixed point"}),
+        "network_link_family": (one, np.asarray(sheet.link_family)),
+        "link_K": (one, np.broadcast_to(sheet.K, (net.n_links,)), {"units": "N/m^n", "long_name": "Eq. (4) K"}),
+        "link_n": (one, np.broadcast_to(sheet.n, (net.n_links,)), {"units": "1", "long_name": "Eq. (4) n"}),
+        "link_gamma": (one, np.broadcast_to(sheet.gamma, (net.n_links,)), {"units": "N s/m"}),
+        "link_angle": (one, np.broadcast_to(sheet.link_angle, (net.n_links,)),
+                       {"units": "rad", "long_name": "angle between the planes of the two rings"}),
+        "link_prestretch": (one, net.prestretch, {"units": "m"}),
+        "link_static_tension": (one, sheet.static_tension(0.0) if not sheet.hanging else np.zeros(net.n_links),
+                                {"units": "N", "long_name": "pretension of each link (0 for a hanging sheet)"}),
+        "link_anchor": (links, net.anchor_positions, {"units": "m", "long_name": "fixed point of anchored links"}),
+        "link_shift": (links, net.shifts, {"units": "m", "long_name": "periodic image offset of the far site"}),
+    }  # fmt: skip
+
+
+def _inputs(sheet, stats) -> dict:
+    """The sheet's other inputs and the integrator's settings, as NetCDF attributes (SI units in the names)."""
+    attrs = {"m_eff_ratio": float(sheet.m_eff_ratio), "gamma_N_s_m": float(sheet.gamma),
+             "struck_sites": np.asarray(sheet.struck_sites, dtype=np.int64),
+             "support_links": np.asarray(sheet.support_links, dtype=np.int64)}  # fmt: skip
+    for name in EDGE_NAMES:
+        attrs[f"edge_{name}"] = np.asarray(sheet.edge(name), dtype=np.int64)
+    if sheet.ring is not None:
+        ring = sheet.ring
+        mat = ring.material
+        attrs.update(R_m=float(ring.R), r_m=float(ring.r), material=str(mat.name), E_Pa=float(mat.E), nu=float(mat.nu),
+                     rho_kg_m3=float(mat.rho), ring_angle_rad=float(ring.angle), thin=int(ring.thin))  # fmt: skip
+    for key in ("rtol", "atol", "dt"):
+        if stats.get(key) is not None:
+            attrs[key] = float(stats[key])
+    return attrs
+
+
+#: The edges of a sheet (the order of :data:`ringchain.numerics.layouts.sheet.EDGES`).
+EDGE_NAMES = ("bottom", "top", "left", "right")
+
+#: What every file of :meth:`SheetSimulation.to_netcdf` holds; a file without one of them is refused.
+_REQUIRED = ("displacement", "velocity", "link_force", "link_K", "link_n", "site_mass", "impact_field")
+
+
 def read_sheet_run(path):
-    """A sheet's run written by :meth:`SheetSimulation.to_netcdf`, as an :class:`xarray.Dataset` (loaded)."""
+    """A sheet's run written by :meth:`SheetSimulation.to_netcdf`, as an :class:`xarray.Dataset` (loaded).
+
+    Raises
+    ------
+    DataError
+        (a ValueError) naming the file, if it is not a NetCDF-4 file, was not written by
+        :meth:`SheetSimulation.to_netcdf`, or lacks a field or an input the run wrote (an incomplete file).
+    """
     import xarray as xr
 
-    return xr.load_dataset(path, engine="h5netcdf")
+    from ..engine.traces import DataError
+
+    try:
+        dataset = xr.load_dataset(path, engine="h5netcdf")
+    except (OSError, ValueError, KeyError, TypeError) as exc:  # h5py's OSError does not name the file
+        raise DataError(f"not a sheet's run: it cannot be read as a NetCDF-4 file ({' '.join(str(exc).split())})",
+                        path=path) from None  # fmt: skip
+    if dataset.attrs.get("created_by") != "ringchain.numerics.layouts.sheet":
+        raise DataError("not a sheet's run written by ringchain (SheetSimulation.to_netcdf): no created_by", path=path)
+    missing = [name for name in _REQUIRED if name not in dataset]
+    if "site" in dataset.dims and dataset.sizes["site"] == dataset.sizes.get("network_site"):
+        missing += [f"energy_{k}" for k in ("kinetic", "contact", "gravity", "dissipated") if f"energy_{k}" not in
+                    dataset]  # fmt: skip
+    if missing:
+        raise DataError(f"an incomplete sheet's run: {', '.join(missing)} missing (write it again)", path=path)
+    for name in ("displacement", "velocity", "link_force"):
+        if dataset[name].size and not np.isfinite(dataset[name].values).any():
+            raise DataError(f"an incomplete sheet's run: {name} holds no number (write it again)", path=path)
+    return dataset
 
 
 def draw_link_forces(ax, sheet, forces, *, norm=None, cmap="magma", linewidth=2.0, links=None):
@@ -160,7 +254,8 @@ def write_force_frames(run: SheetSimulation, folder, count: int = 6, *, dpi: int
     """Maps of the link forces of one run at ``count`` evenly spaced times, one PNG each, into ``folder``.
 
     One colour scale (0 to the largest force of the run) for every frame.  Returns the paths written
-    (``frame_000.png``, ...); the folder is created if needed.
+    (``frame_000.png``, ...); the folder is created if needed, and frames of an earlier run beyond ``count``
+    (``frame_NNN.png``) are removed, so that the folder holds this run's maps only.
     """
     from matplotlib.colors import Normalize
 
@@ -181,6 +276,41 @@ def write_force_frames(run: SheetSimulation, folder, count: int = 6, *, dpi: int
         fig.colorbar(lines, ax=ax, label="link force (N)")
         ax.set(title=f"t = {run.t[index] * 1e3:.3g} ms", xlabel="x (m)", ylabel="y (m)")
         path = folder / f"frame_{k:03d}.png"
-        fig.savefig(path, dpi=dpi)
+        save_figure(fig, path, dpi=dpi)
         paths.append(path)
+    for stale in folder.glob("frame_*.png"):  # frames of an earlier, longer run: not of this one
+        if re.fullmatch(r"frame_\d{3,}\.png", stale.name) and stale not in paths:
+            stale.unlink()
     return paths
+
+
+def sheet_run_options(run) -> dict:
+    """The arguments of :func:`~ringchain.numerics.simulate` that made a sheet's run, from its file.
+
+    Parameters
+    ----------
+    run : xarray.Dataset or str or path
+        What :func:`read_sheet_run` returns, or the file.
+
+    Returns
+    -------
+    dict
+        ``t_end`` (s), ``t_eval`` (s, the samples the file kept), ``impact_velocity`` (m/s) or ``drop_height``
+        (m), ``gravity``, ``g`` (m/s^2), ``method`` and its ``rtol`` and ``atol`` (adaptive) or ``dt`` (s, Verlet):
+        ``simulate(Sheet.from_run(run), **sheet_run_options(run))`` runs it again to the same numbers.
+    """
+    dataset = run if hasattr(run, "attrs") else read_sheet_run(run)
+    attrs = dataset.attrs
+    t = np.asarray(dataset["time"].values, dtype=float)
+    options = {"t_end": float(t[-1]), "t_eval": t, "method": str(attrs["method"]) or None}
+    if options["method"] is None:
+        del options["method"]
+    g = float(attrs["g_m_s2"])
+    options.update(gravity=g > 0, **({"g": g} if g > 0 else {}))
+    if "drop_height_m" in attrs:
+        options["drop_height"] = float(attrs["drop_height_m"])
+    else:
+        options["impact_velocity"] = float(attrs["impact_velocity_m_s"])
+    keys = ("dt",) if options.get("method") == "verlet" else ("rtol", "atol")
+    options.update({key: float(attrs[key]) for key in keys if key in attrs})
+    return options

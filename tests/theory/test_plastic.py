@@ -371,7 +371,10 @@ def test_impact_far_beyond_the_yield_speed_and_at_extreme_moduli():
     assert float(plastic_stiffness(R, r, stiff, NU, Y=215e6)) == pytest.approx(slope, rel=1e-11)
     # Where delta_y itself leaves the doubles the contact functions say so instead of answering 0 or refusing e.
     with pytest.raises(ValueError, match=r"approach at first yield, delta_y = 0\.0 m, lies below the normal range"):
-        restitution_coefficient(DROP, R, r, E, NU, Y=1e-150, m=m)
+        restitution_coefficient(DROP, R, r, 1e300, NU, Y=215e6, m=m)  # delta_y ~ (Y/E)^2: 4e-584 m
+    # A yield strength in MPa read as Pa (issue 31, item 4) is refused, naming the unit.
+    with pytest.raises(ValueError, match=r"Y = 215 Pa is below 1 MPa"):
+        restitution_coefficient(DROP, R, r, E, NU, Y=215, m=m)
 
 
 # --- inputs --------------------------------------------------------------------------------------------------

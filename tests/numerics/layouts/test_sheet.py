@@ -35,6 +35,19 @@ def test_square_layout_sites_edges_and_links():
         (lambda: Sheet.square(3, 3, RING, pretension=(1.0, 2.0, 3.0)), "tuple of 2"),
         (lambda: Sheet.square(3, 3, RING, struck=[4]), "no single edge"),
         (lambda: Sheet.square(3, 3, RING, struck=[9]), "site indices in 0..8"),
+        # Issue 31, items 4 and 5: units and inputs refused with one line naming them.
+        (lambda: Sheet.square(3, 3, RING, struck=[1], impact_direction=90), "angle in rad, at most 2 pi"),
+        (lambda: Sheet.square(3, 3, RING, struck=[0]), "bottom and left edges \\(a corner\\)"),
+        (lambda: Sheet.square(4, 4, RING, pretension=1.0, boundary="periodic", struck="bottom"), "no bottom edge"),
+        (lambda: Sheet.square(4, 4, RING, hanging=True, boundary="periodic", struck="left"), "no left edge"),
+        (lambda: Sheet.square(3, 3, RING, pretension=[[1.0, 2.0]]), "one per link family"),
+        (lambda: Sheet.from_links([[0, 0], [0, 0]], [[0, 1]], RING), "0 m long"),
+        (lambda: Sheet.from_links([[0, 0], [RING.spacing, 0]], [[0, 5]], RING), "names a site outside 0..1"),
+        (lambda: Sheet.from_links([[0, 0], [RING.spacing, 0]], [[1, 1]], RING), "joins a site to itself"),
+        (
+            lambda: Sheet.from_links([[0, 0], [40.0, 0]], [[0, 1]], RING),
+            "1e\\+03 times the spacing .* in m \\(not mm\\)",
+        ),
     ],
 )
 def test_bad_sheets_are_refused_with_a_reason(build, message):
@@ -133,6 +146,11 @@ def theory_parameters(sheet):
 def test_dispersion_equals_the_eigenvalues_of_the_linearised_sheet(pattern):
     build = Sheet.square if pattern == "square" else Sheet.triangular
     sheet = build(6, 5, RING, pretension=3.0, boundary="periodic", m_eff_ratio=0.37)
+    # The tension the dispersion is evaluated at is the 3 N asked for, from outside the network (issue 31, item 9:
+    # with the pretension's sign flipped the prestretch read back from the network gave T = 0 on both sides).
+    K, n = sheet.K[0], sheet.n[0]
+    assert sheet.network().prestretch[0] == pytest.approx((3.0 / K) ** (1.0 / n), rel=1e-12)  # K delta^n = T
+    assert theory_parameters(sheet)["T"] == pytest.approx(3.0, rel=1e-12)
     H = hessian(sheet)
     # The Hessian assembled from the links is the network's: minus the mass times d(acceleration)/dx, central
     # differences of 1e-10 m (error ~ h^2 of the third derivative plus rounding eps F/h: 1e-6 of the largest entry).
@@ -302,3 +320,18 @@ def test_records_of_some_sites_give_the_forces_of_their_links(tmp_path):
     assert np.array_equal(data["displacement"].values, full.displacement[::2])
     assert data["link_force"].attrs["units"] == "N" and data["time"].values[1] == full.t[2]
     assert np.array_equal(data["energy_kinetic"].values, full.energy().kinetic[::2])
+
+
+@pytest.mark.parametrize("tension", [[1.0, 2.0], np.array([1.0, 2.0]), (1.0, 2.0)])
+def test_a_pretension_per_family_may_be_any_sequence(tension):
+    sheet = Sheet.square(3, 4, RING, pretension=tension)
+    assert sheet.pretension == (1.0, 2.0)
+    assert np.allclose(sheet.static_tension()[sheet.link_family == 1], 2.0, rtol=1e-15)
+
+
+def test_a_sheet_at_rest_is_refused():
+    with pytest.raises(ValueError, match="none are struck"):
+        simulate(Sheet.square(3, 3, RING, pretension=1.0, struck=()), 1e-4, impact_velocity=0.5)
+    with pytest.raises(ValueError, match="give an impact_velocity"):
+        simulate(Sheet.square(3, 3, RING, pretension=1.0, struck=[1]), 1e-4)
+    assert Sheet.square(4, 4, RING, pretension=1.0, boundary="periodic").struck_sites.size == 0  # nothing by default

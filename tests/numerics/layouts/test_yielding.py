@@ -43,7 +43,9 @@ def test_integrated_collision_gives_thorntons_restitution(ratio):
     assert e == pytest.approx(expected, rel=1e-6)
     # The memory is the true largest approach: a trial stage or a rejected step writing it would leave it at the
     # stage's overshoot; the memory read at the peak of the step is fourth order, 1e-8 relative here.
-    assert sim.memory[-1, 0] == pytest.approx(largest_approach(ratio), rel=1e-8)
+    # abs=0: pytest's default abs of 1e-12 m would make this a 1.7e-6 check on 5.7e-7 m (issue 31, item 9); 2e-6
+    # relative is what the former check guaranteed at the smallest approach, now at every one.
+    assert sim.memory[-1, 0] == pytest.approx(largest_approach(ratio), rel=2e-6, abs=0)
     # The plastic work is the energy lost, (1 - e^2) of the impact's m V^2/2 with m = M0/2.
     budget = sim.energy()
     assert budget.plastic[-1] == pytest.approx((1 - e**2) * 0.25 * M0 * V**2, rel=1e-6)  # integration, as above
@@ -192,3 +194,87 @@ def test_from_rings_takes_a_yield_strength_per_ring():
     assert chain.delta_y[0] == pytest.approx(DELTA_Y, rel=1e-9)  # the same first_yield, other rounding
     assert chain.delta_y[-1] == pytest.approx(16 * DELTA_Y, rel=1e-9)  # the same, times (4 Y / Y)^2
     assert chain.delta_y[1] == pytest.approx(DELTA_Y, rel=1e-9)  # rings 1 (Y) and 2 (4 Y): the softer
+
+
+# -- issue 31, item 9: tests whose expected values do not come from the code under test -----------------------------
+def test_first_yield_is_johnsons_1_60_Y_for_the_paper_contact():
+    """The crossed tori of the paper (90 deg) touch in a circle: Johnson's Contact Mechanics, Sec. 4.2, gives first
+    yield below the surface at p0 = 1.60 Y (nu = 0.3; the maximum of sqrt(J2) on the axis at z = 0.48 a).  The Hertz
+    formulas of a circle, typed here: effective radius R_e = r(R - r)/(R - 2r) (the curvature sums of App. A),
+    E* = E/(2(1 - nu^2)) for two equal bodies, a = pi p0 R_e/(2 E*), delta = a^2/R_e, F = 2 p0 pi a^2/3."""
+    nu = 0.3
+    R_e = r * (R - r) / (R - 2 * r)
+    E_star = E / (2 * (1 - nu**2))
+    p0 = 1.60 * Y
+    a = np.pi * p0 * R_e / (2 * E_star)
+    delta_hand, force_hand = a**2 / R_e, 2 * np.pi * a**2 * p0 / 3
+    yielded = theory.first_yield(R, r, E, nu, Y=Y)
+    # Johnson's 1.60 has three digits (the exact maximum is 1.61 at nu = 0.3): p0 to 1 %, delta ~ p0^2 to 2 %,
+    # F ~ p0^3 to 3 %; first yield at 1.0 Y instead would be 2.6 and 4.1 times off.
+    assert float(yielded.pressure) == pytest.approx(p0, rel=1e-2)
+    assert float(yielded.indentation) == pytest.approx(delta_hand, rel=2e-2)
+    assert float(yielded.force) == pytest.approx(force_hand, rel=3e-2)
+    # The engine's yielding chain takes its delta_y from there: the same hand number.
+    ring = theory.Ring(R, r, material=theory.Material("steel-0.3", E=E, nu=nu, rho=7900.0, source="this test"))
+    chain = Chain.from_rings([ring] * 3, yield_strength=Y)
+    assert np.ravel(chain.delta_y)[0] == pytest.approx(delta_hand, rel=2e-2)
+
+
+def test_compiled_hunt_crossley_never_pulls():
+    """Inside the kernel, where 1 + 3/2 alpha delta_dot < 0 (a contact opening fast), the force is 0, not a pull; where
+    it is positive, K delta^n (1 + 3/2 alpha delta_dot) as Hunt and Crossley write it (typed here)."""
+    K, alpha, delta = K_C, 0.3, 1e-6
+    net = Network([M0, M0], [(0, 1, HuntCrossley(K, alpha=alpha))])
+    packed = kernels.pack(net)
+    for rate, bracket in ((-10.0, 0.0), (-1.0, 1 - 1.5 * 0.3), (2.0, 1 + 1.5 * 0.3 * 2)):
+        a = kernels.accelerations(packed, np.array([0.0, delta]), np.array([0.0, rate]), g=0.0)
+        force = K * delta**1.5 * bracket
+        assert a == pytest.approx([force / M0, -force / M0], rel=1e-13, abs=0)  # one evaluation, rounding
+
+
+def test_a_loss_factor_spring_decays_as_its_loss_factor_says():
+    """Free oscillation of two masses on loss_factor_spring(K, eta, omega) at its own omega = sqrt(K/mu): the
+    amplitude decays as exp(-gamma t/(2 mu)) = exp(-pi eta) per period (gamma = eta K/omega: a second method,
+    the equation of a damped oscillator solved by hand)."""
+    K, eta, mass = 3.3e6, 2e-3, M0
+    mu = mass / 2
+    omega = np.sqrt(K / mu)
+    net = Network([mass, mass], [(0, 1, loss_factor_spring(K, eta=eta, omega=omega))])
+    periods = 20
+    t = np.linspace(0.0, periods * 2 * np.pi / omega, 4001)
+    sim = simulate(
+        net,
+        t[-1],
+        initial=(np.array([0.0, 1e-6]), np.zeros(2)),
+        gravity=False,
+        t_eval=t,
+        rtol=1e-11,
+        max_energy_drift=None,
+    )  # no impact energy to measure a drift by; the exact solution checks it
+    e = sim.x[:, 1] - sim.x[:, 0]
+    zeta = eta / 2  # gamma/(2 mu omega)
+    omega_d = omega * np.sqrt(1 - zeta**2)
+    exact = 1e-6 * np.exp(-zeta * omega * t) * (np.cos(omega_d * t) + zeta / np.sqrt(1 - zeta**2) * np.sin(omega_d * t))
+    # rtol 1e-11 over 20 periods: 1e-7 of the amplitude leaves room; a factor 2 in gamma moves e by 10 % at the end.
+    assert np.max(np.abs(e - exact)) < 1e-7 * 1e-6
+
+
+def test_verlet_is_second_order_on_a_harmonic_oscillator():
+    """Velocity Verlet's half steps make it second order: on x'' = -omega^2 x its phase error after time t is
+    (omega dt)^2 omega t/24 (the modified frequency 2 arcsin(omega dt/2)/dt, Hairer-Lubich-Wanner Sec. I.5).
+    Halving dt divides the error by 4; a method without the half step (first order) would divide it by 2."""
+    K, mass = 3.3e6, M0
+    omega = np.sqrt(K / (mass / 2))
+    net = Network([mass, mass], [(0, 1, LinearSpring(K))])
+    t_end = 5.25 * 2 * np.pi / omega  # cos(omega t) = 0: the phase error shows to first order
+    errors = []
+    for steps in (100, 200):
+        dt = 2 * np.pi / omega / steps
+        sim = simulate(net, t_end, initial=(np.array([0.0, 1e-6]), np.zeros(2)), gravity=False, method="verlet",
+                       dt=dt, n_samples=3, max_energy_drift=None)  # fmt: skip
+        e = sim.x[-1, 1] - sim.x[-1, 0]
+        dt = sim.stats["dt"]  # the step the kernel took (t_end a whole number of them)
+        modified = 2 * np.arcsin(omega * dt / 2) / dt  # the exact frequency of the Verlet map
+        assert e == pytest.approx(1e-6 * np.cos(modified * t_end), rel=0, abs=1e-9 * 1e-6)  # rounding of 1000 steps
+        errors.append(abs(e - 1e-6 * np.cos(omega * t_end)))
+    assert errors[0] / errors[1] == pytest.approx(4.0, rel=0.05)  # second order (the ratio of (dt)^2)
