@@ -1,0 +1,524 @@
+r"""Compiled kernels of rigid rings in space: the contacts of two tori in any pose and the force at a contact.
+
+Plain Numba functions on float arrays, for the inner loop of a simulation of rigid tori
+(:func:`ringchain.numerics.torus_contacts` is the Python face of the geometry, with the conventions).
+Everything here is in SI units; a ring's pose is its centre (3,) and a unit quaternion (w, x, y, z)
+taking its body frame to space, its axis being body z and its centre circle of radius R in the body
+xy plane, at the angle s from body x.
+
+The contact geometry.  Two tubes touch where the distance between their centre circles has a local
+minimum.  For the point of circle 1 at the angle s, written in the frame of ring 2 as (X, Y, Z)(s)
+(each a constant plus R_1 times a combination of cos s and sin s), the nearest point of circle 2 is
+R_2 (X, Y, 0)/rho with rho = sqrt(X^2 + Y^2), at the distance f(s) = sqrt((rho - R_2)^2 + Z^2).
+Every local minimum of the distance of the two circles is a local minimum of f (the distance from a
+point to a circle has one minimum on the circle), so the search is one-dimensional.  The kernels work
+with g = f^2/2, smooth wherever rho > 0 (also where the circles cross, f = 0), with its derivatives
+g' and g'' in closed form (:func:`_profile`).  Where circle 1 crosses the axis of circle 2 (rho = 0)
+g has a cusp that is a local maximum, never a minimum.
+
+- The cold search (:func:`pair_contacts`) samples g' at ``n_scan`` equally spaced angles; a minimum
+  lies where g' changes from negative to positive between two samples (a maximum, the cusp included,
+  only changes it the other way, and a sample within rounding of a zero cannot make a spurious pair of
+  changes).  Each bracket is refined by Newton's method safeguarded by bisection (``rtsafe``).  Two
+  minima are both found when each is more than one sample spacing 2 pi/n_scan from the maximum
+  between them; the default n_scan = 64 is justified in :mod:`ringchain.numerics.rings_contact`.
+- A pose where f is constant to rounding (g varies by less than 1e-12 of its scale over the scan:
+  coaxial rings, concentric or stacked) has a circle of contact, not isolated minima.  It is
+  returned as ``LINE_POINTS`` contacts at s = 0, pi/2, pi, 3 pi/2, flagged (field ``line`` = 1).
+- The warm-started search (:func:`pair_contacts_warm`) takes the angles s of the minima of the last
+  call and runs a few Newton iterations from each.  It falls back on the cold search when an iteration
+  fails to converge, meets g'' <= 0 (the minimum merged with a maximum, or split in two: theta_min
+  crossed), or two minima converge to one.  It cannot see a minimum that is born away from the ones it
+  tracks (a fold of f far from them): callers run the cold search every few steps (see
+  :mod:`ringchain.numerics.rings_contact`).
+
+One row of ``FIELDS`` numbers per minimum (named in ``CONTACT_FIELDS`` of the Python module):
+gap (m), s_1, s_2 (rad), the contact point (3, m: midway between the two tube surfaces along the
+normal), the unit normal (3, from ring 2 towards ring 1), the principal curvatures of tube 1 at the
+point (along the tube, signed, and across it, 1/r_1; 1/m, convex positive), the same for tube 2, the
+cosine of the angle between the two tube tangents (in [0, 1]), the distance f of the centre circles
+(m) and the line flag.
+
+The contact law (:func:`contact_force`): the normal force [K delta^n + gamma delta_dot]_+ from the
+approach delta = -gap (zero for an open contact), with K either given (the lumped power law of paper
+Eq. (4)) or the Hertz stiffness of the two surfaces' curvatures (:func:`hertz_stiffness_curvatures`,
+n = 3/2), and a regularised Coulomb friction mu F_n v_t/sqrt(|v_t|^2 + v_reg^2) opposing the slip
+v_t; the force acts at the contact point on ring 1 and its opposite on ring 2.
+
+The disk cache.  As :mod:`ringchain.numerics.kernels` (its folder, ``CACHE``): Numba keys a cached kernel
+on its own file, so the kernels that call one another all live in this module; a kernel of another
+module that calls these is not recompiled when they change (clear the cache after editing them).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+from .kernels import CACHE
+
+__all__ = [
+    "FIELDS",
+    "MAX_CONTACTS",
+    "LINE_POINTS",
+    "N_SCAN",
+    "LAW_PARAMETERS",
+    "rotation_matrix",
+    "pair_contacts",
+    "pair_contacts_warm",
+    "pairs_contacts",
+    "hertz_stiffness_curvatures",
+    "elliptical_factor_at",
+    "contact_force",
+]
+
+#: Numbers per contact row (see the module notes).
+FIELDS = 16
+#: Most minima returned for one pair (two circles have at most four local minima of their distance;
+#: a circle of contact is returned as ``LINE_POINTS`` rows).
+MAX_CONTACTS = 8
+#: Rows that stand for a circle of contact (coaxial rings).
+LINE_POINTS = 4
+#: Default number of samples of the cold search.
+N_SCAN = 64
+#: Parameters of a contact law (a row): kind (0 the Hertz stiffness of the curvatures, 1 a given K),
+#: K (N/m^n, kind 1), n, gamma (N s/m), mu, v_reg (m/s), E* (Pa, kind 0).
+LAW_PARAMETERS = 7
+
+_previous_cache_dir = numba.config.CACHE_DIR
+if CACHE is not None:
+    numba.config.CACHE_DIR = CACHE  # read when each kernel below is decorated; restored at the end of the module
+
+
+def _jit(**options):
+    return numba.njit(cache=CACHE is not None, error_model="numpy", **options)
+
+
+# -- poses ---------------------------------------------------------------------------------------------------
+@_jit()
+def rotation_matrix(q, out):
+    """Write into ``out`` (3, 3) the rotation of the quaternion q = (w, x, y, z) (body to space; columns are
+    the body axes in space).  q need not be exactly unit: the formula divides by |q|^2."""
+    w, x, y, z = q[0], q[1], q[2], q[3]
+    s = 2.0 / (w * w + x * x + y * y + z * z)
+    out[0, 0] = 1.0 - s * (y * y + z * z)
+    out[0, 1] = s * (x * y - w * z)
+    out[0, 2] = s * (x * z + w * y)
+    out[1, 0] = s * (x * y + w * z)
+    out[1, 1] = 1.0 - s * (x * x + z * z)
+    out[1, 2] = s * (y * z - w * x)
+    out[2, 0] = s * (x * z - w * y)
+    out[2, 1] = s * (y * z + w * x)
+    out[2, 2] = 1.0 - s * (x * x + y * y)
+
+
+@_jit()
+def _coefficients(c1, M1, c2, M2, k):
+    """k = [D, A, B] (9,): circle 1's centre, body x and body y in the frame of ring 2 (D relative to c2)."""
+    for i in range(3):
+        d = 0.0
+        a = 0.0
+        b = 0.0
+        for j in range(3):
+            d += M2[j, i] * (c1[j] - c2[j])
+            a += M2[j, i] * M1[j, 0]
+            b += M2[j, i] * M1[j, 1]
+        k[i] = d
+        k[3 + i] = a
+        k[6 + i] = b
+
+
+@_jit(inline="always")
+def _profile(k, R1, R2, C, S):
+    """(g, g', g'') of g(s) = f(s)^2/2 at cos s = C, sin s = S; on the axis of circle 2 (rho = 0), g' = 0 and
+    g'' = -inf (the cusp is a maximum)."""
+    X = k[0] + R1 * (k[3] * C + k[6] * S)
+    Y = k[1] + R1 * (k[4] * C + k[7] * S)
+    Z = k[2] + R1 * (k[5] * C + k[8] * S)
+    Xp = R1 * (k[6] * C - k[3] * S)
+    Yp = R1 * (k[7] * C - k[4] * S)
+    Zp = R1 * (k[8] * C - k[5] * S)
+    Xpp = k[0] - X
+    Ypp = k[1] - Y
+    Zpp = k[2] - Z
+    rho = math.sqrt(X * X + Y * Y)
+    e = rho - R2
+    g = 0.5 * (e * e + Z * Z)
+    if rho == 0.0:
+        return g, 0.0, -math.inf
+    rp = (X * Xp + Y * Yp) / rho
+    rpp = (Xp * Xp + Yp * Yp + X * Xpp + Y * Ypp - rp * rp) / rho
+    return g, e * rp + Z * Zp, rp * rp + e * rpp + Zp * Zp + Z * Zpp
+
+
+@_jit()
+def _refine(k, R1, R2, a, b, gp_a, gp_b):
+    """The zero of g' in [a, b] (g'(a) = gp_a < 0 <= g'(b) = gp_b) by Newton's method safeguarded by bisection,
+    started from the secant's zero; (s, iterations)."""
+    s = a + (b - a) * gp_a / (gp_a - gp_b)
+    step_old = b - a
+    step = step_old
+    for it in range(1, 101):
+        _, gp, gpp = _profile(k, R1, R2, math.cos(s), math.sin(s))
+        if gp == 0.0:
+            return s, it
+        if gp < 0.0:
+            a = s
+        else:
+            b = s
+        newton = gpp > 0.0 and abs(2.0 * gp) <= abs(step_old * gpp)
+        if newton:
+            trial = s - gp / gpp
+            newton = a < trial < b
+        step_old = step
+        if newton:
+            step = -gp / gpp
+            s = trial
+        else:
+            step = 0.5 * (b - a)
+            s = a + step
+        if abs(step) <= 1e-13 or b - a <= 1e-13:
+            return s, it
+    return s, 100
+
+
+@_jit()
+def _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, s, line, row):
+    """Write the contact row (module notes) of the minimum of circle 1 at the angle s."""
+    C = math.cos(s)
+    S = math.sin(s)
+    X = k[0] + R1 * (k[3] * C + k[6] * S)
+    Y = k[1] + R1 * (k[4] * C + k[7] * S)
+    Z = k[2] + R1 * (k[5] * C + k[8] * S)
+    rho = math.sqrt(X * X + Y * Y)
+    if rho > 0.0:
+        ux2, uy2 = X / rho, Y / rho
+    else:  # on the axis (a coaxial pose of zero radius cannot occur for R1 > 0): any direction
+        ux2, uy2 = 1.0, 0.0
+    e = rho - R2
+    f = math.sqrt(e * e + Z * Z)
+    # radial (u) and tangent (t) of both circles in space; the normal from circle 2 to circle 1
+    u1 = np.empty(3)
+    t1 = np.empty(3)
+    u2 = np.empty(3)
+    t2 = np.empty(3)
+    n = np.empty(3)
+    for i in range(3):
+        u1[i] = C * M1[i, 0] + S * M1[i, 1]
+        t1[i] = C * M1[i, 1] - S * M1[i, 0]
+        u2[i] = ux2 * M2[i, 0] + uy2 * M2[i, 1]
+        t2[i] = ux2 * M2[i, 1] - uy2 * M2[i, 0]
+        n[i] = e * u2[i] + Z * M2[i, 2]  # q1 - q2 in space
+    if f > 0.0:
+        for i in range(3):
+            n[i] /= f
+    else:  # the centre circles cross: the normal of both tangents (any sign), or the radial of circle 2
+        n[0] = t1[1] * t2[2] - t1[2] * t2[1]
+        n[1] = t1[2] * t2[0] - t1[0] * t2[2]
+        n[2] = t1[0] * t2[1] - t1[1] * t2[0]
+        norm = math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2])
+        for i in range(3):
+            n[i] = n[i] / norm if norm > 0.0 else u2[i]
+    row[0] = f - r1 - r2
+    row[1] = s % (2.0 * math.pi)
+    row[2] = math.atan2(uy2, ux2) % (2.0 * math.pi)
+    for i in range(3):
+        q1 = c1[i] + R1 * u1[i]
+        q2 = c2[i] + R2 * u2[i]
+        row[3 + i] = 0.5 * ((q1 - r1 * n[i]) + (q2 + r2 * n[i]))
+        row[6 + i] = n[i]
+    cos1 = -(n[0] * u1[0] + n[1] * u1[1] + n[2] * u1[2])  # outward normal of tube 1 is -n
+    cos2 = n[0] * u2[0] + n[1] * u2[1] + n[2] * u2[2]
+    row[9] = cos1 / (R1 + r1 * cos1)
+    row[10] = 1.0 / r1
+    row[11] = cos2 / (R2 + r2 * cos2)
+    row[12] = 1.0 / r2
+    row[13] = min(1.0, abs(t1[0] * t2[0] + t1[1] * t2[1] + t1[2] * t2[2]))
+    row[14] = f
+    row[15] = line
+
+
+@_jit()
+def _pose(c1, q1, c2, q2, M1, M2, k):
+    rotation_matrix(q1, M1)
+    rotation_matrix(q2, M2)
+    _coefficients(c1, M1, c2, M2, k)
+
+
+@_jit()
+def _scan(k, c1, M1, R1, r1, c2, M2, R2, r2, n_scan, out):
+    """The cold search of a pose whose coefficients k are computed; returns (rows written, iterations)."""
+    h = 2.0 * math.pi / n_scan
+    ch = math.cos(h)
+    sh = math.sin(h)
+    C = 1.0
+    S = 0.0
+    g_min = math.inf
+    g_max = -math.inf
+    brackets = np.empty(2 * MAX_CONTACTS, dtype=np.int64)
+    slopes = np.empty((2 * MAX_CONTACTS, 2))
+    found = 0
+    gp_first = 0.0
+    gp_prev = 0.0
+    for j in range(n_scan):
+        g, gp, _ = _profile(k, R1, R2, C, S)
+        g_min = min(g_min, g)
+        g_max = max(g_max, g)
+        if j == 0:
+            gp_first = gp
+        elif gp_prev < 0.0 <= gp and found < brackets.size:
+            brackets[found] = j - 1
+            slopes[found, 0] = gp_prev
+            slopes[found, 1] = gp
+            found += 1
+        gp_prev = gp
+        C, S = C * ch - S * sh, S * ch + C * sh
+    if gp_prev < 0.0 <= gp_first and found < brackets.size:
+        brackets[found] = n_scan - 1
+        slopes[found, 0] = gp_prev
+        slopes[found, 1] = gp_first
+        found += 1
+    scale = k[0] * k[0] + k[1] * k[1] + k[2] * k[2] + R1 * R1 + R2 * R2
+    if g_max - g_min <= 1e-12 * scale:  # a circle of contact: LINE_POINTS rows
+        for j in range(LINE_POINTS):
+            _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, 2.0 * math.pi * j / LINE_POINTS, 1.0, out[j])
+        return LINE_POINTS, 0
+    iterations = 0
+    rows = 0
+    for i in range(found):
+        if rows == out.shape[0]:
+            break
+        a = brackets[i] * h
+        s, it = _refine(k, R1, R2, a, a + h, slopes[i, 0], slopes[i, 1])
+        iterations += it
+        _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, s, 0.0, out[rows])
+        rows += 1
+    return rows, iterations
+
+
+@_jit()
+def pair_contacts(c1, q1, R1, r1, c2, q2, R2, r2, n_scan, out):
+    """Every local minimum of the distance of two centre circles, found from scratch (the cold search).
+
+    Parameters: centres c1, c2 (3,) m; quaternions q1, q2 (4,) (w, x, y, z), body to space; radii R1, r1,
+    R2, r2 (m); n_scan samples of the scan; ``out`` (MAX_CONTACTS, FIELDS) receives one row per minimum
+    (module notes).  Returns (number of rows, Newton iterations spent in the refinement).
+    """
+    M1 = np.empty((3, 3))
+    M2 = np.empty((3, 3))
+    k = np.empty(9)
+    _pose(c1, q1, c2, q2, M1, M2, k)
+    return _scan(k, c1, M1, R1, r1, c2, M2, R2, r2, n_scan, out)
+
+
+@_jit()
+def pair_contacts_warm(c1, q1, R1, r1, c2, q2, R2, r2, n_scan, s_previous, n_previous, max_iterations, out):
+    """:func:`pair_contacts` started from the angles ``s_previous[:n_previous]`` (rad, on circle 1) of the
+    last call's minima (usually ``out[:, 1]`` of that call).
+
+    Returns (number of rows, Newton iterations, 1 if it fell back on the cold search else 0).  Each minimum
+    gets at most ``max_iterations`` Newton steps (each at most a quarter of the scan spacing); the cold
+    search takes over when one does not converge to 1e-12 rad, meets g'' <= 0, or two meet (module notes).
+    """
+    M1 = np.empty((3, 3))
+    M2 = np.empty((3, 3))
+    k = np.empty(9)
+    _pose(c1, q1, c2, q2, M1, M2, k)
+    h = 2.0 * math.pi / n_scan
+    iterations = 0
+    ok = 0 < n_previous <= out.shape[0]
+    found = np.empty(MAX_CONTACTS)
+    for i in range(n_previous if ok else 0):
+        s = s_previous[i]
+        converged = False
+        for _ in range(max_iterations):
+            _, gp, gpp = _profile(k, R1, R2, math.cos(s), math.sin(s))
+            iterations += 1
+            if not gpp > 0.0:
+                break
+            step = -gp / gpp
+            if step > 0.25 * h:
+                step = 0.25 * h
+            elif step < -0.25 * h:
+                step = -0.25 * h
+            s += step
+            if abs(step) <= 1e-12:
+                converged = True
+                break
+        if not converged:
+            ok = False
+            break
+        s = s % (2.0 * math.pi)
+        for j in range(i):
+            separation = abs(found[j] - s)
+            if min(separation, 2.0 * math.pi - separation) < 0.25 * h:
+                ok = False
+        found[i] = s
+        if not ok:
+            break
+    if ok:
+        for i in range(n_previous):
+            _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, found[i], 0.0, out[i])
+        return n_previous, iterations, 0
+    rows, more = _scan(k, c1, M1, R1, r1, c2, M2, R2, r2, n_scan, out)
+    return rows, iterations + more, 1
+
+
+@_jit()
+def pairs_contacts(centres, orientations, R, r, pairs, n_scan, warm, max_iterations, state, counts, out, stats):
+    """The contacts of many pairs of rings in one call (the narrow phase of a step).
+
+    Parameters: ``centres`` (n, 3) m, ``orientations`` (n, 4) quaternions (w, x, y, z), ``R``, ``r`` (n,) m;
+    ``pairs`` (m, 2) int; ``warm``: start each pair from ``state[p, :counts[p]]`` (the angles s_1 of its last
+    minima; a pair with counts[p] == 0 gets the cold search) or, if False, search every pair cold.
+    ``out`` (m, MAX_CONTACTS, FIELDS) receives each pair's rows; ``counts`` (m,) their number and ``state``
+    their angles s_1 (both updated in place for the next call).  ``stats`` (3,) int receives the Newton
+    iterations, the cold searches and the fallbacks of warm starts.  Every minimum is returned, touching or
+    not: a contact carries force where its gap (field 0) is negative.
+    """
+    stats[0] = 0
+    stats[1] = 0
+    stats[2] = 0
+    for p in range(pairs.shape[0]):
+        i = pairs[p, 0]
+        j = pairs[p, 1]
+        if warm and counts[p] > 0:
+            rows, iterations, fell_back = pair_contacts_warm(centres[i], orientations[i], R[i], r[i], centres[j],
+                                                             orientations[j], R[j], r[j], n_scan, state[p],
+                                                             counts[p], max_iterations, out[p])  # fmt: skip
+            stats[1] += fell_back
+            stats[2] += fell_back
+        else:
+            rows, iterations = pair_contacts(centres[i], orientations[i], R[i], r[i], centres[j], orientations[j],
+                                             R[j], r[j], n_scan, out[p])  # fmt: skip
+            stats[1] += 1
+        stats[0] += iterations
+        counts[p] = rows
+        for c in range(rows):
+            state[p, c] = out[p, c, 1]
+
+
+# -- the contact law -------------------------------------------------------------------------------------------
+@_jit()
+def elliptical_factor_at(s, table, step):
+    """Gamma at s = ln(1 + ln(B/A)) from its values on the uniform grid s_j = j ``step`` (``table``): the cubic
+    through the four nearest values (clamped to the table's ends)."""
+    n = table.size
+    x = s / step
+    j = int(x)
+    if j < 1:
+        j = 1
+    if j > n - 3:
+        j = n - 3
+    t = x - j  # position from node j; the cubic through nodes j - 1 .. j + 2
+    if x >= n - 1:
+        return table[n - 1]
+    a = table[j - 1]
+    b = table[j]
+    c = table[j + 1]
+    d = table[j + 2]
+    return (
+        -a * t * (t - 1.0) * (t - 2.0) / 6.0
+        + b * (t + 1.0) * (t - 1.0) * (t - 2.0) / 2.0
+        - c * (t + 1.0) * t * (t - 2.0) / 2.0
+        + d * (t + 1.0) * t * (t - 1.0) / 6.0
+    )
+
+
+@_jit()
+def hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, cos_angle, E_star, table, step):
+    """K_c (N/m^1.5) of two surfaces with principal curvatures (k1a, k1b), (k2a, k2b) (1/m, convex positive)
+    whose first principal directions make the angle with cosine ``cos_angle``; E* in Pa.
+
+    Hertz's sums (App. A, Eqs. (A2a)-(A2b)), K_c = 4/3 E* (2A)^(-1/2) Gamma(B/A) with Gamma from ``table``
+    (:func:`ringchain.theory.elliptical_factor_grid`).  A relative curvature A <= 0 (no single Hertz ellipse:
+    a degenerate minimum) is raised to B e^-690, the most elongated ellipse of the table.
+    """
+    d1 = k1a - k1b
+    d2 = k2a - k2b
+    total = 0.5 * (k1a + k1b + k2a + k2b)
+    cos2 = 2.0 * cos_angle * cos_angle - 1.0
+    radicand = d1 * d1 + d2 * d2 + 2.0 * d1 * d2 * cos2
+    difference = 0.5 * math.sqrt(radicand) if radicand > 0.0 else 0.0
+    A = 0.5 * (total - difference)
+    B = A + difference
+    top = (table.size - 1) * step
+    if A > 0.0:
+        s = math.log1p(math.log1p(difference / A))
+        if s > top:
+            s = top
+    else:
+        s = top
+    if s >= top:
+        A = B * math.exp(-math.expm1(top))
+    gamma = elliptical_factor_at(s, table, step)
+    return 4.0 / 3.0 * E_star / math.sqrt(2.0 * A) * gamma
+
+
+@_jit()
+def contact_force(row, c1, v1, w1, c2, v2, w2, law, table, step, force, torque_1, torque_2):
+    """Force and torques of one contact row (module notes) between ring 1 and ring 2.
+
+    Parameters: ``row`` (FIELDS,); centres c (3,) m, velocities v (3,) m/s and angular velocities w (3,) rad/s,
+    all in space; ``law`` (LAW_PARAMETERS,): kind (0 Hertz of the curvatures, 1 the power law K delta^n), K,
+    n, gamma, mu, v_reg, E*; ``table``, ``step``: the elliptical factor (kind 0).
+    Writes the force on ring 1 (N; ring 2 gets its opposite) and the torques on rings 1 and 2 about their
+    centres (N m), all in space.  Returns (normal force N, stored energy J, dashpot power W, friction power W):
+    the powers are dissipated (>= 0).
+    """
+    for i in range(3):
+        force[i] = 0.0
+        torque_1[i] = 0.0
+        torque_2[i] = 0.0
+    delta = -row[0]
+    if not delta > 0.0:
+        return 0.0, 0.0, 0.0, 0.0
+    if law[0] == 0.0:
+        K = hertz_stiffness_curvatures(row[9], row[10], row[11], row[12], row[13], law[6], table, step)
+        n = 1.5
+    else:
+        K = law[1]
+        n = law[2]
+    elastic = K * delta * math.sqrt(delta) if n == 1.5 else K * delta**n
+    energy = elastic * delta / (n + 1.0)
+    # velocity of ring 1's material point at the contact relative to ring 2's
+    rel = np.empty(3)
+    a1 = np.empty(3)
+    a2 = np.empty(3)
+    for i in range(3):
+        a1[i] = row[3 + i] - c1[i]
+        a2[i] = row[3 + i] - c2[i]
+    for i in range(3):
+        j = (i + 1) % 3
+        m = (i + 2) % 3
+        rel[i] = (v1[i] + w1[j] * a1[m] - w1[m] * a1[j]) - (v2[i] + w2[j] * a2[m] - w2[m] * a2[j])
+    normal_speed = rel[0] * row[6] + rel[1] * row[7] + rel[2] * row[8]
+    delta_rate = -normal_speed
+    normal = elastic + law[3] * delta_rate
+    if normal < 0.0:
+        normal = 0.0
+    # the dashpot's share of the normal force (with the bracket: normal - elastic) and the power it takes
+    dashpot_power = (normal - elastic) * delta_rate
+    slip = np.empty(3)
+    slip2 = 0.0
+    for i in range(3):
+        slip[i] = rel[i] - normal_speed * row[6 + i]
+        slip2 += slip[i] * slip[i]
+    mu = law[4]
+    factor = 0.0
+    if mu > 0.0 and slip2 > 0.0:
+        factor = mu * normal / math.sqrt(slip2 + law[5] * law[5])
+    for i in range(3):
+        force[i] = normal * row[6 + i] - factor * slip[i]
+    friction_power = factor * slip2
+    for i in range(3):
+        j = (i + 1) % 3
+        m = (i + 2) % 3
+        torque_1[i] = a1[j] * force[m] - a1[m] * force[j]
+        torque_2[i] = -(a2[j] * force[m] - a2[m] * force[j])
+    return normal, energy, dashpot_power, friction_power
+
+
+numba.config.CACHE_DIR = _previous_cache_dir
