@@ -25,9 +25,11 @@ displacement from the reference centre, so that the step control measures the ap
 (micrometres) against tolerances of the same size.
 
 Contacts.  Candidate pairs are the pairs whose bounding spheres (radius R + r) come within ``skin`` of each
-other in the rest configuration (:func:`scipy.spatial.cKDTree`), fixed for a run; the linked pairs
-(:attr:`Rings.links`) are those whose centre circles have Gauss linking number +-1 (one circle pierces the
-other's disc once).  Per pair the contact law is Hertz's, F = K_c delta^(3/2) (Eq. (1)), with K_c of
+other in the rest configuration (:func:`~ringchain.numerics.candidate_pairs`), fixed for a run; the linked
+pairs (:attr:`Rings.links`) are those whose centre circles have Gauss linking number +-1
+(:func:`~ringchain.numerics.linking_number`).  The contacts of each pair are every local minimum of the
+distance of their centre circles (:mod:`ringchain.numerics.rings_kernels`), warm-started from the last
+evaluation.  Per pair the contact law is Hertz's, F = K_c delta^(3/2) (Eq. (1)), with K_c of
 :func:`~ringchain.theory.hertz_stiffness_pair` at the pair's crossing angle (the angle between the ring
 planes at rest; pi/2 for pairs that are not linked), or the lumped power law F = K delta^n of Eq. (4)
 (:meth:`~ringchain.theory.Ring.power_law`); optional dashpots (gamma, N s/m) and regularised Coulomb
@@ -44,7 +46,9 @@ import numpy as np
 from ringchain.theory import STANDARD_GRAVITY, Ring
 from ringchain.theory import _validate as v
 
-__all__ = ["Rings", "RingsSimulation", "RingsBatch", "RingsEnergy", "linking_numbers", "LAWS"]
+from .rings_contact import candidate_pairs, linking_number
+
+__all__ = ["Rings", "RingsSimulation", "RingsBatch", "RingsEnergy", "LAWS"]
 
 #: The contact laws of :meth:`Rings.from_rings`.
 LAWS = ("hertz", "power-law")
@@ -68,31 +72,6 @@ def rotation_matrices(q) -> np.ndarray:
         np.stack([2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)], axis=-1),
         np.stack([2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)], axis=-1),
     ], axis=-2)  # fmt: skip
-
-
-def linking_numbers(centres, axes_1, axes_2, radii, pairs) -> np.ndarray:
-    """|Gauss linking number| (0 or 1) of the centre circles of ring pairs.
-
-    Circle i: centre ``centres[i]`` (m), radius ``radii[i]`` (m), in the plane spanned by the unit vectors
-    ``axes_1[i]``, ``axes_2[i]``.  Two circles link once when circle j pierces the disc of circle i at exactly
-    one of its (at most two) crossings of the plane of i.
-    """
-    pairs = np.asarray(pairs, dtype=np.int64).reshape(-1, 2)
-    i, j = pairs[:, 0], pairs[:, 1]
-    normal = np.cross(axes_1[i], axes_2[i])
-    C = np.einsum("kc,kc->k", centres[j] - centres[i], normal)  # circle j: C + A cos t + B sin t on normal i
-    A = radii[j] * np.einsum("kc,kc->k", axes_1[j], normal)
-    B = radii[j] * np.einsum("kc,kc->k", axes_2[j], normal)
-    rho = np.hypot(A, B)
-    crossing = rho > np.abs(C)
-    phase = np.arctan2(B, A)
-    spread = np.arccos(np.clip(-C / np.where(rho > 0, rho, 1.0), -1.0, 1.0))
-    inside = np.zeros(len(pairs), dtype=np.int64)
-    for sign in (1.0, -1.0):
-        t = phase + sign * spread
-        point = centres[j] + radii[j][:, None] * (np.cos(t)[:, None] * axes_1[j] + np.sin(t)[:, None] * axes_2[j])
-        inside += crossing & (np.linalg.norm(point - centres[i], axis=-1) < radii[i])
-    return inside % 2
 
 
 @dataclass(frozen=True, eq=False)
@@ -206,15 +185,10 @@ class Rings:
         R = np.array([ring.R for ring in rings])
         r = np.array([ring.r for ring in rings])
         skin = 0.5 * R.max() if skin is None else float(v.nonnegative("skin", skin, "m"))
-        from scipy.spatial import cKDTree
-
-        reach = 2.0 * (R + r).max() + skin
-        pairs = np.array(sorted(cKDTree(centres).query_pairs(reach)), dtype=np.int64).reshape(-1, 2)
-        if pairs.size:
-            close = np.linalg.norm(centres[pairs[:, 1]] - centres[pairs[:, 0]], axis=1)
-            pairs = pairs[close < (R + r)[pairs[:, 0]] + (R + r)[pairs[:, 1]] + skin]
+        pairs = candidate_pairs(centres, R + r, skin=skin).astype(np.int64).reshape(-1, 2)
+        linked = np.array([linking_number(centres[i], q[i], rings[i], centres[j], q[j], rings[j]) != 0
+                           for i, j in pairs], dtype=bool).reshape(-1)  # fmt: skip
         rot = rotation_matrices(q)
-        linked = linking_numbers(centres, rot[..., 0], rot[..., 1], R, pairs).astype(bool)
         stiffness, exponent = _pair_laws(rings, rot[..., 2], pairs, linked, law)
         return cls(centres, q, rings, flags, law, friction, dashpot, pairs, linked, stiffness, exponent, slip_speed)
 
@@ -368,27 +342,26 @@ class RingsDynamics:
     @functools.cached_property
     def _packed(self):
         from .kernels import PARAMETERS, Packed
-        from .rings_step import scan_pair
+        from .rings_kernels import MAX_CONTACTS
 
         model = self.model
         n, L = self.n_rings, len(model.pairs)
         R = np.array([ring.R for ring in model.rings])
         r = np.array([ring.r for ring in model.rings])
         I1, I3 = _moments(R, r, model.masses)
-        table = np.column_stack([R, r, model.masses, I1, I3, model.fixed.astype(float), model.centres])
-        rot = rotation_matrices(model.orientations)
-        warm = np.zeros((L, 4))
-        for k, (i, j) in enumerate(model.pairs):
-            warm[k, :2] = warm[k, 2:] = scan_pair(model.centres[i], rot[i], R[i], model.centres[j], rot[j], R[j])
+        bodies = np.column_stack([R, r, model.masses, I1, I3, model.fixed.astype(float), model.centres])
+        warm = np.zeros((L, 1 + MAX_CONTACTS))  # no minima known: the first evaluation searches cold
         par = np.zeros((1, L, PARAMETERS))
         par[0, :, 0], par[0, :, 1], par[0, :, 2], par[0, :, 3] = model.stiffness, model.exponent, model.dashpot, \
             model.friction  # fmt: skip
         gravity = np.zeros((n, 7))
         gravity[~model.fixed, 2] = 1.0
         ints = np.array([2, 3, 7 * n, int(self.damped), n, L, 0, 0, 0, 0], dtype=np.int64)
-        return Packed(ints, np.array([model.slip_speed]), np.zeros((1, 7 * n)), gravity.reshape(1, -1),
-                      model.pairs[:, 0].copy(), model.pairs[:, 1].copy(), np.zeros(L, dtype=np.int64), par, warm,
-                      np.zeros(L), np.zeros(L), np.ascontiguousarray(table), np.zeros(n), np.zeros(n))  # fmt: skip
+        kind = np.ones(L, dtype=np.int64)  # the law F = K delta^n of each pair (Rings.stiffness, exponent)
+        table, step = np.ones(4), 1.0  # the elliptical factor's table: not read by laws of kind 1
+        return Packed(ints, np.array([model.slip_speed, step]), np.zeros((1, 7 * n)), gravity.reshape(1, -1),
+                      model.pairs[:, 0].copy(), model.pairs[:, 1].copy(), kind, par, warm, np.zeros(L), np.zeros(L),
+                      np.ascontiguousarray(bodies), table, np.zeros(n))  # fmt: skip
 
     def packed(self):
         """The :class:`~ringchain.numerics.kernels.Packed` form (kind 2) of the rings, made once per run."""
@@ -465,7 +438,7 @@ class RingsDynamics:
         m = self.packed()
         record = np.zeros((X.shape[0], len(model.pairs), 2, 12))
         contact_state(m, np.ascontiguousarray(X.reshape(X.shape[0], -1)), np.ascontiguousarray(U.reshape(
-            U.shape[0], -1)), m.rest_vectors.copy(), record)  # fmt: skip
+            U.shape[0], -1)), np.zeros_like(m.rest_vectors), record)  # fmt: skip
         contact = record[..., 11].sum(axis=(1, 2))
         return RingsEnergy(translational.reshape(shape), rotational.reshape(shape), contact.reshape(shape),
                            gravity.reshape(shape), np.broadcast_to(dissipated, shape).astype(float))  # fmt: skip
@@ -495,7 +468,7 @@ class RingsDynamics:
             record = np.zeros((x0.shape[0], len(model.pairs), 2, 12))
             from .rings_step import contact_state
 
-            contact_state(m, np.ascontiguousarray(x0), np.ascontiguousarray(u0), m.rest_vectors.copy(), record)
+            contact_state(m, np.ascontiguousarray(x0), np.ascontiguousarray(u0), np.zeros_like(m.rest_vectors), record)
             X = np.maximum(X, np.max(record[..., 0], axis=(1, 2), initial=0.0))
         return X, speed, energy
 
@@ -593,14 +566,15 @@ class RingsSimulation:
     @functools.cached_property
     def contacts(self) -> np.ndarray:
         """Every contact slot of every candidate pair (:attr:`Rings.pairs`), shape (T, n_pairs, 2, 12): [approach
-        (m; -inf for an unused slot), point (3, m), normal (3, from the pair's first ring to its second), normal
-        force on the second ring (N), friction force on it (3, N), elastic energy (J)]."""
+        (m; -inf for an unused slot), point (3, m), normal (3, from the pair's second ring to its first), normal
+        force (N), friction force on the first ring (3, N), elastic energy (J)]: the two deepest minima of the
+        distance of the centre circles of each pair."""
         from .rings_step import contact_state
 
         dyn = self.model.dynamics()
         m = dyn.packed()
         out = np.zeros((self.t.size, len(self.model.pairs), 2, 12))
-        contact_state(m, np.ascontiguousarray(self.x), np.ascontiguousarray(self.u), m.rest_vectors.copy(), out)
+        contact_state(m, np.ascontiguousarray(self.x), np.ascontiguousarray(self.u), np.zeros_like(m.rest_vectors), out)
         return out
 
     @property

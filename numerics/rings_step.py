@@ -9,11 +9,14 @@ that x and u have one length, as the engine's dopri5 loop wants; its derivative 
 hold (:meth:`~ringchain.numerics.Rings.packed`):
 
 - ``coupling`` (n, 9): per ring [R, r, m, I_1 (a diameter), I_3 (the axis), fixed, reference centre (3, m)];
-- ``li``, ``lj``, ``kind`` (L,): the candidate pairs and their law (0: F = K delta^n);
+- ``li``, ``lj``, ``kind`` (L,): the candidate pairs and their law (the kind of
+  :func:`~ringchain.numerics.rings_kernels.contact_force`: 0 Hertz of the curvatures, 1 F = K delta^n);
 - ``par`` (1, L, 4): per pair [K (N/m^n), n, dashpot gamma (N s/m), friction coefficient mu];
-- ``rest_vectors`` (L, 4): the warm start of each pair's contacts (two contacts, the angles (s, t) on
-  both centre circles of each), updated by every evaluation (one run at a time);
-- ``floats`` [v_f]: the slip speed of the regularised Coulomb law, m/s;
+- ``spans`` (L,): per pair the effective modulus E* (Pa) of the Hertz law;
+- ``rest_vectors`` (L, 1 + MAX_CONTACTS): the warm start of each pair's contacts [count, the angles s_1 of
+  its minima on ring i's centre circle], updated by every evaluation (one run at a time);
+- ``floats`` [v_f, step]: the slip speed of the regularised Coulomb law (m/s) and the step of the table of
+  the elliptical factor of the Hertz law, ``inv_top``;
 - ``gravity`` (1, 7n): per unit g, the acceleration of each coordinate (-1 on the z of free rings);
 - ``ints``: [2, 3, 7n, damped, n, L, 0, 0, 0, 0].
 
@@ -22,13 +25,12 @@ I domega/dt = tau_body - omega x (I omega), I = diag(I_1, I_1, I_3).  The rotati
 so a quaternion whose norm drifts within a step still rotates rigidly; the dopri5 loop sets |q| = 1 after
 each accepted step (:func:`normalise`).
 
-Contacts.  Where the centre circles of a pair come closer than r_1 + r_2 the tubes overlap by
-delta = r_1 + r_2 - d (d the distance of the circles' closest points A on ring i, B on ring j); the normal n
-points from A to B, the contact point is halfway through the overlap.  The normal force on ring j is
-F n, F = [K delta^n + gamma d(delta)/dt]_+, -F n on ring i; friction adds the regularised Coulomb force
--mu F v_t / sqrt(|v_t|^2 + v_f^2) against the slip velocity v_t at the contact point.  Both act at the
-contact point (forces and torques on both rings).  Their dissipated power (dashpot and friction) is the
-rate of the state's dissipated energy W.
+Contacts.  The geometry and the law are those of :mod:`ringchain.numerics.rings_kernels`: every local
+minimum of the distance of the two centre circles (warm-started Newton, the cold scan as fallback), the tubes
+overlapping by delta = r_1 + r_2 - d where it is below the sum of the tube radii; the normal force
+[K delta^n + gamma d(delta)/dt]_+ and the regularised Coulomb friction at the contact point, forces and
+torques on both rings.  Their dissipated power (dashpot and friction) is the rate of the state's dissipated
+energy W.
 
 Velocity Verlet for rings (:func:`verlet_rings`).  A symmetric splitting (kick, drift, kick): half kicks of
 the velocities and body angular momenta by the forces and torques, between which the positions drift and
@@ -44,6 +46,7 @@ import math
 import numba
 import numpy as np
 
+from . import rings_kernels
 from .kernels import CACHE, Packed
 
 __all__ = [
@@ -53,7 +56,6 @@ __all__ = [
     "contact_state",
     "derivative",
     "verlet_rings",
-    "scan_pair",
     "CONTACTS",
 ]
 
@@ -90,108 +92,55 @@ def _rotation(q0, q1, q2, q3, R):
 
 
 @_jit()
-def _closest(ca, Ra, Rad, cb, Rb, Rbd, s, t):
-    """Newton's iteration from (s, t) on the squared distance of two circles (centres ca, cb; rotation matrices
-    Ra, Rb whose first two columns span their planes; radii Rad, Rbd): the angles of a local minimum.
-
-    Placeholder of the pair geometry until the compiled scan and Newton of the contact module replace it.
-    """
-    A, B, dA, dB = np.empty(3), np.empty(3), np.empty(3), np.empty(3)
-    for _ in range(30):
-        cs, sn, ct, st = math.cos(s), math.sin(s), math.cos(t), math.sin(t)
-        fs, ft, fss, ftt, fst = 0.0, 0.0, 0.0, 0.0, 0.0
-        for c in range(3):
-            A[c] = ca[c] + Rad * (cs * Ra[c, 0] + sn * Ra[c, 1])
-            B[c] = cb[c] + Rbd * (ct * Rb[c, 0] + st * Rb[c, 1])
-            dA[c] = Rad * (-sn * Ra[c, 0] + cs * Ra[c, 1])
-            dB[c] = Rbd * (-st * Rb[c, 0] + ct * Rb[c, 1])
-        for c in range(3):
-            w = A[c] - B[c]
-            fs += w * dA[c]
-            ft -= w * dB[c]
-            fss += dA[c] * dA[c] - w * (A[c] - ca[c])
-            ftt += dB[c] * dB[c] + w * (B[c] - cb[c])
-            fst -= dA[c] * dB[c]
-        det = fss * ftt - fst * fst
-        if fss > 0.0 and det > 0.0:
-            ds, dt = -(ftt * fs - fst * ft) / det, -(fss * ft - fst * fs) / det
-        else:  # not convex here: a gradient step of a fraction of a radian
-            norm = math.sqrt(fs * fs + ft * ft) + 1e-300
-            ds, dt = -0.1 * fs / norm, -0.1 * ft / norm
-        s += ds
-        t += dt
-        if abs(ds) + abs(dt) < 1e-14:
-            break
-    return s, t
-
-
-@_jit()
-def _pair(m, k, x, u, R, warm, g_out, rec):
-    """Forces and torques of pair ``k`` at state (x, u), added to ``g_out`` (n, 6: force and torque about the
-    ring's centre, in space); returns (dissipated power, elastic energy).  Each contact is described in ``rec``
-    (CONTACTS, 12; see :func:`contact_state`)."""
+def _pair(m, k, x, u, R, warm, load, rec):
+    """Forces and torques of the contacts of pair ``k`` at state (x, u), added to ``load`` (n, 6: force and torque
+    about the ring's centre, in space); returns (dissipated power, elastic energy).  The pair's contacts are
+    found by :func:`~ringchain.numerics.rings_kernels.pair_contacts_warm` from ``warm[k]`` ([count, angles s_1
+    of the last minima]; updated) and loaded by :func:`~ringchain.numerics.rings_kernels.contact_force`; the
+    CONTACTS deepest of them are described in ``rec`` (see :func:`contact_state`)."""
     i, j = m.li[k], m.lj[k]
-    K, expo, gamma, mu = m.par[0, k, 0], m.par[0, k, 1], m.par[0, k, 2], m.par[0, k, 3]
-    v_f = m.floats[0]
-    Rad, ra, Rbd, rb = m.coupling[i, 0], m.coupling[i, 1], m.coupling[j, 0], m.coupling[j, 1]
-    ca, cb = np.empty(3), np.empty(3)
+    c1, c2, v1, v2, w1, w2 = np.empty(3), np.empty(3), np.empty(3), np.empty(3), np.empty(3), np.empty(3)
     for c in range(3):
-        ca[c] = m.coupling[i, 6 + c] + x[7 * i + c]
-        cb[c] = m.coupling[j, 6 + c] + x[7 * j + c]
+        c1[c] = m.coupling[i, 6 + c] + x[7 * i + c]
+        c2[c] = m.coupling[j, 6 + c] + x[7 * j + c]
+        v1[c], v2[c] = u[7 * i + c], u[7 * j + c]
+        w1[c] = R[i, c, 0] * u[7 * i + 3] + R[i, c, 1] * u[7 * i + 4] + R[i, c, 2] * u[7 * i + 5]
+        w2[c] = R[j, c, 0] * u[7 * j + 3] + R[j, c, 1] * u[7 * j + 4] + R[j, c, 2] * u[7 * j + 5]
+    rows = np.empty((rings_kernels.MAX_CONTACTS, rings_kernels.FIELDS))
+    count, _, _ = rings_kernels.pair_contacts_warm(
+        c1, x[7 * i + 3 : 7 * i + 7], m.coupling[i, 0], m.coupling[i, 1], c2, x[7 * j + 3 : 7 * j + 7],
+        m.coupling[j, 0], m.coupling[j, 1], rings_kernels.N_SCAN, warm[k, 1:], int(warm[k, 0]), 8, rows,
+    )  # fmt: skip
+    warm[k, 0] = count
+    law = np.empty(rings_kernels.LAW_PARAMETERS)
+    law[0], law[1], law[2], law[3] = m.kind[k], m.par[0, k, 0], m.par[0, k, 1], m.par[0, k, 2]
+    law[4], law[5], law[6] = m.par[0, k, 3], m.floats[0], m.spans[k]
+    force, t1, t2 = np.empty(3), np.empty(3), np.empty(3)
     power, energy = 0.0, 0.0
-    wa, wb = np.empty(3), np.empty(3)  # angular velocities in space
-    for c in range(3):
-        wa[c] = R[i, c, 0] * u[7 * i + 3] + R[i, c, 1] * u[7 * i + 4] + R[i, c, 2] * u[7 * i + 5]
-        wb[c] = R[j, c, 0] * u[7 * j + 3] + R[j, c, 1] * u[7 * j + 4] + R[j, c, 2] * u[7 * j + 5]
-    A, B, nrm, p, vrel, F = np.empty(3), np.empty(3), np.empty(3), np.empty(3), np.empty(3), np.empty(3)
-    for slot in range(1):
-        s, t = _closest(ca, R[i], Rad, cb, R[j], Rbd, warm[k, 2 * slot], warm[k, 2 * slot + 1])
-        warm[k, 2 * slot], warm[k, 2 * slot + 1] = s, t
-        cs, sn, ct, st = math.cos(s), math.sin(s), math.cos(t), math.sin(t)
-        d2 = 0.0
-        for c in range(3):
-            A[c] = ca[c] + Rad * (cs * R[i, c, 0] + sn * R[i, c, 1])
-            B[c] = cb[c] + Rbd * (ct * R[j, c, 0] + st * R[j, c, 1])
-            d2 += (B[c] - A[c]) ** 2
-        d = math.sqrt(d2)
-        delta = ra + rb - d
-        rate = 0.0
-        for c in range(3):
-            nrm[c] = (B[c] - A[c]) / d
-            p[c] = A[c] + (ra - 0.5 * delta) * nrm[c]
-            rec[slot, 1 + c], rec[slot, 4 + c], rec[slot, 8 + c] = p[c], nrm[c], 0.0
-        rec[slot, 0], rec[slot, 7], rec[slot, 11] = delta, 0.0, 0.0
-        if delta <= 0.0:
+    for slot in range(rec.shape[0]):
+        rec[slot, 0] = -np.inf
+    for c in range(count):
+        warm[k, 1 + c] = rows[c, 1]
+        normal, stored, dashpot, friction = rings_kernels.contact_force(
+            rows[c], c1, v1, w1, c2, v2, w2, law, m.inv_top, m.floats[1], force, t1, t2)  # fmt: skip
+        power += dashpot + friction
+        energy += stored
+        for a in range(3):
+            load[i, a] += force[a]
+            load[j, a] -= force[a]
+            load[i, 3 + a] += t1[a]
+            load[j, 3 + a] += t2[a]
+        slot = rec.shape[0] - 1  # the record keeps the deepest contacts
+        if -rows[c, 0] <= rec[slot, 0]:
             continue
-        for c in range(3):
-            c1, c2 = (c + 1) % 3, (c + 2) % 3
-            va = u[7 * i + c] + wa[c1] * (p[c2] - ca[c2]) - wa[c2] * (p[c1] - ca[c1])
-            vb = u[7 * j + c] + wb[c1] * (p[c2] - cb[c2]) - wb[c2] * (p[c1] - cb[c1])
-            vrel[c] = vb - va
-            rate -= vrel[c] * nrm[c]
-        elastic = K * delta * math.sqrt(delta) if expo == 1.5 else K * delta**expo
-        force = elastic + gamma * rate
-        if force < 0.0:
-            force = 0.0
-        energy += elastic * delta / (expo + 1.0)
-        power += (force - elastic) * rate
-        slip2 = 0.0
-        vn = -rate
-        for c in range(3):
-            vrel[c] -= vn * nrm[c]  # the slip velocity
-            slip2 += vrel[c] * vrel[c]
-        friction = mu * force / math.sqrt(slip2 + v_f * v_f) if mu > 0.0 else 0.0
-        power += friction * slip2
-        rec[slot, 7], rec[slot, 11] = force, elastic * delta / (expo + 1.0)
-        for c in range(3):
-            F[c] = force * nrm[c] - friction * vrel[c]  # on ring j
-            rec[slot, 8 + c] = -friction * vrel[c]
-        for c in range(3):
-            c1, c2 = (c + 1) % 3, (c + 2) % 3
-            g_out[j, c] += F[c]
-            g_out[i, c] -= F[c]
-            g_out[j, 3 + c] += (p[c1] - cb[c1]) * F[c2] - (p[c2] - cb[c2]) * F[c1]
-            g_out[i, 3 + c] -= (p[c1] - ca[c1]) * F[c2] - (p[c2] - ca[c2]) * F[c1]
+        while slot > 0 and rec[slot - 1, 0] < -rows[c, 0]:
+            for a in range(12):
+                rec[slot, a] = rec[slot - 1, a]
+            slot -= 1
+        rec[slot, 0], rec[slot, 7], rec[slot, 11] = -rows[c, 0], normal, stored
+        for a in range(3):
+            rec[slot, 1 + a], rec[slot, 4 + a] = rows[c, 3 + a], rows[c, 6 + a]
+            rec[slot, 8 + a] = force[a] - normal * rows[c, 6 + a]
     return power, energy
 
 
@@ -271,10 +220,11 @@ def derivative(m, g, y, dy):
 
 @_jit()
 def contact_state(m, xs, us, warm, out):
-    """The contacts of states ``xs``, ``us`` (T, 7n) into ``out`` (T, L, CONTACTS, 12): per contact [approach
-    delta (m: > 0 in contact, else minus the gap), point (3, m), normal (3, from ring i to ring j), normal
-    force on ring j (N), friction force on ring j (3, N), elastic energy (J)], warm-started from ``warm`` (L, 4;
-    updated); a contact slot not in use has delta = -inf."""
+    """The contacts of states ``xs``, ``us`` (T, 7n) into ``out`` (T, L, CONTACTS, 12): per pair (i, j) its
+    CONTACTS deepest minima of the distance of the centre circles, each [approach delta (m: > 0 in contact,
+    else minus the gap), point (3, m), normal (3, from ring j to ring i), normal force (N), friction force on
+    ring i (3, N), elastic energy (J)], warm-started from ``warm`` (L, 1 + MAX_CONTACTS; updated); a slot not
+    in use has delta = -inf."""
     n = m.ints[4]
     R = np.empty((n, 3, 3))
     load = np.zeros((n, 6))
@@ -287,7 +237,6 @@ def contact_state(m, xs, us, warm, out):
             for slot in range(CONTACTS):
                 for c in range(12):
                     out[k_t, k, slot, c] = 0.0
-                out[k_t, k, slot, 0] = -np.inf
             _pair(m, k, x, u, R, warm, load, out[k_t, k])
 
 
@@ -406,14 +355,3 @@ def verlet_rings(packed: Packed, x0, u0, t_eval, t_end, dt, keep, g):
                                        out_u[b])  # fmt: skip
         status[b], final_x[b], final_u[b] = code, x, u
     return out_x, out_u, final_x, final_u, status, dt, n_steps
-
-
-def scan_pair(centre_a, rotation_a, R_a, centre_b, rotation_b, R_b, samples=72):
-    """The angles (s, t) on two centre circles of the closest pair of points on a grid of ``samples`` each: the
-    start of the warm-started iteration of a new pair."""
-    s = np.linspace(0.0, 2.0 * np.pi, samples, endpoint=False)
-    A = centre_a + R_a * (np.cos(s)[:, None] * rotation_a[:, 0] + np.sin(s)[:, None] * rotation_a[:, 1])
-    B = centre_b + R_b * (np.cos(s)[:, None] * rotation_b[:, 0] + np.sin(s)[:, None] * rotation_b[:, 1])
-    d = np.linalg.norm(A[:, None, :] - B[None, :, :], axis=-1)
-    a, b = np.unravel_index(np.argmin(d), d.shape)
-    return s[a], s[b]
