@@ -8,7 +8,15 @@ import numpy as np
 import pytest
 from ringchain.numerics import rings_kernels as rk
 from ringchain.numerics.rings_contact import candidate_pairs, linking_number, torus_contacts
-from ringchain.theory import Ring, contact_patches, minimum_contact_angle
+from ringchain.theory import (
+    Ring,
+    contact_modulus,
+    contact_patches,
+    elliptical_factor_grid,
+    hertz_stiffness,
+    hertz_stiffness_curvatures,
+    minimum_contact_angle,
+)
 from scipy.spatial.transform import Rotation
 
 R, r = 22.5e-3, 2.5e-3  # the paper's rings (R/r = 9)
@@ -323,3 +331,101 @@ def test_bad_inputs_are_refused_with_their_units():
         torus_contacts(np.zeros(3), IDENTITY, RING, [0, 0, 1], IDENTITY, RING, n_scan=4)
     with pytest.raises(ValueError, match="skin"):
         candidate_pairs(np.zeros((2, 3)), 1.0, skin=-1.0)
+
+
+# -- the contact law -------------------------------------------------------------------------------------------------
+STEEL = (193e9, 0.29)
+GRID = elliptical_factor_grid()
+#: The grid's cubic interpolation (tests/theory/test_rigid.py): 5e-12 of K_c.
+GRID_TOLERANCE = 5e-12
+
+
+def test_compiled_stiffness_equals_the_theory_function():
+    rng = np.random.default_rng(8)
+    E_star = float(contact_modulus(*STEEL))
+    for _ in range(200):
+        k1a, k2a = rng.uniform(-60, 200, 2)
+        k1b, k2b = rng.uniform(100, 600, 2)
+        angle = rng.uniform(0, np.pi / 2)
+        try:
+            expected = float(hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, angle, *STEEL, *STEEL))
+        except ValueError:  # A <= 0: no single Hertz ellipse
+            continue
+        K_c = rk.hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, np.cos(angle), E_star, *GRID)
+        assert K_c == pytest.approx(expected, rel=1e-13)  # the same arithmetic in another order: rounding
+
+
+@pytest.mark.parametrize("degrees", [90.0, 60.0])
+def test_stiffness_at_a_found_crossing_is_hertz_stiffness(degrees):
+    theta = np.radians(degrees)
+    c1, q1, c2, q2 = crossing(theta)
+    contacts = torus_contacts(c1, q1, RING, c2, q2, RING, margin=np.inf)
+    row = contacts.rows[0]
+    K_c = rk.hertz_stiffness_curvatures(*row[9:14], float(contact_modulus(*STEEL)), *GRID)
+    # the table's resolution, and the curvatures of the found minimum: s to 1e-13 rad changes cos(phi) by its
+    # square, and the tangents' angle by 1e-13 rad
+    assert K_c == pytest.approx(float(hertz_stiffness(R, r, *STEEL, theta)), rel=GRID_TOLERANCE + 1e-12)
+
+
+def reference_force(row, c1, v1, w1, c2, v2, w2, K, n, gamma, mu, v_reg):
+    """The law of rings_kernels.contact_force in NumPy, written from its documentation."""
+    delta = -row[0]
+    point, normal = row[3:6], row[6:9]
+    if delta <= 0:
+        return np.zeros(3), np.zeros(3), np.zeros(3), 0.0, 0.0, 0.0, 0.0
+    slip_velocity = (v1 + np.cross(w1, point - c1)) - (v2 + np.cross(w2, point - c2))
+    approach_rate = -slip_velocity @ normal
+    elastic = K * delta**n
+    F_n = max(elastic + gamma * approach_rate, 0.0)
+    slip = slip_velocity - (slip_velocity @ normal) * normal
+    friction = -mu * F_n * slip / np.sqrt(slip @ slip + v_reg**2)
+    F = F_n * normal + friction
+    return (F, np.cross(point - c1, F), np.cross(point - c2, -F), F_n, K * delta ** (n + 1) / (n + 1),
+            (F_n - elastic) * approach_rate, -friction @ slip)  # fmt: skip
+
+
+@pytest.mark.parametrize("mu", [0.0, 0.3])
+def test_contact_force_against_the_numpy_reference_and_its_invariants(mu):
+    rng = np.random.default_rng(21)
+    law = np.array([1.0, 3e9, 1.3, 40.0, mu, 1e-3, 0.0])  # the power law of Eq. (4), dashpot, friction
+    c1, q1, c2, q2 = crossing(np.radians(70), 2 * (R - r) + 3e-6)  # rings pulled 3 um apart: overlap
+    contacts = torus_contacts(c1, q1, RING, c2, q2, RING)
+    (row,) = contacts.rows
+    force, torque_1, torque_2 = np.empty(3), np.empty(3), np.empty(3)
+    for _ in range(20):
+        v1, w1, v2, w2 = rng.normal(size=(4, 3)) * [[0.1], [5.0], [0.1], [5.0]]
+        out = rk.contact_force(row, c1, v1, w1, c2, v2, w2, law, *GRID, force, torque_1, torque_2)
+        F, T1, T2, F_n, energy, dashpot, friction = reference_force(
+            row, c1, v1, w1, c2, v2, w2, 3e9, 1.3, 40.0, mu, 1e-3
+        )
+        scale = np.abs(F).max()
+        assert np.allclose(force, F, rtol=0, atol=1e-13 * scale)  # rounding
+        assert np.allclose(torque_1, T1, rtol=0, atol=1e-13 * scale * R)
+        assert np.allclose(torque_2, T2, rtol=0, atol=1e-13 * scale * R)
+        assert out == pytest.approx((F_n, energy, dashpot, friction), rel=1e-12, abs=1e-18)
+        # invariants: ring 2 gets -F at the same point, so the torques about the origin cancel
+        total = torque_1 + np.cross(c1, force) + torque_2 + np.cross(c2, -force)
+        assert np.allclose(total, 0.0, rtol=0, atol=1e-13 * scale * R)
+        # the friction power is minus the tangential force times the slip velocity, and >= 0
+        tangential = force - (force @ row[6:9]) * row[6:9]
+        slip_velocity = (v1 + np.cross(w1, row[3:6] - c1)) - (v2 + np.cross(w2, row[3:6] - c2))
+        assert out[3] == pytest.approx(-tangential @ slip_velocity, rel=1e-12, abs=1e-18) and out[3] >= 0
+
+
+def test_contact_force_is_central_without_friction_and_zero_when_open():
+    c1, q1, c2, q2 = crossing(np.pi / 2, 2 * (R - r) + 1e-6)
+    (row,) = torus_contacts(c1, q1, RING, c2, q2, RING).rows
+    law = np.array([0.0, 0.0, 1.5, 0.0, 0.0, 1e-3, float(contact_modulus(*STEEL))])  # Hertz of the curvatures
+    force, torque_1, torque_2 = np.empty(3), np.empty(3), np.empty(3)
+    zero = np.zeros(3)
+    F_n, energy, _, _ = rk.contact_force(row, c1, zero, zero, c2, zero, zero, law, *GRID, force, torque_1, torque_2)
+    # Eq. (1): K_c delta^(3/2) with delta = 1 um, along the chain axis (the contact point on it: no torque)
+    K_c = float(hertz_stiffness(R, r, *STEEL))
+    assert F_n == pytest.approx(K_c * 1e-9, rel=1e-9)  # delta from the gap: rounding of 1e-6 m against R
+    assert energy == pytest.approx(0.4 * K_c * 1e-15, rel=1e-9)
+    assert np.allclose(force, [0, 0, F_n], rtol=0, atol=1e-9 * F_n)
+    assert np.allclose(torque_1, 0.0, atol=1e-9 * F_n * R) and np.allclose(torque_2, 0.0, atol=1e-9 * F_n * R)
+    row = row.copy()
+    row[0] = 1e-9  # open
+    assert rk.contact_force(row, c1, zero, zero, c2, zero, zero, law, *GRID, force, torque_1, torque_2) == (0, 0, 0, 0)
+    assert not force.any()
