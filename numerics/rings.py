@@ -14,7 +14,8 @@ State and conventions (what users rely on):
   space, the ring's axis (normal to its plane) being body z; velocities (n, 3) in space, m/s; angular
   velocities (n, 3) in the body frame, rad/s;
 - mass m0 of each ring (:attr:`~ringchain.theory.Ring.mass`) and its principal moments about a diameter and
-  about the axis, (I_1, I_3) = (m (R^2/2 + 5 r^2/8), m (R^2 + 3 r^2/4)) (the solid torus);
+  about the axis, (I_1, I_3) = (m (R^2/2 + 5 r^2/8), m (R^2 + 3 r^2/4)) (the solid torus,
+  :func:`~ringchain.theory.torus_moments`);
 - fixed rings (anchors) do not move; gravity acts along -z.
 
 Equations (Euler's, in the body frame): dx/dt = v; dq/dt = q (x) (0, omega)/2; m dv/dt = F + m g;
@@ -29,9 +30,10 @@ other in the rest configuration (:func:`~ringchain.numerics.candidate_pairs`), f
 pairs (:attr:`Rings.links`) are those whose centre circles have Gauss linking number +-1
 (:func:`~ringchain.numerics.linking_number`).  The contacts of each pair are every local minimum of the
 distance of their centre circles (:mod:`ringchain.numerics.rings_kernels`), warm-started from the last
-evaluation.  Per pair the contact law is Hertz's, F = K_c delta^(3/2) (Eq. (1)), with K_c of
-:func:`~ringchain.theory.hertz_stiffness_pair` at the pair's crossing angle (the angle between the ring
-planes at rest; pi/2 for pairs that are not linked), or the lumped power law F = K delta^n of Eq. (4)
+evaluation.  The contact law is Hertz's, F = K_c delta^(3/2), with K_c from the principal curvatures of
+both tubes at each contact and the angle between their principal directions (App. A, the general form behind
+Eq. (1): :func:`~ringchain.theory.hertz_stiffness_curvatures`; at the crossing of interlocked rings it is
+:func:`~ringchain.theory.hertz_stiffness` at their angle), or the lumped power law F = K delta^n of Eq. (4)
 (:meth:`~ringchain.theory.Ring.power_law`); optional dashpots (gamma, N s/m) and regularised Coulomb
 friction (coefficient mu, slip speed ``slip_speed``).  ``link_force`` is the normal force a linked pair
 carries (tension positive: the pair is pulled apart).
@@ -43,7 +45,7 @@ import functools
 from dataclasses import dataclass
 
 import numpy as np
-from ringchain.theory import STANDARD_GRAVITY, Ring
+from ringchain.theory import STANDARD_GRAVITY, Ring, torus_moments
 from ringchain.theory import _validate as v
 
 from .rings_contact import candidate_pairs, linking_number
@@ -55,11 +57,6 @@ LAWS = ("hertz", "power-law")
 
 #: Default slip speed of the regularised Coulomb friction, m/s: below it the friction force grows linearly.
 SLIP_SPEED = 1e-4
-
-
-def _moments(R, r, m):
-    """(I_diameter, I_axis) of a solid torus, kg m^2 (to be replaced by ringchain.theory.torus_moments)."""
-    return m * (0.5 * R**2 + 0.625 * r**2), m * (R**2 + 0.75 * r**2)
 
 
 def rotation_matrices(q) -> np.ndarray:
@@ -98,7 +95,9 @@ class Rings:
     linked : ndarray of bool, shape (n_pairs,)
         Which candidates are interlocked.
     stiffness, exponent : ndarray, shape (n_pairs,)
-        The law F = K delta^n of each candidate pair (N/m^n).
+        The law F = K delta^n of each candidate pair (N/m^n): Eq. (4)'s, or for Hertz K_c at the pair's
+        crossing angle at rest (pi/2 if not linked), the scale of the run's steps (the kernels take K_c at
+        every contact from the curvatures there).
     slip_speed : float
         Slip speed of the regularised Coulomb law, m/s.
     """
@@ -207,7 +206,7 @@ class Rings:
         """Principal moments (I_diameter, I_axis) of each ring, kg m^2, shape (n, 2)."""
         R = np.array([ring.R for ring in self.rings])
         r = np.array([ring.r for ring in self.rings])
-        return np.stack(_moments(R, r, self.masses), axis=-1)
+        return np.stack(torus_moments(R, r, m=self.masses), axis=-1)
 
     @property
     def links(self) -> np.ndarray:
@@ -217,10 +216,16 @@ class Rings:
     def equilibrium(self, **options):
         """The network at its static state under gravity (a :class:`Rings` at rest there).
 
-        Built on :meth:`potential`: its energy and gradient over positions and rotation vectors.
+        The solver (energy minimisation over positions and rotation vectors) is the layouts' module
+        ``rings_static``, built on :meth:`potential` (the energy and its gradient, minus the forces and torques).
         """
-        from .rings_static import equilibrium
-
+        try:
+            from .rings_static import equilibrium
+        except ImportError:
+            raise NotImplementedError(
+                "the static solver of rigid rings (numerics/rings_static.py) is not in this build; minimise the "
+                "energy of Rings.potential (its forces and torques are minus its gradient)"
+            ) from None
         return equilibrium(self, **options)
 
     def moved(self, centres, orientations) -> Rings:
@@ -341,6 +346,8 @@ class RingsDynamics:
 
     @functools.cached_property
     def _packed(self):
+        from ringchain.theory import contact_modulus_pair, elliptical_factor_grid
+
         from .kernels import PARAMETERS, Packed
         from .rings_kernels import MAX_CONTACTS
 
@@ -348,7 +355,7 @@ class RingsDynamics:
         n, L = self.n_rings, len(model.pairs)
         R = np.array([ring.R for ring in model.rings])
         r = np.array([ring.r for ring in model.rings])
-        I1, I3 = _moments(R, r, model.masses)
+        I1, I3 = torus_moments(R, r, m=model.masses)
         bodies = np.column_stack([R, r, model.masses, I1, I3, model.fixed.astype(float), model.centres])
         warm = np.zeros((L, 1 + MAX_CONTACTS))  # no minima known: the first evaluation searches cold
         par = np.zeros((1, L, PARAMETERS))
@@ -357,10 +364,20 @@ class RingsDynamics:
         gravity = np.zeros((n, 7))
         gravity[~model.fixed, 2] = 1.0
         ints = np.array([2, 3, 7 * n, int(self.damped), n, L, 0, 0, 0, 0], dtype=np.int64)
-        kind = np.ones(L, dtype=np.int64)  # the law F = K delta^n of each pair (Rings.stiffness, exponent)
-        table, step = np.ones(4), 1.0  # the elliptical factor's table: not read by laws of kind 1
+        # The kind of rings_kernels.contact_force: 0 Hertz of the curvatures at each contact (E* per pair, the
+        # elliptical factor's table), 1 the given law F = K delta^n (Rings.stiffness, exponent).
+        hertz = model.law == "hertz"
+        kind = np.full(L, 0 if hertz else 1, dtype=np.int64)
+        table, step = elliptical_factor_grid() if hertz else (np.ones(4), 1.0)
+        table = np.ascontiguousarray(table, dtype=float)
+        moduli = np.zeros(L)
+        if hertz and L:
+            E = np.array([ring.material.E for ring in model.rings])
+            nu = np.array([ring.material.nu for ring in model.rings])
+            i, j = model.pairs.T
+            moduli = np.asarray(contact_modulus_pair(E[i], nu[i], E[j], nu[j]), dtype=float)
         return Packed(ints, np.array([model.slip_speed, step]), np.zeros((1, 7 * n)), gravity.reshape(1, -1),
-                      model.pairs[:, 0].copy(), model.pairs[:, 1].copy(), kind, par, warm, np.zeros(L), np.zeros(L),
+                      model.pairs[:, 0].copy(), model.pairs[:, 1].copy(), kind, par, warm, moduli, np.zeros(L),
                       np.ascontiguousarray(bodies), table, np.zeros(n))  # fmt: skip
 
     def packed(self):

@@ -92,30 +92,28 @@ def _rotation(q0, q1, q2, q3, R):
 
 
 @_jit()
-def _pair(m, k, x, u, R, warm, load, rec):
+def _pair(m, k, x, u, R, warm, load, rec, rows, vec, law):
     """Forces and torques of the contacts of pair ``k`` at state (x, u), added to ``load`` (n, 6: force and torque
     about the ring's centre, in space); returns (dissipated power, elastic energy).  The pair's contacts are
     found by :func:`~ringchain.numerics.rings_kernels.pair_contacts_warm` from ``warm[k]`` ([count, angles s_1
     of the last minima]; updated) and loaded by :func:`~ringchain.numerics.rings_kernels.contact_force`; the
-    CONTACTS deepest of them are described in ``rec`` (see :func:`contact_state`)."""
+    CONTACTS deepest of them are described in ``rec`` (see :func:`contact_state`).  ``rows`` (MAX_CONTACTS,
+    FIELDS), ``vec`` (9, 3) and ``law`` (LAW_PARAMETERS,) are work arrays (allocated once per evaluation)."""
     i, j = m.li[k], m.lj[k]
-    c1, c2, v1, v2, w1, w2 = np.empty(3), np.empty(3), np.empty(3), np.empty(3), np.empty(3), np.empty(3)
+    c1, c2, v1, v2, w1, w2, force, t1, t2 = vec[0], vec[1], vec[2], vec[3], vec[4], vec[5], vec[6], vec[7], vec[8]
     for c in range(3):
         c1[c] = m.coupling[i, 6 + c] + x[7 * i + c]
         c2[c] = m.coupling[j, 6 + c] + x[7 * j + c]
         v1[c], v2[c] = u[7 * i + c], u[7 * j + c]
         w1[c] = R[i, c, 0] * u[7 * i + 3] + R[i, c, 1] * u[7 * i + 4] + R[i, c, 2] * u[7 * i + 5]
         w2[c] = R[j, c, 0] * u[7 * j + 3] + R[j, c, 1] * u[7 * j + 4] + R[j, c, 2] * u[7 * j + 5]
-    rows = np.empty((rings_kernels.MAX_CONTACTS, rings_kernels.FIELDS))
     count, _, _ = rings_kernels.pair_contacts_warm(
         c1, x[7 * i + 3 : 7 * i + 7], m.coupling[i, 0], m.coupling[i, 1], c2, x[7 * j + 3 : 7 * j + 7],
         m.coupling[j, 0], m.coupling[j, 1], rings_kernels.N_SCAN, warm[k, 1:], int(warm[k, 0]), 8, rows,
     )  # fmt: skip
     warm[k, 0] = count
-    law = np.empty(rings_kernels.LAW_PARAMETERS)
     law[0], law[1], law[2], law[3] = m.kind[k], m.par[0, k, 0], m.par[0, k, 1], m.par[0, k, 2]
     law[4], law[5], law[6] = m.par[0, k, 3], m.floats[0], m.spans[k]
-    force, t1, t2 = np.empty(3), np.empty(3), np.empty(3)
     power, energy = 0.0, 0.0
     for slot in range(rec.shape[0]):
         rec[slot, 0] = -np.inf
@@ -155,9 +153,10 @@ def loads(m, x, u, R, out):
         for c in range(6):
             out[r, c] = 0.0
     power, energy = 0.0, 0.0
-    rec = np.empty((CONTACTS, 12))
+    rec, vec = np.empty((CONTACTS, 12)), np.empty((9, 3))
+    rows, law = np.empty((rings_kernels.MAX_CONTACTS, rings_kernels.FIELDS)), np.empty(rings_kernels.LAW_PARAMETERS)
     for k in range(m.li.size):
-        pk, ek = _pair(m, k, x, u, R, m.rest_vectors, out, rec)
+        pk, ek = _pair(m, k, x, u, R, m.rest_vectors, out, rec, rows, vec, law)
         power += pk
         energy += ek
     return power, energy
@@ -228,6 +227,8 @@ def contact_state(m, xs, us, warm, out):
     n = m.ints[4]
     R = np.empty((n, 3, 3))
     load = np.zeros((n, 6))
+    vec = np.empty((9, 3))
+    rows, law = np.empty((rings_kernels.MAX_CONTACTS, rings_kernels.FIELDS)), np.empty(rings_kernels.LAW_PARAMETERS)
     for k_t in range(xs.shape[0]):
         x, u = xs[k_t], us[k_t]
         for r in range(n):
@@ -237,7 +238,7 @@ def contact_state(m, xs, us, warm, out):
             for slot in range(CONTACTS):
                 for c in range(12):
                     out[k_t, k, slot, c] = 0.0
-            _pair(m, k, x, u, R, warm, load, out[k_t, k])
+            _pair(m, k, x, u, R, warm, load, out[k_t, k], rows, vec, law)
 
 
 # -- velocity Verlet with the free rotor -------------------------------------------------------------------------
