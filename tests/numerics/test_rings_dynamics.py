@@ -134,24 +134,28 @@ def test_static_pull_gives_the_hertz_approach(angle):
     np.testing.assert_allclose(drop, (F / K_c) ** (2 / 3), rtol=1e-6)
 
 
-def rattling_rings(friction=0.0):
+def rattling_rings(friction=0.0, law="power-law"):
     """Four rings of a chain, free, no gravity, set moving and spinning at random (seeded)."""
     rng = np.random.default_rng(29)
-    rings = straight_chain(4, friction=friction)
+    rings = straight_chain(4, friction=friction, law=law)
     velocity = 0.3 * rng.standard_normal((4, 3))
     spin = 20.0 * rng.standard_normal((4, 3))
     return rings, velocity, spin
 
 
-def test_conservation_without_losses():
-    rings, velocity, spin = rattling_rings()
+@pytest.mark.parametrize("law", ["power-law", "hertz"])
+def test_conservation_without_losses(law):
+    rings, velocity, spin = rattling_rings(law=law)
     t = np.linspace(0.0, 2e-3, 201)
     sim = simulate(rings, t[-1], velocity=velocity, angular_velocity=spin, gravity=False, t_eval=t, rtol=1e-12)
     energy = sim.energy()
     impact = energy.kinetic[0]
     assert sim.link_force.max() > 0.0  # the rings did collide
-    # Energy to 1e-8 of the impact energy, momentum to 1e-12, angular momentum to 1e-10 (the issue).
-    assert np.ptp(energy.total) <= 1e-8 * impact
+    # Energy to 1e-8 of the impact energy, momentum to 1e-12, angular momentum to 1e-10 (the issue).  The energy
+    # holds for a law of fixed stiffness; the Hertz law takes K_c from the curvatures at the contact, which
+    # change with the pose, so that its force is not exactly the gradient of K_c delta^(5/2)/(5/2): a drift of
+    # the order of the change of K_c times the contact energy (2e-7 of the impact energy measured here).
+    assert np.ptp(energy.total) <= (1e-8 if law == "power-law" else 1e-6) * impact
     p = sim.linear_momentum()
     scale = np.sum(rings.masses * np.linalg.norm(velocity, axis=1))
     assert np.abs(p - p[0]).max() <= 1e-12 * scale
