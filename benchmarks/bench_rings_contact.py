@@ -86,7 +86,7 @@ def main():
     counts, state, stats = np.zeros(m, np.int64), np.zeros((m, rk.MAX_CONTACTS)), np.zeros(3, np.int64)
 
     def cold():
-        rk.pairs_contacts(centres, quats, radii, tubes, pairs, args.scan, False, 6, state, counts, out, stats)
+        rk.pairs_contacts(centres, quats, radii, tubes, pairs, args.scan, rk.COLD, 6, state, counts, out, stats)
         return stats.copy()
 
     cold()  # compile
@@ -98,10 +98,26 @@ def main():
 
     def warm():
         counts[:], state[:] = cold_counts, cold_state
-        rk.pairs_contacts(shifted, moved, radii, tubes, pairs, args.scan, True, 6, state, counts, out, stats)
+        rk.pairs_contacts(shifted, moved, radii, tubes, pairs, args.scan, rk.WARM, 6, state, counts, out, stats)
         return stats.copy()
 
     t_warm, warm_stats = best_of(args.repeat, warm)
+
+    def follow():  # one Newton step from the cold call's angles, no check: what a Runge-Kutta stage needs
+        counts[:], state[:] = cold_counts, cold_state
+        rk.pairs_contacts(shifted, moved, radii, tubes, pairs, args.scan, rk.FOLLOW, 1, state, counts, out, stats)
+        return stats.copy()
+
+    t_follow, follow_stats = best_of(args.repeat, follow)
+    single = np.empty((rk.MAX_CONTACTS, rk.FIELDS))
+    s0, n0 = cold_state[0].copy(), int(cold_counts[0])
+
+    def python_calls():  # one pair followed from Python, m times: the cost of a call from Python
+        for _ in range(m):
+            rk.pair_contacts_follow(shifted[0], moved[0], R, r, shifted[1], moved[1], R, r, s0, n0, 1, single)
+
+    python_calls()
+    t_python, _ = best_of(args.repeat, python_calls)
     print(f"{m} pairs ({n} linked, {n} resting); n_scan {args.scan}; best of {args.repeat}; "
           f"load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")  # fmt: skip
     print(f"contacts (minima) per pair: {cold_counts.mean():.2f}")
@@ -109,6 +125,9 @@ def main():
     print(f"warm: {t_warm / m * 1e6:8.2f} us per pair, {warm_stats[0] / m:.2f} Newton iterations per pair, "
           f"fell back on the cold search for {warm_stats[2]} of {m} pairs; "
           f"step: turn {args.turn} rad, move {args.move} R")  # fmt: skip
+    print(f"follow: {t_follow / m * 1e6:8.2f} us per pair (one Newton step per minimum, no check; "
+          f"{follow_stats[2]} fell back on the cold search)")  # fmt: skip
+    print(f"one pair_contacts_follow called from Python: {t_python / m * 1e6:.2f} us (the call's own cost)")
 
     # the two contacts below theta_min: their offset on circle 1 against the angle
     ring = Ring(R, r)

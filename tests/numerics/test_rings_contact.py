@@ -252,6 +252,26 @@ def test_warm_start_follows_the_minima_and_agrees_with_the_cold_search():
     assert abs(warm[0, 0] - cold[0, 0]) < 1e-17
 
 
+def test_following_a_minimum_between_searches_errs_to_second_order():
+    c1, q1, c2, q2 = crossing(np.radians(70), 2 * (R - r) + 1e-6)
+    out = np.empty((rk.MAX_CONTACTS, rk.FIELDS))
+    rows, _ = rk.pair_contacts(c1, q1, R, r, c2, q2, R, r, rk.N_SCAN, out)
+    previous = out[:rows, 1].copy()
+    turned = quaternion(about([0.3, 1.0, 0.2], 1e-3) * Rotation.from_quat(np.r_[q2[1:], q2[0]]))
+    converged = np.empty_like(out)
+    rk.pair_contacts(c1, q1, R, r, c2, turned, R, r, rk.N_SCAN, converged)
+    moved = abs(converged[0, 1] - previous[0])
+    followed = np.empty_like(out)
+    assert rk.pair_contacts_follow(c1, q1, R, r, c2, turned, R, r, previous, rows, 0, followed) == 1
+    # at the old angle: the distance of the circles is stationary at its minimum, so the gap is larger by about
+    # f'' ds^2/2, f'' = R^2 g''/f at most of the order R^2/f (1/m), ds the minimum's move
+    excess = followed[0, 0] - converged[0, 0]
+    assert 0 <= excess <= R**2 / converged[0, 14] * moved**2
+    # one Newton step: quadratic convergence leaves ds^2 of angle, its square of gap: rounding
+    assert rk.pair_contacts_follow(c1, q1, R, r, c2, turned, R, r, previous, rows, 1, followed) == 1
+    assert abs(followed[0, 0] - converged[0, 0]) < 1e-17
+
+
 def test_warm_start_falls_back_when_the_contact_splits():
     theta_min = float(minimum_contact_angle(R, r))
     c1, q1, c2, q2 = crossing(theta_min + np.radians(1))
@@ -351,7 +371,7 @@ def test_compiled_stiffness_equals_the_theory_function():
             expected = float(hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, angle, *STEEL, *STEEL))
         except ValueError:  # A <= 0: no single Hertz ellipse
             continue
-        K_c = rk.hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, np.cos(angle), E_star, *GRID)
+        K_c = rk.hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, np.cos(angle), E_star, 690.0, *GRID)
         assert K_c == pytest.approx(expected, rel=1e-13)  # the same arithmetic in another order: rounding
 
 
@@ -361,7 +381,7 @@ def test_stiffness_at_a_found_crossing_is_hertz_stiffness(degrees):
     c1, q1, c2, q2 = crossing(theta)
     contacts = torus_contacts(c1, q1, RING, c2, q2, RING, margin=np.inf)
     row = contacts.rows[0]
-    K_c = rk.hertz_stiffness_curvatures(*row[9:14], float(contact_modulus(*STEEL)), *GRID)
+    K_c = rk.hertz_stiffness_curvatures(*row[9:14], float(contact_modulus(*STEEL)), 690.0, *GRID)
     # the table's resolution, and the curvatures of the found minimum: s to 1e-13 rad changes cos(phi) by its
     # square, and the tangents' angle by 1e-13 rad
     assert K_c == pytest.approx(float(hertz_stiffness(R, r, *STEEL, theta)), rel=GRID_TOLERANCE + 1e-12)
@@ -387,7 +407,7 @@ def reference_force(row, c1, v1, w1, c2, v2, w2, K, n, gamma, mu, v_reg):
 @pytest.mark.parametrize("mu", [0.0, 0.3])
 def test_contact_force_against_the_numpy_reference_and_its_invariants(mu):
     rng = np.random.default_rng(21)
-    law = np.array([1.0, 3e9, 1.3, 40.0, mu, 1e-3, 0.0])  # the power law of Eq. (4), dashpot, friction
+    law = np.array([1.0, 3e9, 1.3, 40.0, mu, 1e-3, 0.0, 0.0])  # the power law of Eq. (4), dashpot, friction
     c1, q1, c2, q2 = crossing(np.radians(70), 2 * (R - r) + 3e-6)  # rings pulled 3 um apart: overlap
     contacts = torus_contacts(c1, q1, RING, c2, q2, RING)
     (row,) = contacts.rows
@@ -415,7 +435,7 @@ def test_contact_force_against_the_numpy_reference_and_its_invariants(mu):
 def test_contact_force_is_central_without_friction_and_zero_when_open():
     c1, q1, c2, q2 = crossing(np.pi / 2, 2 * (R - r) + 1e-6)
     (row,) = torus_contacts(c1, q1, RING, c2, q2, RING).rows
-    law = np.array([0.0, 0.0, 1.5, 0.0, 0.0, 1e-3, float(contact_modulus(*STEEL))])  # Hertz of the curvatures
+    law = np.array([0.0, 0.0, 1.5, 0.0, 0.0, 1e-3, float(contact_modulus(*STEEL)), 690.0])  # Hertz of the curvatures
     force, torque_1, torque_2 = np.empty(3), np.empty(3), np.empty(3)
     zero = np.zeros(3)
     F_n, energy, _, _ = rk.contact_force(row, c1, zero, zero, c2, zero, zero, law, *GRID, force, torque_1, torque_2)
@@ -429,3 +449,45 @@ def test_contact_force_is_central_without_friction_and_zero_when_open():
     row[0] = 1e-9  # open
     assert rk.contact_force(row, c1, zero, zero, c2, zero, zero, law, *GRID, force, torque_1, torque_2) == (0, 0, 0, 0)
     assert not force.any()
+
+
+def test_compiled_stiffness_is_capped_continuously_where_a_vanishes():
+    B, cap = 400.0, 10.0
+    E_star = float(contact_modulus(*STEEL))
+    # at the cap: the theory's K_c of the ellipse with ln(B/A) = 10 (surface 1 with curvatures 2A, 2B on a plane)
+    at_cap = float(hertz_stiffness_curvatures(2 * B * np.exp(-cap), 2 * B, 0.0, 0.0, 0.0, *STEEL, *STEEL))
+    for A in (0.0, -1.0, B * np.exp(-cap) * (1 - 1e-9)):  # degenerate, beyond, and just beyond the cap
+        K_c = rk.hertz_stiffness_curvatures(2 * A, 2 * B, 0.0, 0.0, 1.0, E_star, cap, *GRID)
+        assert K_c == pytest.approx(at_cap, rel=GRID_TOLERANCE + 1e-9)  # the last: K_c moves by 1e-9 / 2 of A
+    below = rk.hertz_stiffness_curvatures(2 * B * np.exp(-cap) * (1 + 1e-9), 2 * B, 0.0, 0.0, 1.0, E_star, cap, *GRID)
+    assert below == pytest.approx(at_cap, rel=1e-8)  # continuous through the cap
+
+
+def test_batch_of_pairs_equals_single_calls_cold_and_warm():
+    rng = np.random.default_rng(4)
+    centres = rng.normal(size=(6, 3)) * 0.01
+    orientations = np.array([quaternion(Rotation.random(random_state=rng)) for _ in range(6)])
+    radii, tubes = rng.uniform(15e-3, 25e-3, 6), np.full(6, 2e-3)
+    pairs = np.array([[0, 1], [1, 2], [3, 5], [2, 4]])
+    out = np.empty((4, rk.MAX_CONTACTS, rk.FIELDS))
+    counts, state, stats = np.zeros(4, np.int64), np.zeros((4, rk.MAX_CONTACTS)), np.zeros(3, np.int64)
+    rk.pairs_contacts(centres, orientations, radii, tubes, pairs, rk.N_SCAN, rk.COLD, 6, state, counts, out, stats)
+    assert stats[1] == 4 and stats[2] == 0  # four cold searches
+    for p, (i, j) in enumerate(pairs):
+        single = np.empty((rk.MAX_CONTACTS, rk.FIELDS))
+        rows, _ = rk.pair_contacts(centres[i], orientations[i], radii[i], tubes[i], centres[j], orientations[j],
+                                   radii[j], tubes[j], rk.N_SCAN, single)  # fmt: skip
+        assert counts[p] == rows and np.array_equal(out[p, :rows], single[:rows])
+        assert np.array_equal(state[p, :rows], single[:rows, 1])
+    # warm, from the same poses: each minimum confirmed in one Newton iteration or two
+    cold = out.copy()
+    rk.pairs_contacts(centres, orientations, radii, tubes, pairs, rk.N_SCAN, rk.WARM, 6, state, counts, out, stats)
+    assert stats[1] == 0 and stats[0] <= 2 * counts.sum()
+    for p in range(4):
+        # the same minima to the refinement's tolerance (s to 1e-13 rad): every field to 1e-12 of itself
+        assert np.allclose(out[p, : counts[p]], cold[p, : counts[p]], rtol=1e-12, atol=1e-12)
+    # followed with one Newton step: the same again, no search
+    rk.pairs_contacts(centres, orientations, radii, tubes, pairs, rk.N_SCAN, rk.FOLLOW, 1, state, counts, out, stats)
+    assert stats[1] == 0 and stats[0] == counts.sum()
+    for p in range(4):
+        assert np.allclose(out[p, : counts[p]], cold[p, : counts[p]], rtol=1e-12, atol=1e-12)
