@@ -96,9 +96,10 @@ LINE_POINTS = 4
 #: Default number of samples of the cold search.
 N_SCAN = 64
 #: Parameters of a contact law (a row): kind (0 the Hertz stiffness of the curvatures, 1 a given K),
-#: K (N/m^n, kind 1), n (kind 1), gamma (N s/m), mu, v_reg (m/s), E* (Pa, kind 0), the largest ln(B/A) of the
-#: Hertz ellipse (kind 0; see :func:`hertz_stiffness_curvatures`).
-LAW_PARAMETERS = 8
+#: K (N/m^n, kind 1), n (kind 1), gamma (N s/m), mu, v_reg (m/s), E* (Pa, kind 0).  A row may carry an eighth
+#: number, the largest ln(B/A) of the Hertz ellipse (kind 0; see :func:`hertz_stiffness_curvatures`); without
+#: it the ellipse is capped at the table's end, ln(B/A) = 690.
+LAW_PARAMETERS = 7
 
 _previous_cache_dir = numba.config.CACHE_DIR
 if CACHE is not None:
@@ -520,8 +521,9 @@ def contact_force(row, c1, v1, w1, c2, v2, w2, law, table, step, force, torque_1
     """Force and torques of one contact row (module notes) between ring 1 and ring 2.
 
     Parameters: ``row`` (FIELDS,); centres c (3,) m, velocities v (3,) m/s and angular velocities w (3,) rad/s,
-    all in space; ``law`` (LAW_PARAMETERS,): kind (0 Hertz of the curvatures, 1 the power law K delta^n), K,
-    n, gamma, mu, v_reg, E*, the largest ln(B/A); ``table``, ``step``: the elliptical factor (kind 0).
+    all in space; ``law`` (LAW_PARAMETERS,) or (LAW_PARAMETERS + 1,): kind (0 Hertz of the curvatures, 1 the
+    power law K delta^n), K, n, gamma, mu, v_reg, E*[, the largest ln(B/A)]; ``table``, ``step``: the elliptical
+    factor (kind 0; :func:`ringchain.theory.elliptical_factor_grid`).
     Writes the force on ring 1 (N; ring 2 gets its opposite) and the torques on rings 1 and 2 about their
     centres (N m), all in space.  Returns (normal force N, stored energy J, dashpot power W, friction power W):
     the powers are dissipated (>= 0).
@@ -534,7 +536,8 @@ def contact_force(row, c1, v1, w1, c2, v2, w2, law, table, step, force, torque_1
     if not delta > 0.0:
         return 0.0, 0.0, 0.0, 0.0
     if law[0] == 0.0:
-        K = hertz_stiffness_curvatures(row[9], row[10], row[11], row[12], row[13], law[6], law[7], table, step)
+        cap = law[7] if law.size > 7 else 690.0
+        K = hertz_stiffness_curvatures(row[9], row[10], row[11], row[12], row[13], law[6], cap, table, step)
         n = 1.5
     else:
         K = law[1]
