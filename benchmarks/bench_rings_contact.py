@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import time
 
 import numpy as np
 from bench_batch import best_of  # the benchmarks' one timer (run from benchmarks/, as each script is)
@@ -118,10 +119,19 @@ def main():
 
     python_calls()
     t_python, _ = best_of(args.repeat, python_calls)
+
+    def cpu(func):  # processor time of one call: on a loaded machine the wall time counts other processes too
+        start = time.process_time()
+        func()
+        return time.process_time() - start
+
+    c_cold, c_warm, c_follow = cpu(cold), cpu(warm), cpu(follow)
     print(f"{m} pairs ({n} linked, {n} resting); n_scan {args.scan}; best of {args.repeat}; "
           f"load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")  # fmt: skip
     print(f"contacts (minima) per pair: {cold_counts.mean():.2f}")
     print(f"cold: {t_cold / m * 1e6:8.2f} us per pair, {cold_stats[0] / m:.2f} Newton iterations per pair")
+    print(f"      (processor time per pair: cold {c_cold / m * 1e6:.2f} us, warm {c_warm / m * 1e6:.2f} us, "
+          f"follow {c_follow / m * 1e6:.2f} us)")  # fmt: skip
     print(f"warm: {t_warm / m * 1e6:8.2f} us per pair, {warm_stats[0] / m:.2f} Newton iterations per pair, "
           f"fell back on the cold search for {warm_stats[2]} of {m} pairs; "
           f"step: turn {args.turn} rad, move {args.move} R")  # fmt: skip
