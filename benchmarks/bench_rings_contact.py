@@ -9,8 +9,10 @@ call.  Prints the time per pair of each, the Newton iterations per pair, and how
 fell back on the cold search.
 
 Then the angular offset Delta of the two contacts of two linked rings below theta_min from their
-crossing, against theta: the cold search separates the two minima once Delta exceeds about one sample
-spacing 2 pi/n_scan (the choice of the default n_scan = 64, :mod:`ringchain.numerics.rings_contact`).
+crossing, against theta, their gap at the spacing 2(R - r) and their depth below the maximum between them
+(at the crossing): the cold search separates the two minima once Delta exceeds about one sample spacing
+2 pi/n_scan, and closer twins from the second, finer look that an inflection next to a minimum triggers
+(the choice of the default n_scan = 64, :mod:`ringchain.numerics.rings_contact`).
 
 Run: ``python benchmarks/bench_rings_contact.py [--pairs 2000] [--scan 64] [--turn 1e-3] [--move 1e-4]``.
 """
@@ -144,9 +146,10 @@ def main():
     theta_min = float(minimum_contact_angle(R, r))
     print(f"\nR/r = {R / r:g}: theta_min = {np.degrees(theta_min):.3f} deg; sample spacing "
           f"{360 / args.scan:.3f} deg (n_scan {args.scan})")  # fmt: skip
-    print(f"{'theta_min - theta (deg)':>24} {'Delta (deg)':>12} {'contacts found':>15} {'gap (um)':>9}")
+    print(f"{'theta_min - theta (deg)':>24} {'Delta (deg)':>12} {'contacts found':>15} {'gap (um)':>9} "
+          f"{'depth (um)':>11}")  # fmt: skip
     q1 = np.array([np.cos(-np.pi / 4), np.sin(-np.pi / 4), 0, 0])  # ring 1 in the xz plane
-    for below in (0.01, 0.1, 0.3, 0.5, 1.0, 1.5, 2.0, 5.0, 10.0):
+    for below in (0.0001, 0.001, 0.01, 0.1, 0.3, 0.5, 1.0, 1.5, 2.0, 5.0, 10.0):
         theta = theta_min - np.radians(below)
         turn = np.array([np.cos(theta / 2), 0, 0, np.sin(theta / 2)])  # about the chain axis z
         q2 = np.array([turn[0] * q1[0] - turn[3] * q1[3], turn[0] * q1[1] - turn[3] * q1[2],
@@ -154,7 +157,11 @@ def main():
         dense = torus_contacts([0, 0, 0], q1, ring, [0, 0, 2 * (R - r)], q2, ring, margin=np.inf, n_scan=4096)
         found = torus_contacts([0, 0, 0], q1, ring, [0, 0, 2 * (R - r)], q2, ring, margin=np.inf, n_scan=args.scan)
         offset = np.degrees(np.abs(dense.s_1 - 1.5 * np.pi)).max()
-        print(f"{below:24.2f} {offset:12.3f} {len(found):15d} {dense.gap.min() * 1e6:9.3f}")
+        between = np.empty((1, rk.FIELDS))  # the crossing itself, s_1 = 3 pi/2: the maximum between the two
+        rk.pair_contacts_follow(np.zeros(3), q1, R, r, np.array([0, 0, 2 * (R - r)]), q2, R, r,
+                                np.array([1.5 * np.pi]), 1, 0, between)  # fmt: skip
+        depth = between[0, 0] - dense.gap.min()
+        print(f"{below:24.4f} {offset:12.3f} {len(found):15d} {dense.gap.min() * 1e6:9.3g} {depth * 1e6:11.3g}")
 
 
 if __name__ == "__main__":

@@ -12,16 +12,18 @@ contact.  The search and its degenerate poses are described in :mod:`ringchain.n
 the compiled functions there (:func:`~ringchain.numerics.rings_kernels.pair_contacts`, its warm-started
 variant and :func:`~ringchain.numerics.rings_kernels.contact_force`) are what a time loop calls.
 
-How many samples.  The cold search finds two minima when each lies more than one sample spacing
+How many samples.  The coarse scan finds two minima when each lies more than one sample spacing
 h = 2 pi/n_scan from the maximum between them.  Two linked rings at the angle theta below theta_min
 touch at two points, on circle 1 at the angles +-Delta from the crossing, Delta growing from zero at
-theta_min; for the paper's proportions (R/r = 9) Delta reaches h = 5.6 deg (n_scan = 64) about 1 deg
-below theta_min (benchmarks/bench_rings_contact.py prints Delta against theta).  Closer to theta_min the
-two minima are within a few micrometres of gap of each other and of the maximum between them (the
-minima part as (theta_min - theta)^2, the fourth-order flat minimum of theta_min), and the search
-returns one of them: the contact is then a line more than two points, which no Hertz law describes.  A
-ring resting across an unlinked one, or two rings side by side, has minima a quarter turn or more
-apart.  Every other pair of minima (two rings crossing twice) is as far apart as its two crossings.
+theta_min as sqrt(theta_min - theta); for the paper's proportions (R/r = 9) Delta reaches h = 5.6 deg
+(n_scan = 64) about 1 deg below theta_min, where the two minima lie 6.7 um of gap below the maximum between
+them (benchmarks/bench_rings_contact.py prints Delta and that depth against theta).  Closer to theta_min the
+minimum found has an inflection next to it, and a second look at 2 h on both sides with spacing h/32 finds
+its twin: both contacts are found down to 0.001 deg below theta_min (Delta = 0.2 deg, a depth of 7e-12 m).
+A ring resting across an unlinked one, or two rings side by side, has minima a quarter turn or more apart;
+two rings crossing twice have minima as far apart as their crossings.  64 samples keep the scan cheap (its
+samples cost no trigonometric function) while every pair of minima more than h/32 = 0.18 deg from the
+maximum between them is found.
 
 The warm start.  :func:`~ringchain.numerics.rings_kernels.pair_contacts_warm` follows the minima of the
 last step with Newton's method, three iterations per minimum for a step that turns a ring by 1e-3 rad (the

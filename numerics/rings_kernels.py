@@ -20,16 +20,19 @@ g has a cusp that is a local maximum, never a minimum.
   lies where g' changes from negative to positive between two samples (a maximum, the cusp included,
   only changes it the other way, and a sample within rounding of a zero cannot make a spurious pair of
   changes).  Each bracket is refined by Newton's method safeguarded by bisection (``rtsafe``).  Two
-  minima are both found when each is more than one sample spacing 2 pi/n_scan from the maximum
-  between them; the default n_scan = 64 is justified in :mod:`ringchain.numerics.rings_contact`.
+  minima are both found when each is more than one sample spacing h = 2 pi/n_scan from the maximum
+  between them.  Where g'' <= 0 at one of the points h/32 .. h/2 on either side of a minimum found (an
+  inflection: a maximum close by, beyond which a twin may hide; :func:`_inflection_near`), the search
+  samples 2 h on both sides again at h/32, so that twins down to about h/32 from their maximum are found too
+  (the default n_scan = 64 is justified in :mod:`ringchain.numerics.rings_contact`).
 - A pose where f is constant to rounding (g varies by less than 1e-12 of its scale over the scan:
   coaxial rings, concentric or stacked) has a circle of contact, not isolated minima.  It is
   returned as ``LINE_POINTS`` contacts at s = 0, pi/2, pi, 3 pi/2, flagged (field ``line`` = 1).
 - The warm-started search (:func:`pair_contacts_warm`) takes the angles s of the minima of the last
   call and runs a few Newton iterations from each.  It falls back on the cold search when an iteration
   fails to converge, meets g'' <= 0 (the minimum merged with a maximum, or split in two: theta_min
-  crossed), finds g'' <= 0 half a sample spacing to either side (an inflection close by: the minimum is
-  about to split, or a new one is being born next to it), or two minima converge to one.  It cannot see a
+  crossed), finds an inflection close by as the cold search does (the minimum is about to split, or a new
+  one is being born next to it), or two minima converge to one.  It cannot see a
   minimum born away from the ones it tracks (a fold of f far from them; such a minimum is born shallower
   than the tracked minimum downhill of it): callers run the cold search every few steps (see
   :mod:`ringchain.numerics.rings_contact`).
@@ -291,16 +294,61 @@ def _scan(k, c1, M1, R1, r1, c2, M2, R2, r2, n_scan, out):
             _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, 2.0 * math.pi * j / LINE_POINTS, 1.0, out[j])
         return LINE_POINTS, 0
     iterations = 0
+    minima = np.empty(out.shape[0])
     rows = 0
     for i in range(found):
-        if rows == out.shape[0]:
-            break
         a = brackets[i, 0] * h
         s, it = _refine(k, R1, R2, a, a + h, brackets[i, 1], brackets[i, 2])
         iterations += it
-        _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, s, 0.0, out[rows])
-        rows += 1
+        rows = _keep(minima, rows, s)
+        if _inflection_near(k, R1, R2, s, h):  # a twin may hide next to this minimum: 2 h each side again at h/32
+            fine = h / 32.0
+            a = s - 2.0 * h
+            _, gp_a, _ = _profile(k, R1, R2, math.cos(a), math.sin(a))
+            for _ in range(128):
+                b = a + fine
+                _, gp_b, _ = _profile(k, R1, R2, math.cos(b), math.sin(b))
+                if gp_a < 0.0 <= gp_b:
+                    s_fine, it = _refine(k, R1, R2, a, b, gp_a, gp_b)
+                    iterations += it
+                    rows = _keep(minima, rows, s_fine)
+                a = b
+                gp_a = gp_b
+    for i in range(rows):
+        _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, minima[i], 0.0, out[i])
     return rows, iterations
+
+
+@_jit()
+def _inflection_near(k, R1, R2, s, h):
+    """Whether g'' <= 0 at s +- h/32, h/16, h/8, h/4 or h/2: an inflection next to the minimum at s, so a maximum
+    within about 1.2 h of it, beyond which a twin minimum may lie (for g ~ (x^2 - D^2)^2 the inflections lie
+    0.42 D from each minimum, D half their distance; these points see D from h/50 to 1.2 h)."""
+    C = math.cos(s)
+    S = math.sin(s)
+    cp = math.cos(h / 32.0)
+    sp = math.sin(h / 32.0)
+    for _ in range(5):
+        for sign in (-1.0, 1.0):
+            _, _, gpp = _profile(k, R1, R2, C * cp - sign * S * sp, S * cp + sign * C * sp)
+            if not gpp > 0.0:
+                return True
+        cp, sp = 2.0 * cp * cp - 1.0, 2.0 * sp * cp  # double the offset
+    return False
+
+
+@_jit()
+def _keep(minima, count, s):
+    """Append the angle s to ``minima[:count]`` unless it is within 1e-9 rad of one of them or the array is full."""
+    s = s % (2.0 * math.pi)
+    for i in range(count):
+        separation = abs(minima[i] - s)
+        if min(separation, 2.0 * math.pi - separation) < 1e-9:
+            return count
+    if count < minima.size:
+        minima[count] = s
+        count += 1
+    return count
 
 
 @_jit()
@@ -326,9 +374,9 @@ def pair_contacts_warm(c1, q1, R1, r1, c2, q2, R2, r2, n_scan, s_previous, n_pre
 
     Returns (number of rows, Newton iterations, 1 if it fell back on the cold search else 0).  Each minimum
     gets at most ``max_iterations`` Newton steps (each at most a quarter of the scan spacing); the cold
-    search takes over when one does not converge to 1e-12 rad, meets g'' <= 0, is not convex for half a
-    sample spacing on both sides (an inflection nearby: a minimum may be splitting, or one being born next to
-    it), or two meet (module notes).
+    search takes over when one does not converge to 1e-12 rad, meets g'' <= 0, has an inflection nearby
+    (:func:`_inflection_near`: the minimum may be splitting, or one being born next to it), or two meet
+    (module notes).
     """
     work = np.empty(27 + MAX_CONTACTS)
     M1 = work[:9].reshape((3, 3))
@@ -359,11 +407,8 @@ def pair_contacts_warm(c1, q1, R1, r1, c2, q2, R2, r2, n_scan, s_previous, n_pre
         if not converged:
             ok = False
             break
-        for side in (-0.5 * h, 0.5 * h):  # g convex for half a sample spacing each side: no extremum born nearby
-            _, _, gpp = _profile(k, R1, R2, math.cos(s + side), math.sin(s + side))
-            if not gpp > 0.0:
-                ok = False
-        if not ok:
+        if _inflection_near(k, R1, R2, s, h):  # a maximum close by: a twin, or one being born, may be missed
+            ok = False
             break
         s = s % (2.0 * math.pi)
         for j in range(i):

@@ -157,10 +157,22 @@ def test_two_contacts_below_theta_min_where_the_theory_puts_them(below):
     assert np.allclose(np.arccos(np.abs(touching.normal[:, 2])), tilt, rtol=1e-9)
 
 
-def test_search_separates_the_two_contacts_from_one_degree_below_theta_min():
-    # module notes of rings_contact: with 64 samples the two minima are separated about 1 deg below theta_min
-    theta = float(minimum_contact_angle(R, r)) - np.radians(1.2)
-    assert len(torus_contacts(*crossing(theta)[:2], RING, *crossing(theta)[2:], RING, margin=np.inf)) == 2
+@pytest.mark.parametrize("below", [0.001, 0.01, 0.3, 0.5, 1.2])
+def test_both_contacts_are_found_close_to_theta_min(below):
+    # module notes of rings_contact: the coarse scan (64 samples) separates the two minima from about 1 deg below
+    # theta_min; closer, the inflection next to the minimum found triggers a finer look that finds its twin
+    theta = float(minimum_contact_angle(R, r)) - np.radians(below)
+    contacts = torus_contacts(*crossing(theta)[:2], RING, *crossing(theta)[2:], RING, margin=np.inf)
+    assert len(contacts) == 2
+    # the two are images of each other under the half turn about the chain axis z, which maps both rings onto
+    # themselves: equal gaps, points (x, y, z) and (-x, -y, z).  The gaps to their rounding (a few 1e-18 m); the
+    # points to where the flat minima put s_1: g'' -> 0 near theta_min, and the rounding of g' (1e-16 R^2) over
+    # g'' moves the root, by 2e-13 m at 0.001 deg (measured), within 1e-6 of the points' distance from the axis
+    assert contacts.gap[0] == pytest.approx(contacts.gap[1], rel=0, abs=1e-17)
+    off_axis = np.hypot(*contacts.point[0, :2])
+    assert off_axis > 1e-5  # two points, not one found twice
+    assert np.allclose(contacts.point[0, :2], -contacts.point[1, :2], rtol=0, atol=1e-6 * off_axis)
+    assert contacts.point[0, 2] == pytest.approx(contacts.point[1, 2], abs=1e-14)
 
 
 # -- rings resting on one another; symmetric poses ----------------------------------------------------------------
