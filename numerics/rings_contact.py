@@ -28,13 +28,13 @@ maximum between them is found.
 The warm start.  :func:`~ringchain.numerics.rings_kernels.pair_contacts_warm` follows the minima of the
 last step with Newton's method, three iterations per minimum for a step that turns a ring by 1e-3 rad (the
 last confirms convergence; benchmarks/bench_rings_contact.py), and falls back on the cold search when a
-minimum is lost or an inflection comes within half a sample spacing of it (9 pairs in 4,000 for steps of
-1e-2 rad).  It cannot see a minimum born away from those it follows (such a minimum starts shallower than the
-followed minimum downhill of it), so a caller runs the cold search every few steps, and whenever a pair has
-turned by more than about h/4 since its last one.  Within a step (the stages of a Runge-Kutta method)
+minimum is lost or an inflection comes close to it (8 pairs in 8,000 for steps of 1e-2 rad).  It cannot
+see a minimum born away from those it follows (such a minimum starts shallower than the followed minimum
+downhill of it), so a caller runs the cold search every few steps, and whenever a pair has turned by more
+than about h/4 since its last one.  Within a step (the stages of a Runge-Kutta method)
 :func:`~ringchain.numerics.rings_kernels.pair_contacts_follow` takes one Newton step from the step's angles
 with no check: the gap is stationary at its minimum, so what is left is of second order.  Measured processor
-time per pair (1.5 minima each, R/r = 9): cold 2.4 us, warm 1.3 us, followed 0.9 us.
+time per pair (1.5 minima each, R/r = 9, a loaded machine): cold 2.0 us, warm 1.1 us, followed 0.6 us.
 
 The broad phase (:func:`candidate_pairs`): pairs of rings whose bounding spheres (radius R + r about the
 centre) come within ``skin`` of each other, linked or not, from a k-d tree; rebuilt when a ring has moved
