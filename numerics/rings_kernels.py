@@ -572,6 +572,13 @@ def contact_force(row, c1, v1, w1, c2, v2, w2, law, table, step, force, torque_1
     Writes the force on ring 1 (N; ring 2 gets its opposite) and the torques on rings 1 and 2 about their
     centres (N m), all in space.  Returns (normal force N, stored energy J, dashpot power W, friction power W):
     the powers are dissipated (>= 0).
+
+    With a constant K (the power law) the elastic force and torques are exactly the gradient of the stored
+    energy K delta^(n+1)/(n+1) (the gap is stationary in s_1 and s_2 at the minimum, and the contact point lies
+    on the common normal of the centre circles).  The Hertz stiffness of the curvatures changes with the pose
+    (the angle between the tubes, the place round each tube): its force leaves out the pose derivative of K,
+    so the stored energy is then conserved only to that order.  v_reg = 0 is Coulomb's law itself (the friction
+    force jumps where the slip reverses).
     """
     for i in range(3):
         force[i] = 0.0

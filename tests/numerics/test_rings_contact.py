@@ -505,3 +505,28 @@ def test_batch_of_pairs_equals_single_calls_cold_and_warm():
     assert stats[1] == 0 and stats[0] == counts.sum()
     for p in range(4):
         assert np.allclose(out[p, : counts[p]], cold[p, : counts[p]], rtol=1e-12, atol=1e-12)
+
+
+def test_power_law_force_and_torques_are_the_gradient_of_its_energy():
+    """Central differences of K delta^(n+1)/(n+1) (delta from torus_contacts) against the force and torques."""
+    K, n = 3e9, 1.3
+    law = np.array([1.0, K, n, 0.0, 0.0, 1e-3, 0.0])
+    c1, q1, c2, q2 = crossing(np.radians(65), 2 * (R - r) + 3e-6)
+    rot1 = Rotation.from_quat(np.r_[q1[1:], q1[0]]) * about([0.2, 0.1, 1.0], 0.05)  # a generic pose
+    rot2 = Rotation.from_quat(np.r_[q2[1:], q2[0]])
+    c1 = c1 + np.array([0.4e-3, -0.2e-3, 0.0])
+
+    def energy(centre, rotation):
+        gap = torus_contacts(centre, quaternion(rotation), RING, c2, quaternion(rot2), RING).gap
+        return sum(K * (-g) ** (n + 1) / (n + 1) for g in gap)
+
+    (row,) = torus_contacts(c1, quaternion(rot1), RING, c2, quaternion(rot2), RING).rows
+    force, torque_1, torque_2 = np.empty(3), np.empty(3), np.empty(3)
+    zero = np.zeros(3)
+    rk.contact_force(row, c1, zero, zero, c2, zero, zero, law, *GRID, force, torque_1, torque_2)
+    step, turn = 1e-9, 1e-7  # m, rad: truncation (step/delta)^2 ~ 1e-7 against rounding of the gap (1e-18/1e-15)
+    for axis in np.eye(3):
+        push = (energy(c1 + step * axis, rot1) - energy(c1 - step * axis, rot1)) / (2 * step)
+        twist = (energy(c1, about(axis, turn) * rot1) - energy(c1, about(axis, -turn) * rot1)) / (2 * turn)
+        assert -push == pytest.approx(force @ axis, rel=1e-5, abs=1e-6 * np.abs(force).max())
+        assert -twist == pytest.approx(torque_1 @ axis, rel=1e-5, abs=1e-6 * np.abs(force).max() * R)
