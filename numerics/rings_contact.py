@@ -196,7 +196,7 @@ def torus_contacts(centre_1, orientation_1, ring_1, centre_2, orientation_2, rin
     ring_1, ring_2 : Ring or object with R and r
         Major and tube radius of each ring, m (:class:`ringchain.theory.Ring`; 0 < r < R).
     margin : float, optional
-        Minima of the distance of the centre circles with gap below ``margin`` (m) are returned: 0 gives the
+        Minima of the distance of the centre circles with gap <= ``margin`` (m) are returned: 0 gives the
         touching and overlapping contacts; a positive margin the near ones too (``np.inf``: every minimum).
     n_scan : int, optional
         Samples of the cold search (module notes: two minima closer than about 2 pi/n_scan to the maximum
@@ -238,7 +238,7 @@ def torus_contacts(centre_1, orientation_1, ring_1, centre_2, orientation_2, rin
     out = np.empty((rk.MAX_CONTACTS, rk.FIELDS))
     rows, _ = rk.pair_contacts(c1, q1, R1, r1, c2, q2, R2, r2, int(n_scan), out)
     rows = out[:rows]
-    return TorusContacts(np.array(rows[rows[:, 0] < margin]))
+    return TorusContacts(np.array(rows[rows[:, 0] <= margin]))
 
 
 def candidate_pairs(centres, radii, *, skin=0.0):
