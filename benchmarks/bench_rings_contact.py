@@ -9,8 +9,10 @@ call.  Prints the time per pair of each, the Newton iterations per pair, and how
 fell back on the cold search.
 
 Then the angular offset Delta of the two contacts of two linked rings below theta_min from their
-crossing, against theta: the cold search separates the two minima once Delta exceeds about one sample
-spacing 2 pi/n_scan (the choice of the default n_scan = 64, :mod:`ringchain.numerics.rings_contact`).
+crossing, against theta, their gap at the spacing 2(R - r) and their depth below the maximum between them
+(at the crossing): the cold search separates the two minima once Delta exceeds about one sample spacing
+2 pi/n_scan, and closer twins from the second, finer look that an inflection next to a minimum triggers
+(the choice of the default n_scan = 64, :mod:`ringchain.numerics.rings_contact`).
 
 Run: ``python benchmarks/bench_rings_contact.py [--pairs 2000] [--scan 64] [--turn 1e-3] [--move 1e-4]``.
 """
@@ -19,6 +21,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import time
 
 import numpy as np
 from bench_batch import best_of  # the benchmarks' one timer (run from benchmarks/, as each script is)
@@ -86,7 +89,7 @@ def main():
     counts, state, stats = np.zeros(m, np.int64), np.zeros((m, rk.MAX_CONTACTS)), np.zeros(3, np.int64)
 
     def cold():
-        rk.pairs_contacts(centres, quats, radii, tubes, pairs, args.scan, False, 6, state, counts, out, stats)
+        rk.pairs_contacts(centres, quats, radii, tubes, pairs, args.scan, rk.COLD, 6, state, counts, out, stats)
         return stats.copy()
 
     cold()  # compile
@@ -98,26 +101,55 @@ def main():
 
     def warm():
         counts[:], state[:] = cold_counts, cold_state
-        rk.pairs_contacts(shifted, moved, radii, tubes, pairs, args.scan, True, 6, state, counts, out, stats)
+        rk.pairs_contacts(shifted, moved, radii, tubes, pairs, args.scan, rk.WARM, 6, state, counts, out, stats)
         return stats.copy()
 
     t_warm, warm_stats = best_of(args.repeat, warm)
+
+    def follow():  # one Newton step from the cold call's angles, no check: what a Runge-Kutta stage needs
+        counts[:], state[:] = cold_counts, cold_state
+        rk.pairs_contacts(shifted, moved, radii, tubes, pairs, args.scan, rk.FOLLOW, 1, state, counts, out, stats)
+        return stats.copy()
+
+    t_follow, follow_stats = best_of(args.repeat, follow)
+    single = np.empty((rk.MAX_CONTACTS, rk.FIELDS))
+    s0, n0 = cold_state[0].copy(), int(cold_counts[0])
+
+    def python_calls():  # one pair followed from Python, m times: the cost of a call from Python
+        for _ in range(m):
+            rk.pair_contacts_follow(shifted[0], moved[0], R, r, shifted[1], moved[1], R, r, s0, n0, 1, single)
+
+    python_calls()
+    t_python, _ = best_of(args.repeat, python_calls)
+
+    def cpu(func):  # processor time of one call: on a loaded machine the wall time counts other processes too
+        start = time.process_time()
+        func()
+        return time.process_time() - start
+
+    c_cold, c_warm, c_follow = cpu(cold), cpu(warm), cpu(follow)
     print(f"{m} pairs ({n} linked, {n} resting); n_scan {args.scan}; best of {args.repeat}; "
           f"load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores")  # fmt: skip
     print(f"contacts (minima) per pair: {cold_counts.mean():.2f}")
     print(f"cold: {t_cold / m * 1e6:8.2f} us per pair, {cold_stats[0] / m:.2f} Newton iterations per pair")
+    print(f"      (processor time per pair: cold {c_cold / m * 1e6:.2f} us, warm {c_warm / m * 1e6:.2f} us, "
+          f"follow {c_follow / m * 1e6:.2f} us)")  # fmt: skip
     print(f"warm: {t_warm / m * 1e6:8.2f} us per pair, {warm_stats[0] / m:.2f} Newton iterations per pair, "
           f"fell back on the cold search for {warm_stats[2]} of {m} pairs; "
           f"step: turn {args.turn} rad, move {args.move} R")  # fmt: skip
+    print(f"follow: {t_follow / m * 1e6:8.2f} us per pair (one Newton step per minimum, no check; "
+          f"{follow_stats[2]} fell back on the cold search)")  # fmt: skip
+    print(f"one pair_contacts_follow called from Python: {t_python / m * 1e6:.2f} us (the call's own cost)")
 
     # the two contacts below theta_min: their offset on circle 1 against the angle
     ring = Ring(R, r)
     theta_min = float(minimum_contact_angle(R, r))
     print(f"\nR/r = {R / r:g}: theta_min = {np.degrees(theta_min):.3f} deg; sample spacing "
           f"{360 / args.scan:.3f} deg (n_scan {args.scan})")  # fmt: skip
-    print(f"{'theta_min - theta (deg)':>24} {'Delta (deg)':>12} {'contacts found':>15} {'gap (um)':>9}")
+    print(f"{'theta_min - theta (deg)':>24} {'Delta (deg)':>12} {'contacts found':>15} {'gap (um)':>9} "
+          f"{'depth (um)':>11}")  # fmt: skip
     q1 = np.array([np.cos(-np.pi / 4), np.sin(-np.pi / 4), 0, 0])  # ring 1 in the xz plane
-    for below in (0.01, 0.1, 0.3, 0.5, 1.0, 1.5, 2.0, 5.0, 10.0):
+    for below in (0.0001, 0.001, 0.01, 0.1, 0.3, 0.5, 1.0, 1.5, 2.0, 5.0, 10.0):
         theta = theta_min - np.radians(below)
         turn = np.array([np.cos(theta / 2), 0, 0, np.sin(theta / 2)])  # about the chain axis z
         q2 = np.array([turn[0] * q1[0] - turn[3] * q1[3], turn[0] * q1[1] - turn[3] * q1[2],
@@ -125,7 +157,11 @@ def main():
         dense = torus_contacts([0, 0, 0], q1, ring, [0, 0, 2 * (R - r)], q2, ring, margin=np.inf, n_scan=4096)
         found = torus_contacts([0, 0, 0], q1, ring, [0, 0, 2 * (R - r)], q2, ring, margin=np.inf, n_scan=args.scan)
         offset = np.degrees(np.abs(dense.s_1 - 1.5 * np.pi)).max()
-        print(f"{below:24.2f} {offset:12.3f} {len(found):15d} {dense.gap.min() * 1e6:9.3f}")
+        between = np.empty((1, rk.FIELDS))  # the crossing itself, s_1 = 3 pi/2: the maximum between the two
+        rk.pair_contacts_follow(np.zeros(3), q1, R, r, np.array([0, 0, 2 * (R - r)]), q2, R, r,
+                                np.array([1.5 * np.pi]), 1, 0, between)  # fmt: skip
+        depth = between[0, 0] - dense.gap.min()
+        print(f"{below:24.4f} {offset:12.3f} {len(found):15d} {dense.gap.min() * 1e6:9.3g} {depth * 1e6:11.3g}")
 
 
 if __name__ == "__main__":

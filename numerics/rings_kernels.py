@@ -20,17 +20,25 @@ g has a cusp that is a local maximum, never a minimum.
   lies where g' changes from negative to positive between two samples (a maximum, the cusp included,
   only changes it the other way, and a sample within rounding of a zero cannot make a spurious pair of
   changes).  Each bracket is refined by Newton's method safeguarded by bisection (``rtsafe``).  Two
-  minima are both found when each is more than one sample spacing 2 pi/n_scan from the maximum
-  between them; the default n_scan = 64 is justified in :mod:`ringchain.numerics.rings_contact`.
+  minima are both found when each is more than one sample spacing h = 2 pi/n_scan from the maximum
+  between them.  Where g'' <= 0 at one of the points h/32 .. h/2 on either side of a minimum found (an
+  inflection: a maximum close by, beyond which a twin may hide; :func:`_inflection_near`), the search
+  samples 2 h on both sides again at h/32, so that twins down to about h/32 from their maximum are found too
+  (the default n_scan = 64 is justified in :mod:`ringchain.numerics.rings_contact`).
 - A pose where f is constant to rounding (g varies by less than 1e-12 of its scale over the scan:
   coaxial rings, concentric or stacked) has a circle of contact, not isolated minima.  It is
   returned as ``LINE_POINTS`` contacts at s = 0, pi/2, pi, 3 pi/2, flagged (field ``line`` = 1).
 - The warm-started search (:func:`pair_contacts_warm`) takes the angles s of the minima of the last
   call and runs a few Newton iterations from each.  It falls back on the cold search when an iteration
   fails to converge, meets g'' <= 0 (the minimum merged with a maximum, or split in two: theta_min
-  crossed), or two minima converge to one.  It cannot see a minimum that is born away from the ones it
-  tracks (a fold of f far from them): callers run the cold search every few steps (see
+  crossed), finds an inflection close by as the cold search does (the minimum is about to split, or a new
+  one is being born next to it), or two minima converge to one.  It cannot see a
+  minimum born away from the ones it tracks (a fold of f far from them; such a minimum is born shallower
+  than the tracked minimum downhill of it): callers run the cold search every few steps (see
   :mod:`ringchain.numerics.rings_contact`).
+- Between searches (the stages of a Runge-Kutta step), :func:`pair_contacts_follow` evaluates the rows at
+  the last angles after a fixed number of Newton steps (zero or one), with no check: the gap is stationary
+  at a minimum, so an angle off by ds errs by g'' ds^2/2.
 
 One row of ``FIELDS`` numbers per minimum (named in ``CONTACT_FIELDS`` of the Python module):
 gap (m), s_1, s_2 (rad), the contact point (3, m: midway between the two tube surfaces along the
@@ -44,6 +52,9 @@ approach delta = -gap (zero for an open contact), with K either given (the lumpe
 Eq. (4)) or the Hertz stiffness of the two surfaces' curvatures (:func:`hertz_stiffness_curvatures`,
 n = 3/2), and a regularised Coulomb friction mu F_n v_t/sqrt(|v_t|^2 + v_reg^2) opposing the slip
 v_t; the force acts at the contact point on ring 1 and its opposite on ring 2.
+
+The module's constants that the kernels read (``MAX_CONTACTS``, ``LINE_POINTS``, the modes of
+:func:`pairs_contacts`) are compiled in as constants, as Numba does with globals.
 
 The disk cache.  As :mod:`ringchain.numerics.kernels` (its folder, ``CACHE``): Numba keys a cached kernel
 on its own file, so the kernels that call one another all live in this module; a kernel of another
@@ -68,7 +79,11 @@ __all__ = [
     "rotation_matrix",
     "pair_contacts",
     "pair_contacts_warm",
+    "pair_contacts_follow",
     "pairs_contacts",
+    "COLD",
+    "WARM",
+    "FOLLOW",
     "hertz_stiffness_curvatures",
     "elliptical_factor_at",
     "contact_force",
@@ -76,15 +91,18 @@ __all__ = [
 
 #: Numbers per contact row (see the module notes).
 FIELDS = 16
-#: Most minima returned for one pair (two circles have at most four local minima of their distance;
-#: a circle of contact is returned as ``LINE_POINTS`` rows).
+#: Most minima returned for one pair: 20,000 random poses of two circles had at most two local minima of
+#: their distance (a linked pair below theta_min, a ring lying across another); eight leave room, and a
+#: circle of contact is returned as ``LINE_POINTS`` rows.
 MAX_CONTACTS = 8
 #: Rows that stand for a circle of contact (coaxial rings).
 LINE_POINTS = 4
 #: Default number of samples of the cold search.
 N_SCAN = 64
 #: Parameters of a contact law (a row): kind (0 the Hertz stiffness of the curvatures, 1 a given K),
-#: K (N/m^n, kind 1), n, gamma (N s/m), mu, v_reg (m/s), E* (Pa, kind 0).
+#: K (N/m^n, kind 1), n (kind 1), gamma (N s/m), mu, v_reg (m/s), E* (Pa, kind 0).  A row may carry an eighth
+#: number, the largest ln(B/A) of the Hertz ellipse (kind 0; see :func:`hertz_stiffness_curvatures`); without
+#: it the ellipse is capped at the table's end, ln(B/A) = 690.
 LAW_PARAMETERS = 7
 
 _previous_cache_dir = numba.config.CACHE_DIR
@@ -168,18 +186,20 @@ def _refine(k, R1, R2, a, b, gp_a, gp_b):
             a = s
         else:
             b = s
-        newton = gpp > 0.0 and abs(2.0 * gp) <= abs(step_old * gpp)
-        if newton:
-            trial = s - gp / gpp
-            newton = a < trial < b
+        newton = False
+        if gpp > 0.0:
+            trial = -gp / gpp
+            if abs(trial) <= 1e-13:  # converged: the next step is below 1e-13 rad (R 1e-13 on the circle)
+                return s + trial, it
+            newton = a < s + trial < b and abs(2.0 * gp) <= abs(step_old * gpp)
         step_old = step
         if newton:
             step = -gp / gpp
-            s = trial
+            s += step
         else:
             step = 0.5 * (b - a)
             s = a + step
-        if abs(step) <= 1e-13 or b - a <= 1e-13:
+        if b - a <= 1e-13:
             return s, it
     return s, 100
 
@@ -199,28 +219,18 @@ def _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, s, line, row):
         ux2, uy2 = 1.0, 0.0
     e = rho - R2
     f = math.sqrt(e * e + Z * Z)
-    # radial (u) and tangent (t) of both circles in space; the normal from circle 2 to circle 1
-    u1 = np.empty(3)
-    t1 = np.empty(3)
-    u2 = np.empty(3)
-    t2 = np.empty(3)
-    n = np.empty(3)
-    for i in range(3):
-        u1[i] = C * M1[i, 0] + S * M1[i, 1]
-        t1[i] = C * M1[i, 1] - S * M1[i, 0]
-        u2[i] = ux2 * M2[i, 0] + uy2 * M2[i, 1]
-        t2[i] = ux2 * M2[i, 1] - uy2 * M2[i, 0]
-        n[i] = e * u2[i] + Z * M2[i, 2]  # q1 - q2 in space
-    if f > 0.0:
-        for i in range(3):
-            n[i] /= f
+    # radial (u) and tangent (t) of both circles in space; the normal n from circle 2 to circle 1 (tuples: no
+    # allocation in the inner loop)
+    u1 = (C * M1[0, 0] + S * M1[0, 1], C * M1[1, 0] + S * M1[1, 1], C * M1[2, 0] + S * M1[2, 1])
+    t1 = (C * M1[0, 1] - S * M1[0, 0], C * M1[1, 1] - S * M1[1, 0], C * M1[2, 1] - S * M1[2, 0])
+    u2 = (ux2 * M2[0, 0] + uy2 * M2[0, 1], ux2 * M2[1, 0] + uy2 * M2[1, 1], ux2 * M2[2, 0] + uy2 * M2[2, 1])
+    t2 = (ux2 * M2[0, 1] - uy2 * M2[0, 0], ux2 * M2[1, 1] - uy2 * M2[1, 0], ux2 * M2[2, 1] - uy2 * M2[2, 0])
+    if f > 0.0:  # (q1 - q2)/f
+        n = ((e * u2[0] + Z * M2[0, 2]) / f, (e * u2[1] + Z * M2[1, 2]) / f, (e * u2[2] + Z * M2[2, 2]) / f)
     else:  # the centre circles cross: the normal of both tangents (any sign), or the radial of circle 2
-        n[0] = t1[1] * t2[2] - t1[2] * t2[1]
-        n[1] = t1[2] * t2[0] - t1[0] * t2[2]
-        n[2] = t1[0] * t2[1] - t1[1] * t2[0]
+        n = (t1[1] * t2[2] - t1[2] * t2[1], t1[2] * t2[0] - t1[0] * t2[2], t1[0] * t2[1] - t1[1] * t2[0])
         norm = math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2])
-        for i in range(3):
-            n[i] = n[i] / norm if norm > 0.0 else u2[i]
+        n = (n[0] / norm, n[1] / norm, n[2] / norm) if norm > 0.0 else u2
     row[0] = f - r1 - r2
     row[1] = s % (2.0 * math.pi)
     row[2] = math.atan2(uy2, ux2) % (2.0 * math.pi)
@@ -257,8 +267,7 @@ def _scan(k, c1, M1, R1, r1, c2, M2, R2, r2, n_scan, out):
     S = 0.0
     g_min = math.inf
     g_max = -math.inf
-    brackets = np.empty(2 * MAX_CONTACTS, dtype=np.int64)
-    slopes = np.empty((2 * MAX_CONTACTS, 2))
+    brackets = np.empty((2 * MAX_CONTACTS, 3))  # sample index, g' at both ends
     found = 0
     gp_first = 0.0
     gp_prev = 0.0
@@ -268,17 +277,17 @@ def _scan(k, c1, M1, R1, r1, c2, M2, R2, r2, n_scan, out):
         g_max = max(g_max, g)
         if j == 0:
             gp_first = gp
-        elif gp_prev < 0.0 <= gp and found < brackets.size:
-            brackets[found] = j - 1
-            slopes[found, 0] = gp_prev
-            slopes[found, 1] = gp
+        elif gp_prev < 0.0 <= gp and found < brackets.shape[0]:
+            brackets[found, 0] = j - 1
+            brackets[found, 1] = gp_prev
+            brackets[found, 2] = gp
             found += 1
         gp_prev = gp
         C, S = C * ch - S * sh, S * ch + C * sh
-    if gp_prev < 0.0 <= gp_first and found < brackets.size:
-        brackets[found] = n_scan - 1
-        slopes[found, 0] = gp_prev
-        slopes[found, 1] = gp_first
+    if gp_prev < 0.0 <= gp_first and found < brackets.shape[0]:
+        brackets[found, 0] = n_scan - 1
+        brackets[found, 1] = gp_prev
+        brackets[found, 2] = gp_first
         found += 1
     scale = k[0] * k[0] + k[1] * k[1] + k[2] * k[2] + R1 * R1 + R2 * R2
     if g_max - g_min <= 1e-12 * scale:  # a circle of contact: LINE_POINTS rows
@@ -286,16 +295,61 @@ def _scan(k, c1, M1, R1, r1, c2, M2, R2, r2, n_scan, out):
             _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, 2.0 * math.pi * j / LINE_POINTS, 1.0, out[j])
         return LINE_POINTS, 0
     iterations = 0
+    minima = np.empty(out.shape[0])
     rows = 0
     for i in range(found):
-        if rows == out.shape[0]:
-            break
-        a = brackets[i] * h
-        s, it = _refine(k, R1, R2, a, a + h, slopes[i, 0], slopes[i, 1])
+        a = brackets[i, 0] * h
+        s, it = _refine(k, R1, R2, a, a + h, brackets[i, 1], brackets[i, 2])
         iterations += it
-        _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, s, 0.0, out[rows])
-        rows += 1
+        rows = _keep(minima, rows, s)
+        if _inflection_near(k, R1, R2, s, h):  # a twin may hide next to this minimum: 2 h each side again at h/32
+            fine = h / 32.0
+            a = s - 2.0 * h
+            _, gp_a, _ = _profile(k, R1, R2, math.cos(a), math.sin(a))
+            for _ in range(128):
+                b = a + fine
+                _, gp_b, _ = _profile(k, R1, R2, math.cos(b), math.sin(b))
+                if gp_a < 0.0 <= gp_b:
+                    s_fine, it = _refine(k, R1, R2, a, b, gp_a, gp_b)
+                    iterations += it
+                    rows = _keep(minima, rows, s_fine)
+                a = b
+                gp_a = gp_b
+    for i in range(rows):
+        _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, minima[i], 0.0, out[i])
     return rows, iterations
+
+
+@_jit()
+def _inflection_near(k, R1, R2, s, h):
+    """Whether g'' <= 0 at s +- h/32, h/16, h/8, h/4 or h/2: an inflection next to the minimum at s, so a maximum
+    within about 1.2 h of it, beyond which a twin minimum may lie (for g ~ (x^2 - D^2)^2 the inflections lie
+    0.42 D from each minimum, D half their distance; these points see D from h/50 to 1.2 h)."""
+    C = math.cos(s)
+    S = math.sin(s)
+    cp = math.cos(h / 32.0)
+    sp = math.sin(h / 32.0)
+    for _ in range(5):
+        for sign in (-1.0, 1.0):
+            _, _, gpp = _profile(k, R1, R2, C * cp - sign * S * sp, S * cp + sign * C * sp)
+            if not gpp > 0.0:
+                return True
+        cp, sp = 2.0 * cp * cp - 1.0, 2.0 * sp * cp  # double the offset
+    return False
+
+
+@_jit()
+def _keep(minima, count, s):
+    """Append the angle s to ``minima[:count]`` unless it is within 1e-9 rad of one of them or the array is full."""
+    s = s % (2.0 * math.pi)
+    for i in range(count):
+        separation = abs(minima[i] - s)
+        if min(separation, 2.0 * math.pi - separation) < 1e-9:
+            return count
+    if count < minima.size:
+        minima[count] = s
+        count += 1
+    return count
 
 
 @_jit()
@@ -306,9 +360,10 @@ def pair_contacts(c1, q1, R1, r1, c2, q2, R2, r2, n_scan, out):
     R2, r2 (m); n_scan samples of the scan; ``out`` (MAX_CONTACTS, FIELDS) receives one row per minimum
     (module notes).  Returns (number of rows, Newton iterations spent in the refinement).
     """
-    M1 = np.empty((3, 3))
-    M2 = np.empty((3, 3))
-    k = np.empty(9)
+    work = np.empty(27)
+    M1 = work[:9].reshape((3, 3))
+    M2 = work[9:18].reshape((3, 3))
+    k = work[18:]
     _pose(c1, q1, c2, q2, M1, M2, k)
     return _scan(k, c1, M1, R1, r1, c2, M2, R2, r2, n_scan, out)
 
@@ -320,16 +375,19 @@ def pair_contacts_warm(c1, q1, R1, r1, c2, q2, R2, r2, n_scan, s_previous, n_pre
 
     Returns (number of rows, Newton iterations, 1 if it fell back on the cold search else 0).  Each minimum
     gets at most ``max_iterations`` Newton steps (each at most a quarter of the scan spacing); the cold
-    search takes over when one does not converge to 1e-12 rad, meets g'' <= 0, or two meet (module notes).
+    search takes over when one does not converge to 1e-12 rad, meets g'' <= 0, has an inflection nearby
+    (:func:`_inflection_near`: the minimum may be splitting, or one being born next to it), or two meet
+    (module notes).
     """
-    M1 = np.empty((3, 3))
-    M2 = np.empty((3, 3))
-    k = np.empty(9)
+    work = np.empty(27 + MAX_CONTACTS)
+    M1 = work[:9].reshape((3, 3))
+    M2 = work[9:18].reshape((3, 3))
+    k = work[18:27]
+    found = work[27:]
     _pose(c1, q1, c2, q2, M1, M2, k)
     h = 2.0 * math.pi / n_scan
     iterations = 0
     ok = 0 < n_previous <= out.shape[0]
-    found = np.empty(MAX_CONTACTS)
     for i in range(n_previous if ok else 0):
         s = s_previous[i]
         converged = False
@@ -350,6 +408,9 @@ def pair_contacts_warm(c1, q1, R1, r1, c2, q2, R2, r2, n_scan, s_previous, n_pre
         if not converged:
             ok = False
             break
+        if _inflection_near(k, R1, R2, s, h):  # a maximum close by: a twin, or one being born, may be missed
+            ok = False
+            break
         s = s % (2.0 * math.pi)
         for j in range(i):
             separation = abs(found[j] - s)
@@ -367,16 +428,50 @@ def pair_contacts_warm(c1, q1, R1, r1, c2, q2, R2, r2, n_scan, s_previous, n_pre
 
 
 @_jit()
-def pairs_contacts(centres, orientations, R, r, pairs, n_scan, warm, max_iterations, state, counts, out, stats):
-    """The contacts of many pairs of rings in one call (the narrow phase of a step).
+def pair_contacts_follow(c1, q1, R1, r1, c2, q2, R2, r2, s_previous, n_previous, newton_steps, out):
+    """The rows of the minima followed from ``s_previous[:n_previous]`` by exactly ``newton_steps`` Newton steps
+    (0: evaluated at those angles), with no check and no fallback: for the stages of a Runge-Kutta step between
+    two searches.  The distance is stationary at a minimum, so an angle off by ds changes the gap by only
+    g'' ds^2/2 (second order).  Returns 0 if a Newton step met g'' <= 0 (that minimum is no longer near: search
+    again), else 1 (with no Newton step, always 1).
+    """
+    work = np.empty(27)
+    M1 = work[:9].reshape((3, 3))
+    M2 = work[9:18].reshape((3, 3))
+    k = work[18:]
+    _pose(c1, q1, c2, q2, M1, M2, k)
+    ok = 1
+    for i in range(n_previous):
+        s = s_previous[i]
+        for _ in range(newton_steps):
+            _, gp, gpp = _profile(k, R1, R2, math.cos(s), math.sin(s))
+            if not gpp > 0.0:
+                ok = 0
+                break
+            s -= gp / gpp
+        _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, s, 0.0, out[i])
+    return ok
+
+
+#: Modes of :func:`pairs_contacts`.
+COLD, WARM, FOLLOW = 0, 1, 2
+
+
+@_jit()
+def pairs_contacts(centres, orientations, R, r, pairs, n_scan, mode, iterations, state, counts, out, stats):
+    """The contacts of many pairs of rings in one call (the narrow phase of a step, or of a stage).
 
     Parameters: ``centres`` (n, 3) m, ``orientations`` (n, 4) quaternions (w, x, y, z), ``R``, ``r`` (n,) m;
-    ``pairs`` (m, 2) int; ``warm``: start each pair from ``state[p, :counts[p]]`` (the angles s_1 of its last
-    minima; a pair with counts[p] == 0 gets the cold search) or, if False, search every pair cold.
-    ``out`` (m, MAX_CONTACTS, FIELDS) receives each pair's rows; ``counts`` (m,) their number and ``state``
-    their angles s_1 (both updated in place for the next call).  ``stats`` (3,) int receives the Newton
-    iterations, the cold searches and the fallbacks of warm starts.  Every minimum is returned, touching or
-    not: a contact carries force where its gap (field 0) is negative.
+    ``pairs`` (m, 2) int; ``mode``: ``COLD`` searches every pair from scratch (:func:`pair_contacts`), ``WARM``
+    starts each pair from ``state[p, :counts[p]]``, the angles s_1 of its last minima, with at most
+    ``iterations`` Newton steps each (:func:`pair_contacts_warm`; a pair with counts[p] == 0 is searched cold),
+    ``FOLLOW`` takes exactly ``iterations`` Newton steps from them with no check (:func:`pair_contacts_follow`;
+    a pair that meets g'' <= 0 is searched cold).  ``out`` (m, MAX_CONTACTS, FIELDS) receives each pair's rows;
+    ``counts`` (m,) their number and ``state`` their angles s_1 (both updated in place for the next call, except
+    by a follow, which leaves them for the step's search; a follow that fell back on the cold search updates
+    them).  ``stats`` (3,) int receives the Newton
+    iterations, the cold searches and the warm starts or follows that fell back on one.  Every minimum is
+    returned, touching or not: a contact carries force where its gap (field 0) is negative.
     """
     stats[0] = 0
     stats[1] = 0
@@ -384,17 +479,22 @@ def pairs_contacts(centres, orientations, R, r, pairs, n_scan, warm, max_iterati
     for p in range(pairs.shape[0]):
         i = pairs[p, 0]
         j = pairs[p, 1]
-        if warm and counts[p] > 0:
-            rows, iterations, fell_back = pair_contacts_warm(centres[i], orientations[i], R[i], r[i], centres[j],
-                                                             orientations[j], R[j], r[j], n_scan, state[p],
-                                                             counts[p], max_iterations, out[p])  # fmt: skip
+        c1, q1, R1, r1 = centres[i], orientations[i], R[i], r[i]
+        c2, q2, R2, r2 = centres[j], orientations[j], R[j], r[j]
+        if mode == FOLLOW and counts[p] > 0:
+            if pair_contacts_follow(c1, q1, R1, r1, c2, q2, R2, r2, state[p], counts[p], iterations, out[p]) == 1:
+                stats[0] += iterations * counts[p]
+                continue
+            stats[2] += 1
+        if mode == WARM and counts[p] > 0:
+            rows, spent, fell_back = pair_contacts_warm(c1, q1, R1, r1, c2, q2, R2, r2, n_scan, state[p], counts[p],
+                                                        iterations, out[p])  # fmt: skip
             stats[1] += fell_back
             stats[2] += fell_back
         else:
-            rows, iterations = pair_contacts(centres[i], orientations[i], R[i], r[i], centres[j], orientations[j],
-                                             R[j], r[j], n_scan, out[p])  # fmt: skip
+            rows, spent = pair_contacts(c1, q1, R1, r1, c2, q2, R2, r2, n_scan, out[p])
             stats[1] += 1
-        stats[0] += iterations
+        stats[0] += spent
         counts[p] = rows
         for c in range(rows):
             state[p, c] = out[p, c, 1]
@@ -428,13 +528,15 @@ def elliptical_factor_at(s, table, step):
 
 
 @_jit()
-def hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, cos_angle, E_star, table, step):
+def hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, cos_angle, E_star, max_log_ratio, table, step):
     """K_c (N/m^1.5) of two surfaces with principal curvatures (k1a, k1b), (k2a, k2b) (1/m, convex positive)
     whose first principal directions make the angle with cosine ``cos_angle``; E* in Pa.
 
     Hertz's sums (App. A, Eqs. (A2a)-(A2b)), K_c = 4/3 E* (2A)^(-1/2) Gamma(B/A) with Gamma from ``table``
-    (:func:`ringchain.theory.elliptical_factor_grid`).  A relative curvature A <= 0 (no single Hertz ellipse:
-    a degenerate minimum) is raised to B e^-690, the most elongated ellipse of the table.
+    (:func:`ringchain.theory.elliptical_factor_grid`), as :func:`ringchain.theory.hertz_stiffness_curvatures`.
+    K_c grows without bound as A -> 0 (a minimum about to split: theta_min at a crossing); the ellipse is
+    capped at ln(B/A) = ``max_log_ratio`` (and at the table's end, 690): a smaller A, zero or negative
+    included, is raised to B exp(-max_log_ratio), which keeps K_c finite and continuous.
     """
     d1 = k1a - k1b
     d2 = k2a - k2b
@@ -444,15 +546,18 @@ def hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, cos_angle, E_star, table, ste
     difference = 0.5 * math.sqrt(radicand) if radicand > 0.0 else 0.0
     A = 0.5 * (total - difference)
     B = A + difference
+    cap = math.log1p(max_log_ratio) if max_log_ratio > 0.0 else 0.0
     top = (table.size - 1) * step
-    if A > 0.0:
+    if not cap < top:
+        cap = top
+    if A > 0.0 and math.log1p(difference / A) < max_log_ratio:
         s = math.log1p(math.log1p(difference / A))
-        if s > top:
-            s = top
+        if s > cap:
+            s = cap
     else:
-        s = top
-    if s >= top:
-        A = B * math.exp(-math.expm1(top))
+        s = cap
+    if s >= cap:
+        A = B * math.exp(-math.expm1(s))
     gamma = elliptical_factor_at(s, table, step)
     return 4.0 / 3.0 * E_star / math.sqrt(2.0 * A) * gamma
 
@@ -462,11 +567,19 @@ def contact_force(row, c1, v1, w1, c2, v2, w2, law, table, step, force, torque_1
     """Force and torques of one contact row (module notes) between ring 1 and ring 2.
 
     Parameters: ``row`` (FIELDS,); centres c (3,) m, velocities v (3,) m/s and angular velocities w (3,) rad/s,
-    all in space; ``law`` (LAW_PARAMETERS,): kind (0 Hertz of the curvatures, 1 the power law K delta^n), K,
-    n, gamma, mu, v_reg, E*; ``table``, ``step``: the elliptical factor (kind 0).
+    all in space; ``law`` (LAW_PARAMETERS,) or (LAW_PARAMETERS + 1,): kind (0 Hertz of the curvatures, 1 the
+    power law K delta^n), K, n, gamma, mu, v_reg, E*[, the largest ln(B/A)]; ``table``, ``step``: the elliptical
+    factor (kind 0; :func:`ringchain.theory.elliptical_factor_grid`).
     Writes the force on ring 1 (N; ring 2 gets its opposite) and the torques on rings 1 and 2 about their
     centres (N m), all in space.  Returns (normal force N, stored energy J, dashpot power W, friction power W):
     the powers are dissipated (>= 0).
+
+    With a constant K (the power law) the elastic force and torques are exactly the gradient of the stored
+    energy K delta^(n+1)/(n+1) (the gap is stationary in s_1 and s_2 at the minimum, and the contact point lies
+    on the common normal of the centre circles).  The Hertz stiffness of the curvatures changes with the pose
+    (the angle between the tubes, the place round each tube): its force leaves out the pose derivative of K,
+    so the stored energy is then conserved only to that order.  v_reg = 0 is Coulomb's law itself (the friction
+    force jumps where the slip reverses).
     """
     for i in range(3):
         force[i] = 0.0
@@ -476,24 +589,22 @@ def contact_force(row, c1, v1, w1, c2, v2, w2, law, table, step, force, torque_1
     if not delta > 0.0:
         return 0.0, 0.0, 0.0, 0.0
     if law[0] == 0.0:
-        K = hertz_stiffness_curvatures(row[9], row[10], row[11], row[12], row[13], law[6], table, step)
+        cap = law[7] if law.size > 7 else 690.0
+        K = hertz_stiffness_curvatures(row[9], row[10], row[11], row[12], row[13], law[6], cap, table, step)
         n = 1.5
     else:
         K = law[1]
         n = law[2]
     elastic = K * delta * math.sqrt(delta) if n == 1.5 else K * delta**n
     energy = elastic * delta / (n + 1.0)
-    # velocity of ring 1's material point at the contact relative to ring 2's
-    rel = np.empty(3)
-    a1 = np.empty(3)
-    a2 = np.empty(3)
-    for i in range(3):
-        a1[i] = row[3 + i] - c1[i]
-        a2[i] = row[3 + i] - c2[i]
-    for i in range(3):
-        j = (i + 1) % 3
-        m = (i + 2) % 3
-        rel[i] = (v1[i] + w1[j] * a1[m] - w1[m] * a1[j]) - (v2[i] + w2[j] * a2[m] - w2[m] * a2[j])
+    # lever arms from the centres, and the velocity of ring 1's material point at the contact relative to ring 2's
+    a1 = (row[3] - c1[0], row[4] - c1[1], row[5] - c1[2])
+    a2 = (row[3] - c2[0], row[4] - c2[1], row[5] - c2[2])
+    rel = (
+        (v1[0] + w1[1] * a1[2] - w1[2] * a1[1]) - (v2[0] + w2[1] * a2[2] - w2[2] * a2[1]),
+        (v1[1] + w1[2] * a1[0] - w1[0] * a1[2]) - (v2[1] + w2[2] * a2[0] - w2[0] * a2[2]),
+        (v1[2] + w1[0] * a1[1] - w1[1] * a1[0]) - (v2[2] + w2[0] * a2[1] - w2[1] * a2[0]),
+    )
     normal_speed = rel[0] * row[6] + rel[1] * row[7] + rel[2] * row[8]
     delta_rate = -normal_speed
     normal = elastic + law[3] * delta_rate
@@ -501,11 +612,8 @@ def contact_force(row, c1, v1, w1, c2, v2, w2, law, table, step, force, torque_1
         normal = 0.0
     # the dashpot's share of the normal force (with the bracket: normal - elastic) and the power it takes
     dashpot_power = (normal - elastic) * delta_rate
-    slip = np.empty(3)
-    slip2 = 0.0
-    for i in range(3):
-        slip[i] = rel[i] - normal_speed * row[6 + i]
-        slip2 += slip[i] * slip[i]
+    slip = (rel[0] - normal_speed * row[6], rel[1] - normal_speed * row[7], rel[2] - normal_speed * row[8])
+    slip2 = slip[0] * slip[0] + slip[1] * slip[1] + slip[2] * slip[2]
     mu = law[4]
     factor = 0.0
     if mu > 0.0 and slip2 > 0.0:
@@ -513,11 +621,12 @@ def contact_force(row, c1, v1, w1, c2, v2, w2, law, table, step, force, torque_1
     for i in range(3):
         force[i] = normal * row[6 + i] - factor * slip[i]
     friction_power = factor * slip2
-    for i in range(3):
-        j = (i + 1) % 3
-        m = (i + 2) % 3
-        torque_1[i] = a1[j] * force[m] - a1[m] * force[j]
-        torque_2[i] = -(a2[j] * force[m] - a2[m] * force[j])
+    torque_1[0] = a1[1] * force[2] - a1[2] * force[1]
+    torque_1[1] = a1[2] * force[0] - a1[0] * force[2]
+    torque_1[2] = a1[0] * force[1] - a1[1] * force[0]
+    torque_2[0] = -(a2[1] * force[2] - a2[2] * force[1])
+    torque_2[1] = -(a2[2] * force[0] - a2[0] * force[2])
+    torque_2[2] = -(a2[0] * force[1] - a2[1] * force[0])
     return normal, energy, dashpot_power, friction_power
 
 

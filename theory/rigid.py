@@ -20,7 +20,7 @@ The derivation, step by step (each step a function returning SymPy objects):
    curvature A (:func:`ringchain.theory.contact.circular_limit`) and Gamma the elliptical factor of the shape
    B/A (:func:`ringchain.theory.contact.elliptical_factor`, Johnson Sec. 4.2).
 5. Numbers for an inner loop: :func:`elliptical_factor_grid` solves the shape equation once for Gamma at
-   s = ln(1 + ln(B/A)) = j h, h = 1/256, j = 0 .. 1675 (ln(B/A) up to 690, as the table of
+   s = ln(1 + ln(B/A)) = j h, h = 1/256, j = 0 .. 1674 (ln(B/A) up to 690, as the table of
    :mod:`.contact`), by bisection on ln(1 - m) in the Carlson form of Johnson's equations
    (:func:`ringchain.theory.contact.carlson_form`).  Between the nodes Gamma is the cubic through the four
    nearest values: the error is about h^4 |Gamma''''|/24 < 1e-12 (the tests measure it against
@@ -221,7 +221,7 @@ def elliptical_factor_grid():
 
     Returns
     -------
-    values : ndarray (1676,)
+    values : ndarray (1675,)
         Gamma at the nodes (read-only); Gamma(0) = 1 (the circle), decreasing.
     step : float
         h = :data:`ELLIPTICAL_GRID_STEP` = 1/256.

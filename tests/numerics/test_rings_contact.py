@@ -157,10 +157,22 @@ def test_two_contacts_below_theta_min_where_the_theory_puts_them(below):
     assert np.allclose(np.arccos(np.abs(touching.normal[:, 2])), tilt, rtol=1e-9)
 
 
-def test_search_separates_the_two_contacts_from_one_degree_below_theta_min():
-    # module notes of rings_contact: with 64 samples the two minima are separated about 1 deg below theta_min
-    theta = float(minimum_contact_angle(R, r)) - np.radians(1.2)
-    assert len(torus_contacts(*crossing(theta)[:2], RING, *crossing(theta)[2:], RING, margin=np.inf)) == 2
+@pytest.mark.parametrize("below", [0.001, 0.01, 0.3, 0.5, 1.2])
+def test_both_contacts_are_found_close_to_theta_min(below):
+    # module notes of rings_contact: the coarse scan (64 samples) separates the two minima from about 1 deg below
+    # theta_min; closer, the inflection next to the minimum found triggers a finer look that finds its twin
+    theta = float(minimum_contact_angle(R, r)) - np.radians(below)
+    contacts = torus_contacts(*crossing(theta)[:2], RING, *crossing(theta)[2:], RING, margin=np.inf)
+    assert len(contacts) == 2
+    # the two are images of each other under the half turn about the chain axis z, which maps both rings onto
+    # themselves: equal gaps, points (x, y, z) and (-x, -y, z).  The gaps to their rounding (a few 1e-18 m); the
+    # points to where the flat minima put s_1: g'' -> 0 near theta_min, and the rounding of g' (1e-16 R^2) over
+    # g'' moves the root, by 2e-13 m at 0.001 deg (measured), within 1e-6 of the points' distance from the axis
+    assert contacts.gap[0] == pytest.approx(contacts.gap[1], rel=0, abs=1e-17)
+    off_axis = np.hypot(*contacts.point[0, :2])
+    assert off_axis > 1e-5  # two points, not one found twice
+    assert np.allclose(contacts.point[0, :2], -contacts.point[1, :2], rtol=0, atol=1e-6 * off_axis)
+    assert contacts.point[0, 2] == pytest.approx(contacts.point[1, 2], abs=1e-14)
 
 
 # -- rings resting on one another; symmetric poses ----------------------------------------------------------------
@@ -250,6 +262,26 @@ def test_warm_start_follows_the_minima_and_agrees_with_the_cold_search():
     # both converge to the same minimum: s to 1e-12 rad moves the gap by less than R s^2
     assert np.allclose(warm[:rows_warm, :15], cold[:rows_cold, :15], rtol=0, atol=1e-9)
     assert abs(warm[0, 0] - cold[0, 0]) < 1e-17
+
+
+def test_following_a_minimum_between_searches_errs_to_second_order():
+    c1, q1, c2, q2 = crossing(np.radians(70), 2 * (R - r) + 1e-6)
+    out = np.empty((rk.MAX_CONTACTS, rk.FIELDS))
+    rows, _ = rk.pair_contacts(c1, q1, R, r, c2, q2, R, r, rk.N_SCAN, out)
+    previous = out[:rows, 1].copy()
+    turned = quaternion(about([0.3, 1.0, 0.2], 1e-3) * Rotation.from_quat(np.r_[q2[1:], q2[0]]))
+    converged = np.empty_like(out)
+    rk.pair_contacts(c1, q1, R, r, c2, turned, R, r, rk.N_SCAN, converged)
+    moved = abs(converged[0, 1] - previous[0])
+    followed = np.empty_like(out)
+    assert rk.pair_contacts_follow(c1, q1, R, r, c2, turned, R, r, previous, rows, 0, followed) == 1
+    # at the old angle: the distance of the circles is stationary at its minimum, so the gap is larger by about
+    # f'' ds^2/2, f'' = R^2 g''/f at most of the order R^2/f (1/m), ds the minimum's move
+    excess = followed[0, 0] - converged[0, 0]
+    assert 0 <= excess <= R**2 / converged[0, 14] * moved**2
+    # one Newton step: quadratic convergence leaves ds^2 of angle, its square of gap: rounding
+    assert rk.pair_contacts_follow(c1, q1, R, r, c2, turned, R, r, previous, rows, 1, followed) == 1
+    assert abs(followed[0, 0] - converged[0, 0]) < 1e-17
 
 
 def test_warm_start_falls_back_when_the_contact_splits():
@@ -351,7 +383,7 @@ def test_compiled_stiffness_equals_the_theory_function():
             expected = float(hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, angle, *STEEL, *STEEL))
         except ValueError:  # A <= 0: no single Hertz ellipse
             continue
-        K_c = rk.hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, np.cos(angle), E_star, *GRID)
+        K_c = rk.hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, np.cos(angle), E_star, 690.0, *GRID)
         assert K_c == pytest.approx(expected, rel=1e-13)  # the same arithmetic in another order: rounding
 
 
@@ -361,7 +393,7 @@ def test_stiffness_at_a_found_crossing_is_hertz_stiffness(degrees):
     c1, q1, c2, q2 = crossing(theta)
     contacts = torus_contacts(c1, q1, RING, c2, q2, RING, margin=np.inf)
     row = contacts.rows[0]
-    K_c = rk.hertz_stiffness_curvatures(*row[9:14], float(contact_modulus(*STEEL)), *GRID)
+    K_c = rk.hertz_stiffness_curvatures(*row[9:14], float(contact_modulus(*STEEL)), 690.0, *GRID)
     # the table's resolution, and the curvatures of the found minimum: s to 1e-13 rad changes cos(phi) by its
     # square, and the tangents' angle by 1e-13 rad
     assert K_c == pytest.approx(float(hertz_stiffness(R, r, *STEEL, theta)), rel=GRID_TOLERANCE + 1e-12)
@@ -412,10 +444,12 @@ def test_contact_force_against_the_numpy_reference_and_its_invariants(mu):
         assert out[3] == pytest.approx(-tangential @ slip_velocity, rel=1e-12, abs=1e-18) and out[3] >= 0
 
 
-def test_contact_force_is_central_without_friction_and_zero_when_open():
+@pytest.mark.parametrize("cap", [None, 10.0], ids=["row of 7", "row with a cap"])
+def test_contact_force_is_central_without_friction_and_zero_when_open(cap):
     c1, q1, c2, q2 = crossing(np.pi / 2, 2 * (R - r) + 1e-6)
     (row,) = torus_contacts(c1, q1, RING, c2, q2, RING).rows
-    law = np.array([0.0, 0.0, 1.5, 0.0, 0.0, 1e-3, float(contact_modulus(*STEEL))])  # Hertz of the curvatures
+    law = [0.0, 0.0, 1.5, 0.0, 0.0, 1e-3, float(contact_modulus(*STEEL))]  # Hertz of the curvatures
+    law = np.array(law if cap is None else [*law, cap])  # a circle: no cap of ln(B/A) changes it
     force, torque_1, torque_2 = np.empty(3), np.empty(3), np.empty(3)
     zero = np.zeros(3)
     F_n, energy, _, _ = rk.contact_force(row, c1, zero, zero, c2, zero, zero, law, *GRID, force, torque_1, torque_2)
@@ -429,3 +463,70 @@ def test_contact_force_is_central_without_friction_and_zero_when_open():
     row[0] = 1e-9  # open
     assert rk.contact_force(row, c1, zero, zero, c2, zero, zero, law, *GRID, force, torque_1, torque_2) == (0, 0, 0, 0)
     assert not force.any()
+
+
+def test_compiled_stiffness_is_capped_continuously_where_a_vanishes():
+    B, cap = 400.0, 10.0
+    E_star = float(contact_modulus(*STEEL))
+    # at the cap: the theory's K_c of the ellipse with ln(B/A) = 10 (surface 1 with curvatures 2A, 2B on a plane)
+    at_cap = float(hertz_stiffness_curvatures(2 * B * np.exp(-cap), 2 * B, 0.0, 0.0, 0.0, *STEEL, *STEEL))
+    for A in (0.0, -1.0, B * np.exp(-cap) * (1 - 1e-9)):  # degenerate, beyond, and just beyond the cap
+        K_c = rk.hertz_stiffness_curvatures(2 * A, 2 * B, 0.0, 0.0, 1.0, E_star, cap, *GRID)
+        assert K_c == pytest.approx(at_cap, rel=GRID_TOLERANCE + 1e-9)  # the last: K_c moves by 1e-9 / 2 of A
+    below = rk.hertz_stiffness_curvatures(2 * B * np.exp(-cap) * (1 + 1e-9), 2 * B, 0.0, 0.0, 1.0, E_star, cap, *GRID)
+    assert below == pytest.approx(at_cap, rel=1e-8)  # continuous through the cap
+
+
+def test_batch_of_pairs_equals_single_calls_cold_and_warm():
+    rng = np.random.default_rng(4)
+    centres = rng.normal(size=(6, 3)) * 0.01
+    orientations = np.array([quaternion(Rotation.random(random_state=rng)) for _ in range(6)])
+    radii, tubes = rng.uniform(15e-3, 25e-3, 6), np.full(6, 2e-3)
+    pairs = np.array([[0, 1], [1, 2], [3, 5], [2, 4]])
+    out = np.empty((4, rk.MAX_CONTACTS, rk.FIELDS))
+    counts, state, stats = np.zeros(4, np.int64), np.zeros((4, rk.MAX_CONTACTS)), np.zeros(3, np.int64)
+    rk.pairs_contacts(centres, orientations, radii, tubes, pairs, rk.N_SCAN, rk.COLD, 6, state, counts, out, stats)
+    assert stats[1] == 4 and stats[2] == 0  # four cold searches
+    for p, (i, j) in enumerate(pairs):
+        single = np.empty((rk.MAX_CONTACTS, rk.FIELDS))
+        rows, _ = rk.pair_contacts(centres[i], orientations[i], radii[i], tubes[i], centres[j], orientations[j],
+                                   radii[j], tubes[j], rk.N_SCAN, single)  # fmt: skip
+        assert counts[p] == rows and np.array_equal(out[p, :rows], single[:rows])
+        assert np.array_equal(state[p, :rows], single[:rows, 1])
+    # warm, from the same poses: each minimum confirmed in one Newton iteration or two
+    cold = out.copy()
+    rk.pairs_contacts(centres, orientations, radii, tubes, pairs, rk.N_SCAN, rk.WARM, 6, state, counts, out, stats)
+    assert stats[1] == 0 and stats[0] <= 2 * counts.sum()
+    for p in range(4):
+        # the same minima to the refinement's tolerance (s to 1e-13 rad): every field to 1e-12 of itself
+        assert np.allclose(out[p, : counts[p]], cold[p, : counts[p]], rtol=1e-12, atol=1e-12)
+    # followed with one Newton step: the same again, no search
+    rk.pairs_contacts(centres, orientations, radii, tubes, pairs, rk.N_SCAN, rk.FOLLOW, 1, state, counts, out, stats)
+    assert stats[1] == 0 and stats[0] == counts.sum()
+    for p in range(4):
+        assert np.allclose(out[p, : counts[p]], cold[p, : counts[p]], rtol=1e-12, atol=1e-12)
+
+
+def test_power_law_force_and_torques_are_the_gradient_of_its_energy():
+    """Central differences of K delta^(n+1)/(n+1) (delta from torus_contacts) against the force and torques."""
+    K, n = 3e9, 1.3
+    law = np.array([1.0, K, n, 0.0, 0.0, 1e-3, 0.0])
+    c1, q1, c2, q2 = crossing(np.radians(65), 2 * (R - r) + 3e-6)
+    rot1 = Rotation.from_quat(np.r_[q1[1:], q1[0]]) * about([0.2, 0.1, 1.0], 0.05)  # a generic pose
+    rot2 = Rotation.from_quat(np.r_[q2[1:], q2[0]])
+    c1 = c1 + np.array([0.4e-3, -0.2e-3, 0.0])
+
+    def energy(centre, rotation):
+        gap = torus_contacts(centre, quaternion(rotation), RING, c2, quaternion(rot2), RING).gap
+        return sum(K * (-g) ** (n + 1) / (n + 1) for g in gap)
+
+    (row,) = torus_contacts(c1, quaternion(rot1), RING, c2, quaternion(rot2), RING).rows
+    force, torque_1, torque_2 = np.empty(3), np.empty(3), np.empty(3)
+    zero = np.zeros(3)
+    rk.contact_force(row, c1, zero, zero, c2, zero, zero, law, *GRID, force, torque_1, torque_2)
+    step, turn = 1e-9, 1e-7  # m, rad: truncation (step/delta)^2 ~ 1e-7 against rounding of the gap (1e-18/1e-15)
+    for axis in np.eye(3):
+        push = (energy(c1 + step * axis, rot1) - energy(c1 - step * axis, rot1)) / (2 * step)
+        twist = (energy(c1, about(axis, turn) * rot1) - energy(c1, about(axis, -turn) * rot1)) / (2 * turn)
+        assert -push == pytest.approx(force @ axis, rel=1e-5, abs=1e-6 * np.abs(force).max())
+        assert -twist == pytest.approx(torque_1 @ axis, rel=1e-5, abs=1e-6 * np.abs(force).max() * R)
