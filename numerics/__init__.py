@@ -14,12 +14,12 @@ underscore name reached across modules):
    sensors, grids, ensembles of disordered chains, inverse problems, the impedance experiment,
    the effective mass, the numerical contact at any angle, where the energy of a yielding chain goes;
 3. layouts: ``chain``, ``chain_kinds``, ``chain_file``, ``disorder``, ``yielding``, ``ring_chain``, ``ring_beam``,
-   ``sheet``, ``sheet_runs`` -- a Chain builds a Network; graded, alternating and joined chains; chain files;
-   random rings about a nominal one; contacts that yield; the ring-resolved chain (its own dynamics) and the
-   ring as a curved beam; sheets of interlinked rings in two dimensions and their runs;
+   ``sheet``, ``sheet_runs``, ``rings`` -- a Chain builds a Network; graded, alternating and joined chains; chain
+   files; random rings about a nominal one; contacts that yield; the ring-resolved chain (its own dynamics) and
+   the ring as a curved beam; sheets of interlinked rings in two dimensions and their runs; rigid rings in space;
 4. the engine: ``integrate``, ``kernels``, ``results``, ``traces``, ``plots``, ``executors``, ``signals``,
-   ``rings_contact``, ``rings_kernels`` -- the integrator layer and its compiled kernels, result records,
-   measurement files, figures, where sweeps run, reading pulses; the contacts of rigid tori in space;
+   ``rings_contact``, ``rings_kernels``, ``rings_step`` -- the integrator layer and its compiled kernels, result
+   records, measurement files, figures, where sweeps run, reading pulses; the contacts and motion of rigid tori;
 5. ``network``, ``laws`` -- sites and links; contact laws with one contract.
 
 What each module owns:
@@ -53,6 +53,10 @@ What each module owns:
   curvatures), :func:`candidate_pairs` (the broad phase), :func:`linking_number`; :mod:`.rings_kernels` -- the
   same search, cold and warm-started, and the force at a contact (Hertz of the local curvatures or the power
   law of Eq. (4), dashpot, regularised Coulomb friction), compiled;
+- :mod:`.rings` -- :class:`Rings` (rigid tori in space: position, quaternion, velocity, body angular velocity,
+  fixed rings, gravity; a model of the engine), :class:`RingsSimulation` (``centres``, ``orientations``,
+  ``link_force``, ``contacts``, ``energy()``); :mod:`.rings_step` -- their compiled right-hand side (Euler's
+  equations) and the Verlet splitting with the exact free rotor;
 - :mod:`.ring_beam`, :mod:`.ring_chain` -- :class:`RingModel`, :class:`ReducedRing` (a ring as an
   elastic curved beam) and :class:`RingChain` (a chain of them), :func:`simulate_rings`;
 - :mod:`.experiment` -- :func:`~.experiment.run_experiment`: a drop read at two sensors (``ringchain
