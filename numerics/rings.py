@@ -623,17 +623,9 @@ class RingsSimulation:
 
 
 @dataclass(frozen=True, eq=False)
-class RingsBatch:
-    """Runs of rigid rings (one, for now): ``batch[0]`` is a :class:`RingsSimulation`."""
-
-    t: np.ndarray
-    x: np.ndarray
-    u: np.ndarray
-    dissipated: np.ndarray
-    g: float
-    model: Rings
-    stats: dict
-    impact_velocity: np.ndarray
+class RingsBatch(RingsSimulation):
+    """Runs of rigid rings (one, for now): arrays of shape (B, T, ...); ``batch[0]`` is a :class:`RingsSimulation`
+    (``impact_velocity`` has one value per run)."""
 
     def __len__(self) -> int:
         return self.x.shape[0]
