@@ -348,8 +348,8 @@ def check_links(centres, orientations, rings, links) -> None:
     missing = intended - candidates
     if missing:
         i, j = min(missing)
-        raise ValueError(f"rings {i} and {j} are listed as linked but are {np.linalg.norm(centres[i] - centres[j]):g} m "
-                         "apart: too far to interlock")  # fmt: skip
+        distance = np.linalg.norm(centres[i] - centres[j])
+        raise ValueError(f"rings {i} and {j} are listed as linked but are {distance:g} m apart: too far to interlock")
     if pairs.size == 0:
         return
     i, j = pairs[:, 0], pairs[:, 1]
