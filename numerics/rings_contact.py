@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["circle_gaps", "linking_numbers"]
+__all__ = ["circle_gaps", "closest_points", "linking_numbers"]
 
 
 def _frames(axes):
@@ -27,29 +27,60 @@ def _distance_to_circle(points, centre, axis, R):
     return np.hypot(h, rho - R[:, None])
 
 
-def circle_gaps(c1, n1, R1, c2, n2, R2, samples: int = 96, iterations: int = 60) -> np.ndarray:
-    """Least distance between circle 1 and circle 2 of each pair, m (sampling, then golden section)."""
-    c1, c2 = np.atleast_2d(c1), np.atleast_2d(c2)
-    n1, e1, f1 = _frames(np.atleast_2d(n1))
-    n2 = _frames(np.atleast_2d(n2))[0]
-    R1, R2 = np.broadcast_to(R1, len(c1)).astype(float), np.broadcast_to(R2, len(c1)).astype(float)
+def _circle_points(c, e, f, R, s):
+    """Points of circles (P,) at angles s (P, N): shape (P, N, 3)."""
+    return c[:, None, :] + R[:, None, None] * (np.cos(s)[..., None] * e[:, None] + np.sin(s)[..., None] * f[:, None])
+
+
+def closest_points(c1, n1, R1, c2, n2, R2, samples: int = 32, newton: int = 6, every: bool = False):
+    """Least distance between circle 1 and circle 2 of each pair, with the two closest points.
+
+    Circle 1 is sampled at ``samples`` angles, the distance of each sample from circle 2 being exact
+    (the point's height over the plane of circle 2 and its radial offset from it); each local minimum of
+    the samples (``every=True``) or the least one is refined by ``newton`` Newton steps on that distance
+    as a function of the angle (central differences).  Returns ``(pair, distance, point_1, point_2)``:
+    the pair index of each minimum (P',), its distance (P',), m, and the closest points (P', 3).
+    """
+    c1, c2 = np.atleast_2d(np.asarray(c1, dtype=float)), np.atleast_2d(np.asarray(c2, dtype=float))
+    n1, e1, f1 = _frames(np.atleast_2d(np.asarray(n1, dtype=float)))
+    n2 = _frames(np.atleast_2d(np.asarray(n2, dtype=float)))[0]
+    R1 = np.broadcast_to(np.asarray(R1, dtype=float), len(c1))
+    R2 = np.broadcast_to(np.asarray(R2, dtype=float), len(c1))
+    step = 2 * np.pi / samples
+    f = _distance_to_circle(_circle_points(c1, e1, f1, R1, np.broadcast_to(np.arange(samples) * step,
+                            (len(c1), samples))), c2, n2, R2)  # fmt: skip
+    if every:
+        minimum = (f <= np.roll(f, 1, axis=1)) & (f < np.roll(f, -1, axis=1))
+        pair, k = np.nonzero(minimum)
+    else:
+        pair, k = np.arange(len(c1)), np.argmin(f, axis=1)
+    c1, e1, f1, R1, c2, n2, R2 = c1[pair], e1[pair], f1[pair], R1[pair], c2[pair], n2[pair], R2[pair]
 
     def distance(s):
-        points = c1[:, None, :] + R1[:, None, None] * (
-            np.cos(s)[..., None] * e1[:, None] + np.sin(s)[..., None] * f1[:, None]
-        )
-        return _distance_to_circle(points, c2, n2, R2)
+        return _distance_to_circle(_circle_points(c1, e1, f1, R1, s), c2, n2, R2)
 
-    step = 2 * np.pi / samples
-    s = np.broadcast_to(np.arange(samples) * step, (len(c1), samples))
-    best = np.argmin(distance(s), axis=1)
-    lo, hi = (best - 1) * step, (best + 1) * step
-    ratio = (np.sqrt(5) - 1) / 2
-    for _ in range(iterations):
-        a, b = hi - ratio * (hi - lo), lo + ratio * (hi - lo)
-        da, db = distance(np.stack([a, b], axis=1)).T
-        hi, lo = np.where(da < db, b, hi), np.where(da < db, lo, a)
-    return distance(0.5 * (lo + hi)[:, None])[:, 0]
+    s = k * step
+    h = 1e-4
+    for _ in range(newton):
+        lo, mid, hi = distance(np.stack([s - h, s, s + h], axis=1)).T
+        curvature = (hi - 2 * mid + lo) / (h * h)
+        move = np.where(curvature > 0, -(hi - lo) / (2 * h) / np.where(curvature > 0, curvature, 1.0), 0.0)
+        s = s + np.clip(move, -step, step)
+    if every and len(s) > 1:  # two samples of one pair that refined to the same minimum count once
+        same = (pair[1:] == pair[:-1]) & (np.abs(np.angle(np.exp(1j * (s[1:] - s[:-1])))) < 1e-6)
+        keep = np.concatenate([[True], ~same])
+        pair, s, c1, e1, f1, R1, c2, n2, R2 = (x[keep] for x in (pair, s, c1, e1, f1, R1, c2, n2, R2))
+    point_1 = _circle_points(c1, e1, f1, R1, s[:, None])[:, 0]
+    d = point_1 - c2
+    radial = d - np.einsum("pk,pk->p", d, n2)[:, None] * n2
+    radial /= np.linalg.norm(radial, axis=1, keepdims=True)
+    point_2 = c2 + R2[:, None] * radial
+    return pair, np.linalg.norm(point_2 - point_1, axis=1), point_1, point_2
+
+
+def circle_gaps(c1, n1, R1, c2, n2, R2) -> np.ndarray:
+    """Least distance between circle 1 and circle 2 of each pair, m (:func:`closest_points`)."""
+    return closest_points(c1, n1, R1, c2, n2, R2, samples=96)[1]
 
 
 def linking_numbers(c1, n1, R1, c2, n2, R2, samples: int = 720) -> np.ndarray:
