@@ -337,7 +337,7 @@ def check_links(centres, orientations, rings, links) -> None:
     """
     from scipy.spatial import cKDTree
 
-    from .rings_contact import circle_gaps, linking_numbers
+    from .rings_circles import circle_gaps, linking_numbers
 
     centres = np.asarray(centres, dtype=float)
     orientations = np.asarray(orientations, dtype=float)

@@ -26,7 +26,7 @@ import numpy as np
 from ringchain.theory import STANDARD_GRAVITY, Ring
 from ringchain.theory import _validate as v
 
-from .rings_contact import closest_points
+from .rings_circles import closest_points
 from .rings_layouts import quaternion_about, quaternion_product, ring_radii, rotate
 
 __all__ = ["equilibrium", "contact_state", "StaticState"]
