@@ -17,9 +17,9 @@ underscore name reached across modules):
    ``sheet``, ``sheet_runs`` -- a Chain builds a Network; graded, alternating and joined chains; chain files;
    random rings about a nominal one; contacts that yield; the ring-resolved chain (its own dynamics) and the
    ring as a curved beam; sheets of interlinked rings in two dimensions and their runs;
-4. the engine: ``integrate``, ``kernels``, ``results``, ``traces``, ``plots``, ``executors``, ``signals`` --
-   the integrator layer and its compiled kernels, result records, measurement files, figures, where
-   sweeps run, reading pulses;
+4. the engine: ``integrate``, ``kernels``, ``results``, ``traces``, ``plots``, ``executors``, ``signals``,
+   ``rings_contact``, ``rings_kernels`` -- the integrator layer and its compiled kernels, result records,
+   measurement files, figures, where sweeps run, reading pulses; the contacts of rigid tori in space;
 5. ``network``, ``laws`` -- sites and links; contact laws with one contract.
 
 What each module owns:
@@ -49,6 +49,10 @@ What each module owns:
 - :mod:`.sheet` -- :class:`Sheet`: square (4-in-1) and triangular (6-in-1) sheets and any layout of
   rings in a plane, hanging under gravity or pretensioned, the contact law of a ring pair at any angle;
   :mod:`.sheet_runs` -- :class:`SheetSimulation` (``link_force``, fields in NetCDF), :func:`read_sheet_run`;
+- :mod:`.rings_contact` -- :func:`torus_contacts` (every contact of two tori in any pose: gap, point, normal,
+  curvatures), :func:`candidate_pairs` (the broad phase), :func:`linking_number`; :mod:`.rings_kernels` -- the
+  same search, cold and warm-started, and the force at a contact (Hertz of the local curvatures or the power
+  law of Eq. (4), dashpot, regularised Coulomb friction), compiled;
 - :mod:`.ring_beam`, :mod:`.ring_chain` -- :class:`RingModel`, :class:`ReducedRing` (a ring as an
   elastic curved beam) and :class:`RingChain` (a chain of them), :func:`simulate_rings`;
 - :mod:`.experiment` -- :func:`~.experiment.run_experiment`: a drop read at two sensors (``ringchain
@@ -92,6 +96,7 @@ from .paper import STIFFNESS_SOURCES, PaperExperiment, paper_chain, paper_experi
 from .results import BatchSimulation, EnergyBudget, NetworkBatch, NetworkSimulation, Simulation
 from .ring_beam import ReducedRing, RingModel
 from .ring_chain import RingChain, RingSimulation, simulate_rings
+from .rings_contact import CONTACT_FIELDS, TorusContacts, candidate_pairs, linking_number, torus_contacts  # issue 29
 from .sheet import Sheet
 from .sheet_runs import SheetBatch, SheetSimulation, read_sheet_run
 from .signals import NoPulseError, PulseError, TruncatedPulseError, UnresolvedPulseError
@@ -180,4 +185,10 @@ __all__ = [
     "SheetSimulation",
     "SheetBatch",
     "read_sheet_run",
+    # issue 29: rings in space (contacts of two tori in any pose)
+    "torus_contacts",
+    "TorusContacts",
+    "CONTACT_FIELDS",
+    "candidate_pairs",
+    "linking_number",
 ]
