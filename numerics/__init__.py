@@ -96,6 +96,7 @@ from .paper import STIFFNESS_SOURCES, PaperExperiment, paper_chain, paper_experi
 from .results import BatchSimulation, EnergyBudget, NetworkBatch, NetworkSimulation, Simulation
 from .ring_beam import ReducedRing, RingModel
 from .ring_chain import RingChain, RingSimulation, simulate_rings
+from .rings import Rings, RingsBatch, RingsEnergy, RingsSimulation
 from .rings_contact import CONTACT_FIELDS, TorusContacts, candidate_pairs, linking_number, torus_contacts  # issue 29
 from .sheet import Sheet
 from .sheet_runs import SheetBatch, SheetSimulation, read_sheet_run
@@ -105,6 +106,10 @@ from .traces import DataError, read_speed_amplitude, read_static, read_traces, w
 
 __all__ = [
     "Chain",
+    "Rings",
+    "RingsSimulation",
+    "RingsBatch",
+    "RingsEnergy",
     "MODELS",
     "SUPPORTS",
     "STIFFNESS_SOURCES",

@@ -285,6 +285,8 @@ def _compiled(method, dyn, x0, u0, scales, t_eval, t_end, rtol, atol, dt, g, kee
     if dyn.damped:
         columns.append(E[:, None])
         state.append(np.zeros((B, 1)))
+    if hasattr(dyn, "tolerance_scales"):  # a model whose coordinates have several units (rigid rings)
+        columns = [dyn.tolerance_scales(X, V, E)]
     if memory is not None:  # the memory's derivative is zero: its tolerance never enters the error
         columns.append(np.repeat(X[:, None], memory.shape[1], axis=1))
         state.append(memory)
@@ -753,7 +755,7 @@ max_energy_drift
 
 
 def simulate(model, t_end, *, impact_velocity=None, drop_height=None, gravity=True, t_eval=None, initial=None,
-             **options):  # fmt: skip
+             velocity=None, angular_velocity=None, **options):  # fmt: skip
     """Integrate a chain after an impact on ring 0 (paper Eqs. (5)-(7)), or any model of the engine.
 
     Parameters
@@ -778,6 +780,10 @@ def simulate(model, t_end, *, impact_velocity=None, drop_height=None, gravity=Tr
         with every link just taut) and velocities u0 (m/s), shape (n_coords,) each;
         ``gravity`` then only says whether gravity acts.  E.g. a wave packet on a
         pre-stretched chain.
+    velocity, angular_velocity : array_like, optional
+        Rigid rings (:class:`~ringchain.numerics.Rings`) only: the initial velocities of the
+        rings, shape (n, 3), m/s in space, and angular velocities, shape (n, 3), rad/s in the
+        body frame, from their rest configuration (default zero).
 
     Other Parameters
     ----------------
@@ -838,6 +844,18 @@ def simulate(model, t_end, *, impact_velocity=None, drop_height=None, gravity=Tr
     """
     if np.ndim(impact_velocity) or np.ndim(drop_height):
         raise ValueError("simulate takes one impact; use simulate_batch for several")
+    motion = getattr(model, "initial_motion", None)
+    if velocity is not None or angular_velocity is not None:
+        if motion is None:
+            raise ValueError(
+                f"velocity and angular_velocity set the motion of rigid rings (Rings); a {type(model).__name__} "
+                "takes impact_velocity, drop_height or initial=(x0, u0)"
+            )
+        if initial is not None or impact_velocity is not None or drop_height is not None:
+            raise ValueError("give velocity/angular_velocity, an impact or an initial state, not several")
+        initial = motion(velocity, angular_velocity)
+    elif motion is not None and initial is None and impact_velocity is None and drop_height is None:
+        initial = motion()  # rigid rings released at rest
     if initial is not None:
         try:
             x0 = np.asarray(initial[0])

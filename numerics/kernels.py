@@ -101,7 +101,7 @@ def _cache_folder() -> str | None:
     folder = cache_dir()
     if folder is None:
         return None
-    folder = folder / "numba"
+    folder = folder / "numba" / _sources_key()
     try:
         folder.mkdir(parents=True, exist_ok=True)
         with tempfile.NamedTemporaryFile(dir=folder):
@@ -110,6 +110,26 @@ def _cache_folder() -> str | None:
         return None
     return os.fspath(folder)
 
+
+def _sources_key() -> str:
+    """A hash of the sources of every kernel module (this one and the rings' kernels it calls): a kernel cached
+    on disk is keyed on its own file only, so a change to a kernel it calls in another module must change the
+    folder instead."""
+    import hashlib
+
+    digest = hashlib.sha256()
+    here = os.path.dirname(os.path.abspath(__file__))
+    for name in KERNEL_MODULES:
+        try:
+            with open(os.path.join(here, name), "rb") as handle:
+                digest.update(handle.read())
+        except OSError:
+            digest.update(name.encode())
+    return digest.hexdigest()[:16]
+
+
+#: The modules whose compiled kernels call one another (the disk cache is keyed on all their sources).
+KERNEL_MODULES = ("kernels.py", "rings_step.py", "rings_kernels.py")
 
 #: Where compiled kernels are cached (None: compiled in every process).
 CACHE = _cache_folder()
@@ -153,7 +173,8 @@ _PACKED: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 def pack(model) -> Packed:
     """The :class:`Packed` form of a network or a ring-resolved chain (the dynamics of a model), made once."""
     if model not in _PACKED:
-        _PACKED[model] = pack_ring_chain(model) if hasattr(model, "ring") else pack_network(model)
+        own = getattr(model, "packed", None)  # a model packing itself (rigid rings, kind 2)
+        _PACKED[model] = own() if own else pack_ring_chain(model) if hasattr(model, "ring") else pack_network(model)
     return _PACKED[model]
 
 
@@ -434,6 +455,9 @@ def _accelerations(m, b, g, x, u, out, memory):
 @_jit(inline="always")
 def _derivative(m, b, g, y, dy, N):
     """dy/dt of the state y = [x (N), u (N), W (dissipated energy, if damped), memory (per link, if stateful)]."""
+    if m.ints[0] == 2:  # rigid rings in space (their own kernels)
+        rings_step.rings_derivative(m, b, g, y, dy, N)
+        return
     w = 2 * N + (1 if m.ints[3] else 0)
     power = _accelerations(m, b, g, y[:N], y[N : 2 * N], dy[N : 2 * N], y[w:])
     for c in range(N):
@@ -606,6 +630,8 @@ def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, 
             if n > w and _remember(m, members, y, y_new, h, N, n):  # a peak inside the step: the new memory
                 _group_derivative(m, members, g, y_new, k7, N, n)  # changes the force at y_new (first same as last)
                 evaluations += 1
+            if m.ints[0] == 2:  # rigid rings: unit quaternions after each accepted step
+                rings_step.normalise(m, y_new, G, n)
             for c in range(size):
                 y[c] = y_new[c]
                 k1[c] = k7[c]  # first same as last
@@ -764,6 +790,8 @@ def verlet(packed: Packed, x0, u0, t_eval, t_end, dt, keep, g, *, parallel=None,
     """Velocity Verlet over ``t_eval`` (steps of ``t_end``/ceil(t_end/dt)): x and u of ``keep`` (B, T, K), the
     final x and u (B, n), the exit status of each run and the step taken; with ``memory`` (B, links: laws with
     memory) also the memory at the samples (B, T, links) and at the end (B, links)."""
+    if packed.ints[0] == 2:  # rigid rings: their splitting scheme
+        return rings_step.verlet_rings(packed, x0, u0, t_eval, t_end, dt, keep, g)
     x0 = np.ascontiguousarray(x0, dtype=float)
     u0 = np.ascontiguousarray(u0, dtype=float)
     B = x0.shape[0]
@@ -785,3 +813,5 @@ def verlet(packed: Packed, x0, u0, t_eval, t_end, dt, keep, g, *, parallel=None,
 
 
 numba.config.CACHE_DIR = _previous_cache_dir
+
+from . import rings_step  # noqa: E402  (the rings' kernels import this module's Packed and CACHE)
