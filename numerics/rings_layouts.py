@@ -335,15 +335,16 @@ def check_links(centres, orientations, rings, links) -> None:
     links : array_like, shape (n_links, 2)
         The intended interlocked pairs.
     """
-    from scipy.spatial import cKDTree
-
-    from .rings_circles import circle_gaps, linking_numbers
+    from .rings_contact import candidate_pairs, linking_number, torus_contacts
 
     centres = np.asarray(centres, dtype=float)
     orientations = np.asarray(orientations, dtype=float)
-    R, r = ring_radii(rings, len(centres))
+    n_rings = len(centres)
+    R, r = ring_radii(rings, n_rings)
+    per_ring = [rings] * n_rings if isinstance(rings, Ring) else list(rings)
     intended = {tuple(sorted(map(int, pair))) for pair in np.asarray(links, dtype=int).reshape(-1, 2)}
-    pairs = cKDTree(centres).query_pairs(2 * float(np.max(R + r)), output_type="ndarray")
+    pairs = np.asarray(candidate_pairs(centres, R + r), dtype=np.intp).reshape(-1, 2)
+    pairs = np.sort(pairs, axis=1)
     candidates = {tuple(pair) for pair in pairs.tolist()}
     missing = intended - candidates
     if missing:
@@ -353,10 +354,12 @@ def check_links(centres, orientations, rings, links) -> None:
     if pairs.size == 0:
         return
     i, j = pairs[:, 0], pairs[:, 1]
-    axes = rotate(orientations, np.array([0.0, 0.0, 1.0]))
-    lk = linking_numbers(centres[i], axes[i], R[i], centres[j], axes[j], R[j])
-    gaps = circle_gaps(centres[i], axes[i], R[i], centres[j], axes[j], R[j]) - (r[i] + r[j])
-    for n in np.argsort(pairs[:, 0] * len(centres) + pairs[:, 1]):
+    lk = np.array([linking_number(centres[a], orientations[a], per_ring[a], centres[b], orientations[b], per_ring[b])
+                   for a, b in pairs])  # fmt: skip
+    gaps = np.array([np.min(torus_contacts(centres[a], orientations[a], per_ring[a], centres[b], orientations[b],
+                                           per_ring[b], margin=np.inf).gap, initial=np.inf)
+                     for a, b in pairs])  # fmt: skip
+    for n in np.lexsort((pairs[:, 1], pairs[:, 0])):
         pair = (int(i[n]), int(j[n]))
         linked = pair in intended
         if linked and abs(lk[n]) != 1:

@@ -8,10 +8,15 @@ perpendicular circles, the hanging chain's approach (F / K)^(1/n) with F the wei
 
 import numpy as np
 import pytest
-from ringchain.theory import STANDARD_GRAVITY, Ring
-
-from ringchain.numerics.rings_files import read_rings_run, rings_dataset, torus_mesh, write_rings_netcdf
-from ringchain.numerics.rings_files import write_rings_vtk
+from ringchain.numerics.rings import Rings
+from ringchain.numerics.rings_contact import torus_contacts
+from ringchain.numerics.rings_files import (
+    read_rings_run,
+    rings_dataset,
+    torus_mesh,
+    write_rings_netcdf,
+    write_rings_vtk,
+)
 from ringchain.numerics.rings_layouts import (
     chain_layout,
     check_links,
@@ -20,7 +25,7 @@ from ringchain.numerics.rings_layouts import (
     pam_layout,
     rotate,
 )
-from ringchain.numerics.rings_static import equilibrium
+from ringchain.theory import STANDARD_GRAVITY, Ring
 
 RING = Ring(0.0225, 0.0025)  # the paper's R/r = 9 ring, stainless steel
 
@@ -137,21 +142,31 @@ def test_check_links_names_the_pair():
         check_links(far, orientations, RING, links)
 
 
-@pytest.mark.parametrize("law", [None, (2.0e7, 1.2)])
+@pytest.mark.parametrize("law", ["hertz", "power-law"])
 def test_hanging_chain_stretches_each_contact_by_the_weight_below(law):
     n = 6
-    centres, orientations, links = chain_layout(n, RING)
-    state = equilibrium(centres, orientations, RING, fixed=[n - 1], force_tol=1e-10, law=law)
-    K, exponent = (RING.K_c, 1.5) if law is None else law
+    chain = Rings.chain(n, RING, law=law)
+    rest = chain.equilibrium(force_tol=1e-10, soften=False)
+    K, exponent = (RING.K_c, 1.5) if law == "hertz" else RING.power_law()
     carried = np.arange(1, n) * RING.mass * STANDARD_GRAVITY  # contact k holds rings 0..k
     expected = (carried / K) ** (1 / exponent)
-    order = np.argsort(state.pairs[:, 0])
-    np.testing.assert_array_equal(state.pairs[order], links)
-    # Residual force <= 1e-10 m g on a ring, a relative error <= 1e-10 / (k n) of the approach; the
+    approach = [-np.min(torus_contacts(rest.centres[k], rest.orientations[k], RING, rest.centres[k + 1],
+                                       rest.orientations[k + 1], RING).gap) for k in range(n - 1)]  # fmt: skip
+    # Residual force <= 1e-10 m g on a ring: a relative error <= 1e-10 m g / (n F) of each approach; the
     # position rounding (1e-17 m) is far below the approaches (1e-7 m).
-    np.testing.assert_allclose(state.approach[order], expected, rtol=1e-9)
-    # The chain stays straight and its rings unturned (symmetry): rotations below the rounding.
-    np.testing.assert_allclose(state.centres[:, :2], 0.0, atol=1e-15)
+    np.testing.assert_allclose(approach, expected, rtol=1e-9)
+    # The chain stays straight (symmetry): sideways offsets at the rounding of the forces.
+    np.testing.assert_allclose(rest.centres[:, :2], 0.0, atol=1e-15)
+
+
+def test_layouts_as_rings():
+    chain = Rings.chain(4, RING, fixed_top=False)
+    assert chain.links.tolist() == [[0, 1], [1, 2], [2, 3]] and not chain.fixed.any()
+    mail = Rings.mail(3, 3, RING)
+    assert sorted(map(tuple, mail.links.tolist())) == sorted(map(tuple, mail_layout(3, 3, RING)[2].tolist()))
+    assert np.flatnonzero(mail.fixed).tolist() == [6, 7, 8]
+    pam = Rings.pam(2, 2, 3, RING)
+    assert len(pam.links) == len(pam_layout(2, 2, 3, RING)[2])
 
 
 def test_netcdf_holds_the_inputs_and_reads_back(tmp_path):
@@ -170,7 +185,7 @@ def test_netcdf_holds_the_inputs_and_reads_back(tmp_path):
 def test_vtk_frames_are_tori_of_tube_radius_r(tmp_path):
     import meshio
 
-    centres, orientations, links = pam_layout(2, 2, 2, RING)
+    centres, orientations, _ = pam_layout(2, 2, 2, RING)
     t = np.array([0.0, 1e-3])
     pvd = write_rings_vtk(tmp_path, t, np.stack([centres, centres + 0.01]), np.stack([orientations] * 2), RING)
     assert pvd.read_text().count("<DataSet") == 2
