@@ -2,7 +2,6 @@
 
 import numpy as np
 import pytest
-
 from ringchain.numerics.cli import main
 from ringchain.numerics.rings_files import read_rings_run
 
