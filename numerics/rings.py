@@ -191,6 +191,38 @@ class Rings:
         stiffness, exponent = _pair_laws(rings, rot[..., 2], pairs, linked, law)
         return cls(centres, q, rings, flags, law, friction, dashpot, pairs, linked, stiffness, exponent, slip_speed)
 
+    @classmethod
+    def chain(cls, n_rings, ring, *, fixed_top=True, spacing=None, **options) -> Rings:
+        """The paper's chain in 3D (:func:`~ringchain.numerics.rings_layouts.chain_layout`): along z, ring 0 at
+        the bottom (the struck end), neighbours just touching, planes at 90 degrees; the top ring fixed unless
+        ``fixed_top=False`` (a free chain).  ``options`` go to :meth:`from_rings` (law, friction, dashpot)."""
+        from .rings_layouts import chain_layout
+
+        centres, orientations, _ = chain_layout(n_rings, ring, spacing=spacing)
+        fixed = [len(centres) - 1] if v.boolean("fixed_top", fixed_top) else []
+        return cls.from_rings(centres, orientations, ring, fixed=fixed, **options)
+
+    @classmethod
+    def mail(cls, rows, cols, ring, *, pattern="4-in-1", fixed_top=True, **options) -> Rings:
+        """A sheet of chain mail in the vertical xz plane (:func:`~ringchain.numerics.rings_layouts.mail_layout`),
+        its rest pose checked; the top row fixed unless ``fixed_top=False``."""
+        from .rings_layouts import mail_layout
+
+        centres, orientations, _ = mail_layout(rows, cols, ring, pattern=pattern)
+        fixed = np.arange((rows - 1) * cols, rows * cols) if v.boolean("fixed_top", fixed_top) else []
+        return cls.from_rings(centres, orientations, ring, fixed=fixed, **options)
+
+    @classmethod
+    def pam(cls, nx, ny, nz, ring, *, fixed_top=True, spacing=None, **options) -> Rings:
+        """A polycatenated block on the NbO net (:func:`~ringchain.numerics.rings_layouts.pam_layout`), its
+        rest pose checked; the rings of the top layer fixed unless ``fixed_top=False``."""
+        from .rings_layouts import pam_layout
+
+        centres, orientations, _ = pam_layout(nx, ny, nz, ring, spacing=spacing)
+        top = np.flatnonzero(np.isclose(centres[:, 2], centres[:, 2].max()))
+        fixed = top if v.boolean("fixed_top", fixed_top) else []
+        return cls.from_rings(centres, orientations, ring, fixed=fixed, **options)
+
     # -- what users read -------------------------------------------------------------------------------------------
     @property
     def n_rings(self) -> int:
