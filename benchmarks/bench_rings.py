@@ -11,7 +11,7 @@ Prints the wall time of the compile/warm-up, the wall and CPU time of the run (o
 time is the cost), the steps it took, the peak of the memory the run allocated (tracemalloc: NumPy's arrays
 included) and the peak resident memory of the process.
 
-Measured on a 2-core machine shared with other jobs (load average 13-15), before the Hertz law of the
+Measured on a 2-core machine shared with other jobs (load average 13-15), with the Hertz law of the
 curvatures: dopri5 1101 steps (6698 evaluations) in 271 s wall, Verlet 1508 steps in 80 s wall; 42 MB
 allocated at peak, 255-384 MB resident.  The goal is 20 s: not met (see the notes of the rings' kernels).
 
