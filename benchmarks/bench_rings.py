@@ -13,7 +13,7 @@ included) and the peak resident memory of the process.
 
 Measured on a 2-core machine shared with other jobs (load average 13-15), with the Hertz law of the
 curvatures: dopri5 1101 steps (6698 evaluations) in 271 s wall, Verlet 1508 steps in 80 s wall; 42 MB
-allocated at peak, 255-384 MB resident.  The goal is 20 s: not met (see the notes of the rings' kernels).
+allocated at peak, 255-384 MB resident.  The goal, 20 s on 2 free cores, is not shown met by these numbers.
 
 Run: ``python benchmarks/bench_rings.py [--rings 1000] [--duration 1e-3] [--speed 1.0] [--samples 201]
 [--method dopri5]``.
