@@ -24,6 +24,7 @@ from ringchain.theory import STANDARD_GRAVITY
 
 from .contact.angle import AngleContact, AnglePowerLaw, angle_power_law, contact_at_angle
 from .contact.bem import HALF_SPACE_LIMIT, ContactCurve, HalfSpaceWarning, PressureMaps, contact_curve
+from .contact.tori import CONTACT_FIELDS, TorusContacts, candidate_pairs, linking_number, torus_contacts
 from .engine import laws, signals
 from .engine.integrate import (
     ADAPTIVE_METHODS,
@@ -54,6 +55,7 @@ from .layouts.chain import MODELS, STRIKERS, SUPPORTS, Chain, initial_state
 from .layouts.disorder import DisorderWarning, draw_rings
 from .layouts.ring_beam import ReducedRing, RingModel
 from .layouts.ring_chain import RingChain, RingSimulation, simulate_rings
+from .layouts.rings import Rings, RingsBatch, RingsEnergy, RingsSimulation
 from .layouts.sheet import Sheet
 from .layouts.sheet_runs import SheetBatch, SheetSimulation, read_sheet_run, sheet_run_options
 
@@ -64,6 +66,10 @@ sys.modules[f"{__name__}.signals"] = signals
 
 __all__ = [
     "Chain",
+    "Rings",
+    "RingsSimulation",
+    "RingsBatch",
+    "RingsEnergy",
     "MODELS",
     "SUPPORTS",
     "STIFFNESS_SOURCES",
@@ -146,4 +152,9 @@ __all__ = [
     "SheetBatch",
     "read_sheet_run",
     "sheet_run_options",
+    "torus_contacts",
+    "TorusContacts",
+    "CONTACT_FIELDS",
+    "candidate_pairs",
+    "linking_number",
 ]

@@ -73,6 +73,13 @@ Contacts that yield (beyond the paper; modules :mod:`.subsurface` and :mod:`.pla
   contact yields, and the coefficient of restitution beyond it;
 - :data:`STAINLESS_STEEL_304_ANNEALED`, :data:`STAINLESS_STEEL_304_COLD_WORKED` -- materials with a yield strength.
 
+Rigid rings in space (beyond the paper; module :mod:`.rigid`):
+
+- :func:`torus_moments` -- the principal moments of inertia of a solid torus, integrated over its volume;
+- :func:`hertz_stiffness_curvatures`, :func:`contact_modulus_pair` -- K_c of any two surfaces from their
+  principal curvatures and the angle between them (App. A in general), the contact modulus of two materials;
+- :func:`elliptical_factor_grid` -- the elliptical factor on the grid the compiled contact law interpolates.
+
 The paper's reported numbers (Tables I-II, FE exponents) are data in :mod:`.paper_data`.
 
 One convention for every signature: the quantity a function is evaluated at comes first and may be
@@ -147,6 +154,13 @@ from .plastic import (
 )
 from .prestressed import solitary_wave_speed_prestressed
 from .pulse import impact_amplitude, solitary_wave_energy, solitary_wave_momentum
+from .rigid import (  # issue 29: rings in space
+    ELLIPTICAL_GRID_STEP,
+    contact_modulus_pair,
+    elliptical_factor_grid,
+    hertz_stiffness_curvatures,
+    torus_moments,
+)
 from .ring import bending_stiffness
 from .scattering import (  # issue 23: disorder
     chain_impedance_spread,
@@ -255,4 +269,10 @@ __all__ = [
     "restitution_coefficient",
     "STAINLESS_STEEL_304_ANNEALED",
     "STAINLESS_STEEL_304_COLD_WORKED",
+    # issue 29: rings in space
+    "torus_moments",
+    "hertz_stiffness_curvatures",
+    "contact_modulus_pair",
+    "elliptical_factor_grid",
+    "ELLIPTICAL_GRID_STEP",
 ]

@@ -32,6 +32,7 @@ from pathlib import Path
 
 from ..jobs.paper import PAPER_DROP_HEIGHT, PAPER_FIGURES, STIFFNESS_SOURCES
 from . import _options as opt
+from . import rings as rings_cli
 from . import sheet as sheet_cli
 from .ensemble import add_parser as add_ensemble_parser
 
@@ -208,7 +209,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(prog="ringchain", description=__doc__.split("\n\n")[0], allow_abbrev=False)
     parser.add_argument("--version", action="version", version=f"ringchain {_version()}")
     sub = parser.add_subparsers(
-        dest="command", required=True, metavar="{paper,ring,simulate,sweep,ensemble,cache,fit,sheet}"
+        dest="command", required=True, metavar="{paper,ring,simulate,sweep,ensemble,cache,fit,sheet,rings}"
     )
 
     p = sub.add_parser("paper", help="derive the theory, print the paper's key numbers, write the figures",
@@ -267,6 +268,7 @@ def build_parser() -> argparse.ArgumentParser:
     add_fit_parser(sub, geometry=opt.geometry_options)  # sets its own func (fit_cli.run)
     add_ensemble_parser(sub)  # ringchain ensemble: sets its own func (ensemble_cli.run)
     sheet_cli.add_parser(sub)  # ringchain sheet: sets its own func (sheet_cli.run)
+    rings_cli.add_parser(sub)  # ringchain rings: sets its own func (rings_cli.run)
     return parser
 
 

@@ -55,13 +55,15 @@ with an :class:`IntegrationError` rather than returning an unstable result.
 from __future__ import annotations
 
 import math
-import os
 import warnings
 from dataclasses import dataclass
 
 import numpy as np
 from ringchain.theory import STANDARD_GRAVITY, impact_speed
 from ringchain.theory import _validate as v
+
+from .resources import available_memory as _available_memory  # one name, patched by tests
+from .resources import format_bytes, format_duration
 
 __all__ = [
     "simulate",
@@ -300,6 +302,8 @@ def _compiled(method, dyn, x0, u0, scales, t_eval, t_end, rtol, atol, dt, g, kee
     if dyn.damped:
         columns.append(E[:, None])
         state.append(np.zeros((B, 1)))
+    if hasattr(dyn, "tolerance_scales"):  # a model whose coordinates have several units (rigid rings)
+        columns = [dyn.tolerance_scales(X, V, E)]
     if memory is not None:  # the memory's derivative is zero: its tolerance never enters the error
         columns.append(np.repeat(X[:, None], memory.shape[1], axis=1))
         state.append(memory)
@@ -434,61 +438,6 @@ class RunEstimate:
             )
         )
         return f"{size}{work}" + (f", {format_bytes(self.memory)} of memory" if memory else "")
-
-
-def format_bytes(n) -> str:
-    """``n`` bytes in kB, MB or GB, three significant digits."""
-    for unit, size in (("GB", 2**30), ("MB", 2**20), ("kB", 2**10)):
-        if n >= size:
-            return f"{n / size:.3g} {unit}"
-    return f"{n:.0f} B"
-
-
-def format_duration(seconds) -> str:
-    """A duration in s, min, h or days, three significant digits."""
-    for unit, size in (("days", 86400.0), ("h", 3600.0), ("min", 60.0)):
-        if seconds >= size:
-            return f"{seconds / size:.3g} {unit}"
-    return f"{seconds:.3g} s"
-
-
-def _available_memory() -> int | None:
-    """Bytes of memory this process can still take: MemAvailable, capped by ulimit -v and a cgroup limit.
-
-    None if none of them can be read.
-    """
-    available = None
-    try:
-        with open("/proc/meminfo") as handle:
-            for line in handle:
-                if line.startswith("MemAvailable:"):
-                    available = int(line.split()[1]) * 1024
-    except (OSError, ValueError, IndexError):
-        try:
-            available = os.sysconf("SC_AVPHYS_PAGES") * os.sysconf("SC_PAGE_SIZE")
-        except (OSError, ValueError, AttributeError):
-            pass
-    try:  # an address-space limit (ulimit -v) less what the process already maps
-        import resource
-
-        soft, _ = resource.getrlimit(resource.RLIMIT_AS)
-        if soft != resource.RLIM_INFINITY:
-            with open("/proc/self/statm") as handle:
-                mapped = int(handle.read().split()[0]) * os.sysconf("SC_PAGE_SIZE")
-            available = soft - mapped if available is None else min(available, soft - mapped)
-    except (ImportError, OSError, ValueError):
-        pass
-    try:
-        with open("/sys/fs/cgroup/memory.max") as handle:
-            limit = handle.read().strip()
-        with open("/sys/fs/cgroup/memory.current") as handle:
-            used = int(handle.read().strip())
-        if limit != "max":
-            free = int(limit) - used
-            available = free if available is None else min(available, free)
-    except (OSError, ValueError):
-        pass
-    return available
 
 
 def check_samples(n) -> int:
@@ -796,7 +745,7 @@ max_energy_drift
 
 
 def simulate(model, t_end, *, impact_velocity=None, drop_height=None, gravity=True, t_eval=None, initial=None,
-             **options):  # fmt: skip
+             velocity=None, angular_velocity=None, **options):  # fmt: skip
     """Integrate a chain after an impact on ring 0 (paper Eqs. (5)-(7)), or any model of the engine.
 
     Parameters
@@ -821,6 +770,10 @@ def simulate(model, t_end, *, impact_velocity=None, drop_height=None, gravity=Tr
         with every link just taut) and velocities u0 (m/s), shape (n_coords,) each;
         ``gravity`` then only says whether gravity acts.  E.g. a wave packet on a
         pre-stretched chain.
+    velocity, angular_velocity : array_like, optional
+        Rigid rings (:class:`~ringchain.numerics.Rings`) only: the initial velocities of the
+        rings, shape (n, 3), m/s in space, and angular velocities, shape (n, 3), rad/s in the
+        body frame, from their rest configuration (default zero).
 
     Other Parameters
     ----------------
@@ -881,6 +834,18 @@ def simulate(model, t_end, *, impact_velocity=None, drop_height=None, gravity=Tr
     """
     if np.ndim(impact_velocity) or np.ndim(drop_height):
         raise ValueError("simulate takes one impact; use simulate_batch for several")
+    motion = getattr(model, "initial_motion", None)
+    if velocity is not None or angular_velocity is not None:
+        if motion is None:
+            raise ValueError(
+                f"velocity and angular_velocity set the motion of rigid rings (Rings); a {type(model).__name__} "
+                "takes impact_velocity, drop_height or initial=(x0, u0)"
+            )
+        if initial is not None or impact_velocity is not None or drop_height is not None:
+            raise ValueError("give velocity/angular_velocity, an impact or an initial state, not several")
+        initial = motion(velocity, angular_velocity)
+    elif motion is not None and initial is None and impact_velocity is None and drop_height is None:
+        initial = motion()  # rigid rings released at rest
     if initial is not None:
         try:
             x0 = np.asarray(initial[0])

@@ -61,14 +61,14 @@ Numba freezes globals as constants in the compiled code.
 from __future__ import annotations
 
 import math
-import os
-import tempfile
 import weakref
-from typing import NamedTuple
 
 import numba
 import numpy as np
 from numba import prange
+
+from . import rings_step
+from ._compiled import CACHE, Packed
 
 __all__ = [
     "Packed",
@@ -94,26 +94,6 @@ LAW_KINDS = {"PowerLaw": 0, "LinearSpring": 1, "Dashpot": 2, "Thornton": 3, "Hun
 STATUS = {1: "too many steps", 2: "the state became non-finite", 3: "the step size fell below the time resolution"}
 
 
-def _cache_folder() -> str | None:
-    """The folder of compiled code, or None where the package's cache is disabled or not writable."""
-    from ringchain.theory._codegen import cache_dir
-
-    folder = cache_dir()
-    if folder is None:
-        return None
-    folder = folder / "numba"
-    try:
-        folder.mkdir(parents=True, exist_ok=True)
-        with tempfile.NamedTemporaryFile(dir=folder):
-            pass
-    except OSError:
-        return None
-    return os.fspath(folder)
-
-
-#: Where compiled kernels are cached (None: compiled in every process).
-CACHE = _cache_folder()
-
 _previous_cache_dir = numba.config.CACHE_DIR
 if CACHE is not None:
     numba.config.CACHE_DIR = CACHE  # read when each kernel below is decorated; restored at the end of the module
@@ -121,26 +101,6 @@ if CACHE is not None:
 
 def _jit(**options):
     return numba.njit(cache=CACHE is not None, error_model="numpy", **options)
-
-
-class Packed(NamedTuple):
-    """A model as the kernels take it (see the module notes); build it with :func:`pack_network` or
-    :func:`pack_ring_chain`."""
-
-    ints: np.ndarray  # [kind (0 network, 1 rings), dim, n_coords, damped, n_sites, n_links, rings, dofs, fixed, path]
-    floats: np.ndarray  # [K_c, exponent] of the ring-resolved chain's contact
-    inv_mass: np.ndarray  # (Bm, n_coords)
-    gravity: np.ndarray  # (Bm, n_coords): gravity's acceleration per unit g; for rings, the rigid mode
-    li: np.ndarray  # (L,) int64
-    lj: np.ndarray  # (L,) int64, -1 for the support
-    kind: np.ndarray  # (L,) int64
-    par: np.ndarray  # (Bp, L, PARAMETERS)
-    rest_vectors: np.ndarray  # (L, dim): from site i to the link's far end at rest (Network.rest_vectors)
-    spans: np.ndarray  # (L,): their lengths (Network.spans)
-    prestretch: np.ndarray  # (L,): the links' extensions at rest (Network.prestretch)
-    coupling: np.ndarray  # (n, n)
-    inv_top: np.ndarray  # (n,)
-    inv_bottom: np.ndarray  # (n,)
 
 
 def _empty(*shape, dtype=float):
@@ -153,7 +113,8 @@ _PACKED: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 def pack(model) -> Packed:
     """The :class:`Packed` form of a network or a ring-resolved chain (the dynamics of a model), made once."""
     if model not in _PACKED:
-        _PACKED[model] = pack_ring_chain(model) if hasattr(model, "ring") else pack_network(model)
+        own = getattr(model, "packed", None)  # a model packing itself (rigid rings, kind 2)
+        _PACKED[model] = own() if own else pack_ring_chain(model) if hasattr(model, "ring") else pack_network(model)
     return _PACKED[model]
 
 
@@ -434,6 +395,9 @@ def _accelerations(m, b, g, x, u, out, memory):
 @_jit(inline="always")
 def _derivative(m, b, g, y, dy, N):
     """dy/dt of the state y = [x (N), u (N), W (dissipated energy, if damped), memory (per link, if stateful)]."""
+    if m.ints[0] == 2:  # rigid rings in space (their own kernels)
+        rings_step.rings_derivative(m, b, g, y, dy, N)
+        return
     w = 2 * N + (1 if m.ints[3] else 0)
     power = _accelerations(m, b, g, y[:N], y[N : 2 * N], dy[N : 2 * N], y[w:])
     for c in range(N):
@@ -606,6 +570,8 @@ def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, 
             if n > w and _remember(m, members, y, y_new, h, N, n):  # a peak inside the step: the new memory
                 _group_derivative(m, members, g, y_new, k7, N, n)  # changes the force at y_new (first same as last)
                 evaluations += 1
+            if m.ints[0] == 2:  # rigid rings: unit quaternions after each accepted step
+                rings_step.normalise(m, y_new, G, n)
             for c in range(size):
                 y[c] = y_new[c]
                 k1[c] = k7[c]  # first same as last
@@ -764,6 +730,8 @@ def verlet(packed: Packed, x0, u0, t_eval, t_end, dt, keep, g, *, parallel=None,
     """Velocity Verlet over ``t_eval`` (steps of ``t_end``/ceil(t_end/dt)): x and u of ``keep`` (B, T, K), the
     final x and u (B, n), the exit status of each run and the step taken; with ``memory`` (B, links: laws with
     memory) also the memory at the samples (B, T, links) and at the end (B, links)."""
+    if packed.ints[0] == 2:  # rigid rings: their splitting scheme
+        return rings_step.verlet_rings(packed, x0, u0, t_eval, t_end, dt, keep, g)
     x0 = np.ascontiguousarray(x0, dtype=float)
     u0 = np.ascontiguousarray(u0, dtype=float)
     B = x0.shape[0]

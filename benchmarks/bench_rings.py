@@ -1,0 +1,72 @@
+"""Rigid rings in space: wall time and peak memory of a struck chain of 1,000 rings for 1 ms.
+
+A straight chain along z (:meth:`~ringchain.numerics.Rings.chain`: the paper's steel ring, R/r = 9, planes
+alternating, neighbours just touching, the top ring fixed), ring 0 struck along the axis at ``--speed``,
+integrated for ``--duration`` by
+:func:`ringchain.numerics.simulate` (the compiled Dormand-Prince pair at its default tolerance, or
+``--method verlet``), every ring recorded at ``--samples`` times.  The kernels are compiled (or loaded from
+the disk cache) by a short run of a small chain first, timed apart: the cold compile is a one-off cost.
+
+Prints the wall time of the compile/warm-up, the wall and CPU time of the run (on a busy machine the CPU
+time is the cost), the steps it took, the peak of the memory the run allocated (tracemalloc: NumPy's arrays
+included) and the peak resident memory of the process.
+
+Measured on a 2-core machine shared with other jobs (load average 13-15), with the Hertz law of the
+curvatures: dopri5 1101 steps (6698 evaluations) in 271 s wall, Verlet 1508 steps in 80 s wall; 42 MB
+allocated at peak, 255-384 MB resident.  The goal, 20 s on 2 free cores, is not shown met by these numbers.
+
+Run: ``python benchmarks/bench_rings.py [--rings 1000] [--duration 1e-3] [--speed 1.0] [--samples 201]
+[--method dopri5]``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import resource
+import time
+import tracemalloc
+
+import numpy as np
+from ringchain.numerics import Rings, simulate
+from ringchain.theory import Ring
+
+
+def run(n, duration, speed, samples, method):
+    rings = Rings.chain(n, Ring.from_aspect_ratio(9.0))  # the top ring fixed
+    t = np.linspace(0.0, duration, samples)
+    return simulate(rings, duration, impact_velocity=speed, gravity=False, t_eval=t, method=method)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--rings", type=int, default=1000)
+    parser.add_argument("--duration", type=float, default=1e-3, help="s")
+    parser.add_argument("--speed", type=float, default=1.0, help="impact speed, m/s")
+    parser.add_argument("--samples", type=int, default=201)
+    parser.add_argument("--method", default="dopri5", choices=["dopri5", "verlet"])
+    args = parser.parse_args()
+
+    start = time.perf_counter()
+    run(4, 1e-5, args.speed, 3, args.method)  # compile (or load) the kernels
+    warm_up = time.perf_counter() - start
+
+    tracemalloc.start()
+    start, cpu = time.perf_counter(), time.process_time()
+    sim = run(args.rings, args.duration, args.speed, args.samples, args.method)
+    wall, cpu = time.perf_counter() - start, time.process_time() - cpu
+    _, peak = tracemalloc.get_traced_memory()
+    tracemalloc.stop()
+    rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 2**10  # kB -> MB (Linux)
+
+    force = sim.link_force
+    front = int(np.argmax(force[-1] > 0.01 * force.max())) if force.max() > 0 else 0
+    steps = sim.stats.get("steps", [sim.stats.get("nfev")])
+    print(f"{args.rings} rings, {args.duration * 1e3:g} ms after an impact at {args.speed:g} m/s, {args.method}")
+    print(f"  compile or load of the kernels (a 4-ring run): {warm_up:.1f} s")
+    print(f"  run: {wall:.1f} s wall, {cpu:.1f} s of CPU, {steps[0]} steps ({sim.stats.get('nfev')} evaluations)")
+    print(f"  memory: {peak / 2**20:.0f} MB allocated at peak during the run; {rss:.0f} MB resident at peak")
+    print(f"  peak link force {force.max():.1f} N; the pulse has reached link {front} at t = {sim.t[-1] * 1e3:g} ms")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,77 @@
+"""What every compiled kernel module of the engine shares: the folder of the disk cache and the packed model.
+
+The kernels (:mod:`.kernels`, :mod:`.rings_step`, :mod:`.rings_kernels`) call one another, so they must agree on
+one cache folder, keyed on all their sources (:data:`KERNEL_MODULES`), and on the one tuple a model is packed
+into (:class:`Packed`); they live here so that no kernel module imports another in a circle.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from typing import NamedTuple
+
+import numpy as np
+
+__all__ = ["CACHE", "KERNEL_MODULES", "Packed"]
+
+#: The modules whose compiled kernels call one another (the disk cache is keyed on all their sources).
+KERNEL_MODULES = ("_compiled.py", "kernels.py", "rings_step.py", "rings_kernels.py")
+
+
+def _cache_folder() -> str | None:
+    """The folder of compiled code, or None where the package's cache is disabled or not writable."""
+    from ringchain.theory._codegen import cache_dir
+
+    folder = cache_dir()
+    if folder is None:
+        return None
+    folder = folder / "numba" / _sources_key()
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        with tempfile.NamedTemporaryFile(dir=folder):
+            pass
+    except OSError:
+        return None
+    return os.fspath(folder)
+
+
+def _sources_key() -> str:
+    """A hash of the sources of every kernel module (:data:`KERNEL_MODULES`): a kernel cached
+    on disk is keyed on its own file only, so a change to a kernel it calls in another module must change the
+    folder instead."""
+    import hashlib
+
+    digest = hashlib.sha256()
+    here = os.path.dirname(os.path.abspath(__file__))
+    for name in KERNEL_MODULES:
+        try:
+            with open(os.path.join(here, name), "rb") as handle:
+                digest.update(handle.read())
+        except OSError:
+            digest.update(name.encode())
+    return digest.hexdigest()[:16]
+
+
+#: Where compiled kernels are cached (None: compiled in every process).
+CACHE = _cache_folder()
+
+
+class Packed(NamedTuple):
+    """A model as the kernels take it (see the module notes); build it with :func:`pack_network` or
+    :func:`pack_ring_chain`."""
+
+    ints: np.ndarray  # [kind (0 network, 1 rings), dim, n_coords, damped, n_sites, n_links, rings, dofs, fixed, path]
+    floats: np.ndarray  # [K_c, exponent] of the ring-resolved chain's contact
+    inv_mass: np.ndarray  # (Bm, n_coords)
+    gravity: np.ndarray  # (Bm, n_coords): gravity's acceleration per unit g; for rings, the rigid mode
+    li: np.ndarray  # (L,) int64
+    lj: np.ndarray  # (L,) int64, -1 for the support
+    kind: np.ndarray  # (L,) int64
+    par: np.ndarray  # (Bp, L, PARAMETERS)
+    rest_vectors: np.ndarray  # (L, dim): from site i to the link's far end at rest (Network.rest_vectors)
+    spans: np.ndarray  # (L,): their lengths (Network.spans)
+    prestretch: np.ndarray  # (L,): the links' extensions at rest (Network.prestretch)
+    coupling: np.ndarray  # (n, n)
+    inv_top: np.ndarray  # (n,)
+    inv_bottom: np.ndarray  # (n,)

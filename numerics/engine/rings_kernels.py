@@ -1,0 +1,633 @@
+r"""Compiled kernels of rigid rings in space: the contacts of two tori in any pose and the force at a contact.
+
+Plain Numba functions on float arrays, for the inner loop of a simulation of rigid tori
+(:func:`ringchain.numerics.torus_contacts` is the Python face of the geometry, with the conventions).
+Everything here is in SI units; a ring's pose is its centre (3,) and a unit quaternion (w, x, y, z)
+taking its body frame to space, its axis being body z and its centre circle of radius R in the body
+xy plane, at the angle s from body x.
+
+The contact geometry.  Two tubes touch where the distance between their centre circles has a local
+minimum.  For the point of circle 1 at the angle s, written in the frame of ring 2 as (X, Y, Z)(s)
+(each a constant plus R_1 times a combination of cos s and sin s), the nearest point of circle 2 is
+R_2 (X, Y, 0)/rho with rho = sqrt(X^2 + Y^2), at the distance f(s) = sqrt((rho - R_2)^2 + Z^2).
+Every local minimum of the distance of the two circles is a local minimum of f (the distance from a
+point to a circle has one minimum on the circle), so the search is one-dimensional.  The kernels work
+with g = f^2/2, smooth wherever rho > 0 (also where the circles cross, f = 0), with its derivatives
+g' and g'' in closed form (:func:`_profile`).  Where circle 1 crosses the axis of circle 2 (rho = 0)
+g has a cusp that is a local maximum, never a minimum.
+
+- The cold search (:func:`pair_contacts`) samples g' at ``n_scan`` equally spaced angles; a minimum
+  lies where g' changes from negative to positive between two samples (a maximum, the cusp included,
+  only changes it the other way, and a sample within rounding of a zero cannot make a spurious pair of
+  changes).  Each bracket is refined by Newton's method safeguarded by bisection (``rtsafe``).  Two
+  minima are both found when each is more than one sample spacing h = 2 pi/n_scan from the maximum
+  between them.  Where g'' <= 0 at one of the points h/32 .. h/2 on either side of a minimum found (an
+  inflection: a maximum close by, beyond which a twin may hide; :func:`_inflection_near`), the search
+  samples 2 h on both sides again at h/32, so that twins down to about h/32 from their maximum are found too
+  (the default n_scan = 64 is justified in :mod:`ringchain.numerics.contact.tori`).
+- A pose where f is constant to rounding (g varies by less than 1e-12 of its scale over the scan:
+  coaxial rings, concentric or stacked) has a circle of contact, not isolated minima.  It is
+  returned as ``LINE_POINTS`` contacts at s = 0, pi/2, pi, 3 pi/2, flagged (field ``line`` = 1).
+- The warm-started search (:func:`pair_contacts_warm`) takes the angles s of the minima of the last
+  call and runs a few Newton iterations from each.  It falls back on the cold search when an iteration
+  fails to converge, meets g'' <= 0 (the minimum merged with a maximum, or split in two: theta_min
+  crossed), finds an inflection close by as the cold search does (the minimum is about to split, or a new
+  one is being born next to it), or two minima converge to one.  It cannot see a
+  minimum born away from the ones it tracks (a fold of f far from them; such a minimum is born shallower
+  than the tracked minimum downhill of it): callers run the cold search every few steps (see
+  :mod:`ringchain.numerics.contact.tori`).
+- Between searches (the stages of a Runge-Kutta step), :func:`pair_contacts_follow` evaluates the rows at
+  the last angles after a fixed number of Newton steps (zero or one), with no check: the gap is stationary
+  at a minimum, so an angle off by ds errs by g'' ds^2/2.
+
+One row of ``FIELDS`` numbers per minimum (named in ``CONTACT_FIELDS`` of the Python module):
+gap (m), s_1, s_2 (rad), the contact point (3, m: midway between the two tube surfaces along the
+normal), the unit normal (3, from ring 2 towards ring 1), the principal curvatures of tube 1 at the
+point (along the tube, signed, and across it, 1/r_1; 1/m, convex positive), the same for tube 2, the
+cosine of the angle between the two tube tangents (in [0, 1]), the distance f of the centre circles
+(m) and the line flag.
+
+The contact law (:func:`contact_force`): the normal force [K delta^n + gamma delta_dot]_+ from the
+approach delta = -gap (zero for an open contact), with K either given (the lumped power law of paper
+Eq. (4)) or the Hertz stiffness of the two surfaces' curvatures (:func:`hertz_stiffness_curvatures`,
+n = 3/2), and a regularised Coulomb friction mu F_n v_t/sqrt(|v_t|^2 + v_reg^2) opposing the slip
+v_t; the force acts at the contact point on ring 1 and its opposite on ring 2.
+
+The module's constants that the kernels read (``MAX_CONTACTS``, ``LINE_POINTS``, the modes of
+:func:`pairs_contacts`) are compiled in as constants, as Numba does with globals.
+
+The disk cache.  As :mod:`ringchain.numerics.kernels` (its folder, ``CACHE``): Numba keys a cached kernel
+on its own file, so the kernels that call one another all live in this module; a kernel of another
+module that calls these is not recompiled when they change (clear the cache after editing them).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+from ._compiled import CACHE
+
+__all__ = [
+    "FIELDS",
+    "MAX_CONTACTS",
+    "LINE_POINTS",
+    "N_SCAN",
+    "LAW_PARAMETERS",
+    "rotation_matrix",
+    "pair_contacts",
+    "pair_contacts_warm",
+    "pair_contacts_follow",
+    "pairs_contacts",
+    "COLD",
+    "WARM",
+    "FOLLOW",
+    "hertz_stiffness_curvatures",
+    "elliptical_factor_at",
+    "contact_force",
+]
+
+#: Numbers per contact row (see the module notes).
+FIELDS = 16
+#: Most minima returned for one pair: 20,000 random poses of two circles had at most two local minima of
+#: their distance (a linked pair below theta_min, a ring lying across another); eight leave room, and a
+#: circle of contact is returned as ``LINE_POINTS`` rows.
+MAX_CONTACTS = 8
+#: Rows that stand for a circle of contact (coaxial rings).
+LINE_POINTS = 4
+#: Default number of samples of the cold search.
+N_SCAN = 64
+#: Parameters of a contact law (a row): kind (0 the Hertz stiffness of the curvatures, 1 a given K),
+#: K (N/m^n, kind 1), n (kind 1), gamma (N s/m), mu, v_reg (m/s), E* (Pa, kind 0).  A row may carry an eighth
+#: number, the largest ln(B/A) of the Hertz ellipse (kind 0; see :func:`hertz_stiffness_curvatures`); without
+#: it the ellipse is capped at the table's end, ln(B/A) = 690.
+LAW_PARAMETERS = 7
+
+_previous_cache_dir = numba.config.CACHE_DIR
+if CACHE is not None:
+    numba.config.CACHE_DIR = CACHE  # read when each kernel below is decorated; restored at the end of the module
+
+
+def _jit(**options):
+    return numba.njit(cache=CACHE is not None, error_model="numpy", **options)
+
+
+# -- poses ---------------------------------------------------------------------------------------------------
+@_jit()
+def rotation_matrix(q, out):
+    """Write into ``out`` (3, 3) the rotation of the quaternion q = (w, x, y, z) (body to space; columns are
+    the body axes in space).  q need not be exactly unit: the formula divides by |q|^2."""
+    w, x, y, z = q[0], q[1], q[2], q[3]
+    s = 2.0 / (w * w + x * x + y * y + z * z)
+    out[0, 0] = 1.0 - s * (y * y + z * z)
+    out[0, 1] = s * (x * y - w * z)
+    out[0, 2] = s * (x * z + w * y)
+    out[1, 0] = s * (x * y + w * z)
+    out[1, 1] = 1.0 - s * (x * x + z * z)
+    out[1, 2] = s * (y * z - w * x)
+    out[2, 0] = s * (x * z - w * y)
+    out[2, 1] = s * (y * z + w * x)
+    out[2, 2] = 1.0 - s * (x * x + y * y)
+
+
+@_jit()
+def _coefficients(c1, M1, c2, M2, k):
+    """k = [D, A, B] (9,): circle 1's centre, body x and body y in the frame of ring 2 (D relative to c2)."""
+    for i in range(3):
+        d = 0.0
+        a = 0.0
+        b = 0.0
+        for j in range(3):
+            d += M2[j, i] * (c1[j] - c2[j])
+            a += M2[j, i] * M1[j, 0]
+            b += M2[j, i] * M1[j, 1]
+        k[i] = d
+        k[3 + i] = a
+        k[6 + i] = b
+
+
+@_jit(inline="always")
+def _profile(k, R1, R2, C, S):
+    """(g, g', g'') of g(s) = f(s)^2/2 at cos s = C, sin s = S; on the axis of circle 2 (rho = 0), g' = 0 and
+    g'' = -inf (the cusp is a maximum)."""
+    X = k[0] + R1 * (k[3] * C + k[6] * S)
+    Y = k[1] + R1 * (k[4] * C + k[7] * S)
+    Z = k[2] + R1 * (k[5] * C + k[8] * S)
+    Xp = R1 * (k[6] * C - k[3] * S)
+    Yp = R1 * (k[7] * C - k[4] * S)
+    Zp = R1 * (k[8] * C - k[5] * S)
+    Xpp = k[0] - X
+    Ypp = k[1] - Y
+    Zpp = k[2] - Z
+    rho = math.sqrt(X * X + Y * Y)
+    e = rho - R2
+    g = 0.5 * (e * e + Z * Z)
+    if rho == 0.0:
+        return g, 0.0, -math.inf
+    rp = (X * Xp + Y * Yp) / rho
+    rpp = (Xp * Xp + Yp * Yp + X * Xpp + Y * Ypp - rp * rp) / rho
+    return g, e * rp + Z * Zp, rp * rp + e * rpp + Zp * Zp + Z * Zpp
+
+
+@_jit()
+def _refine(k, R1, R2, a, b, gp_a, gp_b):
+    """The zero of g' in [a, b] (g'(a) = gp_a < 0 <= g'(b) = gp_b) by Newton's method safeguarded by bisection,
+    started from the secant's zero; (s, iterations)."""
+    s = a + (b - a) * gp_a / (gp_a - gp_b)
+    step_old = b - a
+    step = step_old
+    for it in range(1, 101):
+        _, gp, gpp = _profile(k, R1, R2, math.cos(s), math.sin(s))
+        if gp == 0.0:
+            return s, it
+        if gp < 0.0:
+            a = s
+        else:
+            b = s
+        newton = False
+        if gpp > 0.0:
+            trial = -gp / gpp
+            if abs(trial) <= 1e-13:  # converged: the next step is below 1e-13 rad (R 1e-13 on the circle)
+                return s + trial, it
+            newton = a < s + trial < b and abs(2.0 * gp) <= abs(step_old * gpp)
+        step_old = step
+        if newton:
+            step = -gp / gpp
+            s += step
+        else:
+            step = 0.5 * (b - a)
+            s = a + step
+        if b - a <= 1e-13:
+            return s, it
+    return s, 100
+
+
+@_jit()
+def _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, s, line, row):
+    """Write the contact row (module notes) of the minimum of circle 1 at the angle s."""
+    C = math.cos(s)
+    S = math.sin(s)
+    X = k[0] + R1 * (k[3] * C + k[6] * S)
+    Y = k[1] + R1 * (k[4] * C + k[7] * S)
+    Z = k[2] + R1 * (k[5] * C + k[8] * S)
+    rho = math.sqrt(X * X + Y * Y)
+    if rho > 0.0:
+        ux2, uy2 = X / rho, Y / rho
+    else:  # on the axis (a coaxial pose of zero radius cannot occur for R1 > 0): any direction
+        ux2, uy2 = 1.0, 0.0
+    e = rho - R2
+    f = math.sqrt(e * e + Z * Z)
+    # radial (u) and tangent (t) of both circles in space; the normal n from circle 2 to circle 1 (tuples: no
+    # allocation in the inner loop)
+    u1 = (C * M1[0, 0] + S * M1[0, 1], C * M1[1, 0] + S * M1[1, 1], C * M1[2, 0] + S * M1[2, 1])
+    t1 = (C * M1[0, 1] - S * M1[0, 0], C * M1[1, 1] - S * M1[1, 0], C * M1[2, 1] - S * M1[2, 0])
+    u2 = (ux2 * M2[0, 0] + uy2 * M2[0, 1], ux2 * M2[1, 0] + uy2 * M2[1, 1], ux2 * M2[2, 0] + uy2 * M2[2, 1])
+    t2 = (ux2 * M2[0, 1] - uy2 * M2[0, 0], ux2 * M2[1, 1] - uy2 * M2[1, 0], ux2 * M2[2, 1] - uy2 * M2[2, 0])
+    if f > 0.0:  # (q1 - q2)/f
+        n = ((e * u2[0] + Z * M2[0, 2]) / f, (e * u2[1] + Z * M2[1, 2]) / f, (e * u2[2] + Z * M2[2, 2]) / f)
+    else:  # the centre circles cross: the normal of both tangents (any sign), or the radial of circle 2
+        n = (t1[1] * t2[2] - t1[2] * t2[1], t1[2] * t2[0] - t1[0] * t2[2], t1[0] * t2[1] - t1[1] * t2[0])
+        norm = math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2])
+        n = (n[0] / norm, n[1] / norm, n[2] / norm) if norm > 0.0 else u2
+    row[0] = f - r1 - r2
+    row[1] = s % (2.0 * math.pi)
+    row[2] = math.atan2(uy2, ux2) % (2.0 * math.pi)
+    for i in range(3):
+        q1 = c1[i] + R1 * u1[i]
+        q2 = c2[i] + R2 * u2[i]
+        row[3 + i] = 0.5 * ((q1 - r1 * n[i]) + (q2 + r2 * n[i]))
+        row[6 + i] = n[i]
+    cos1 = -(n[0] * u1[0] + n[1] * u1[1] + n[2] * u1[2])  # outward normal of tube 1 is -n
+    cos2 = n[0] * u2[0] + n[1] * u2[1] + n[2] * u2[2]
+    row[9] = cos1 / (R1 + r1 * cos1)
+    row[10] = 1.0 / r1
+    row[11] = cos2 / (R2 + r2 * cos2)
+    row[12] = 1.0 / r2
+    row[13] = min(1.0, abs(t1[0] * t2[0] + t1[1] * t2[1] + t1[2] * t2[2]))
+    row[14] = f
+    row[15] = line
+
+
+@_jit()
+def _pose(c1, q1, c2, q2, M1, M2, k):
+    rotation_matrix(q1, M1)
+    rotation_matrix(q2, M2)
+    _coefficients(c1, M1, c2, M2, k)
+
+
+@_jit()
+def _scan(k, c1, M1, R1, r1, c2, M2, R2, r2, n_scan, out):
+    """The cold search of a pose whose coefficients k are computed; returns (rows written, iterations)."""
+    h = 2.0 * math.pi / n_scan
+    ch = math.cos(h)
+    sh = math.sin(h)
+    C = 1.0
+    S = 0.0
+    g_min = math.inf
+    g_max = -math.inf
+    brackets = np.empty((2 * MAX_CONTACTS, 3))  # sample index, g' at both ends
+    found = 0
+    gp_first = 0.0
+    gp_prev = 0.0
+    for j in range(n_scan):
+        g, gp, _ = _profile(k, R1, R2, C, S)
+        g_min = min(g_min, g)
+        g_max = max(g_max, g)
+        if j == 0:
+            gp_first = gp
+        elif gp_prev < 0.0 <= gp and found < brackets.shape[0]:
+            brackets[found, 0] = j - 1
+            brackets[found, 1] = gp_prev
+            brackets[found, 2] = gp
+            found += 1
+        gp_prev = gp
+        C, S = C * ch - S * sh, S * ch + C * sh
+    if gp_prev < 0.0 <= gp_first and found < brackets.shape[0]:
+        brackets[found, 0] = n_scan - 1
+        brackets[found, 1] = gp_prev
+        brackets[found, 2] = gp_first
+        found += 1
+    scale = k[0] * k[0] + k[1] * k[1] + k[2] * k[2] + R1 * R1 + R2 * R2
+    if g_max - g_min <= 1e-12 * scale:  # a circle of contact: LINE_POINTS rows
+        for j in range(LINE_POINTS):
+            _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, 2.0 * math.pi * j / LINE_POINTS, 1.0, out[j])
+        return LINE_POINTS, 0
+    iterations = 0
+    minima = np.empty(out.shape[0])
+    rows = 0
+    for i in range(found):
+        a = brackets[i, 0] * h
+        s, it = _refine(k, R1, R2, a, a + h, brackets[i, 1], brackets[i, 2])
+        iterations += it
+        rows = _keep(minima, rows, s)
+        if _inflection_near(k, R1, R2, s, h):  # a twin may hide next to this minimum: 2 h each side again at h/32
+            fine = h / 32.0
+            a = s - 2.0 * h
+            _, gp_a, _ = _profile(k, R1, R2, math.cos(a), math.sin(a))
+            for _ in range(128):
+                b = a + fine
+                _, gp_b, _ = _profile(k, R1, R2, math.cos(b), math.sin(b))
+                if gp_a < 0.0 <= gp_b:
+                    s_fine, it = _refine(k, R1, R2, a, b, gp_a, gp_b)
+                    iterations += it
+                    rows = _keep(minima, rows, s_fine)
+                a = b
+                gp_a = gp_b
+    for i in range(rows):
+        _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, minima[i], 0.0, out[i])
+    return rows, iterations
+
+
+@_jit()
+def _inflection_near(k, R1, R2, s, h):
+    """Whether g'' <= 0 at s +- h/32, h/16, h/8, h/4 or h/2: an inflection next to the minimum at s, so a maximum
+    within about 1.2 h of it, beyond which a twin minimum may lie (for g ~ (x^2 - D^2)^2 the inflections lie
+    0.42 D from each minimum, D half their distance; these points see D from h/50 to 1.2 h)."""
+    C = math.cos(s)
+    S = math.sin(s)
+    cp = math.cos(h / 32.0)
+    sp = math.sin(h / 32.0)
+    for _ in range(5):
+        for sign in (-1.0, 1.0):
+            _, _, gpp = _profile(k, R1, R2, C * cp - sign * S * sp, S * cp + sign * C * sp)
+            if not gpp > 0.0:
+                return True
+        cp, sp = 2.0 * cp * cp - 1.0, 2.0 * sp * cp  # double the offset
+    return False
+
+
+@_jit()
+def _keep(minima, count, s):
+    """Append the angle s to ``minima[:count]`` unless it is within 1e-9 rad of one of them or the array is full."""
+    s = s % (2.0 * math.pi)
+    for i in range(count):
+        separation = abs(minima[i] - s)
+        if min(separation, 2.0 * math.pi - separation) < 1e-9:
+            return count
+    if count < minima.size:
+        minima[count] = s
+        count += 1
+    return count
+
+
+@_jit()
+def pair_contacts(c1, q1, R1, r1, c2, q2, R2, r2, n_scan, out):
+    """Every local minimum of the distance of two centre circles, found from scratch (the cold search).
+
+    Parameters: centres c1, c2 (3,) m; quaternions q1, q2 (4,) (w, x, y, z), body to space; radii R1, r1,
+    R2, r2 (m); n_scan samples of the scan; ``out`` (MAX_CONTACTS, FIELDS) receives one row per minimum
+    (module notes).  Returns (number of rows, Newton iterations spent in the refinement).
+    """
+    work = np.empty(27)
+    M1 = work[:9].reshape((3, 3))
+    M2 = work[9:18].reshape((3, 3))
+    k = work[18:]
+    _pose(c1, q1, c2, q2, M1, M2, k)
+    return _scan(k, c1, M1, R1, r1, c2, M2, R2, r2, n_scan, out)
+
+
+@_jit()
+def pair_contacts_warm(c1, q1, R1, r1, c2, q2, R2, r2, n_scan, s_previous, n_previous, max_iterations, out):
+    """:func:`pair_contacts` started from the angles ``s_previous[:n_previous]`` (rad, on circle 1) of the
+    last call's minima (usually ``out[:, 1]`` of that call).
+
+    Returns (number of rows, Newton iterations, 1 if it fell back on the cold search else 0).  Each minimum
+    gets at most ``max_iterations`` Newton steps (each at most a quarter of the scan spacing); the cold
+    search takes over when one does not converge to 1e-12 rad, meets g'' <= 0, has an inflection nearby
+    (:func:`_inflection_near`: the minimum may be splitting, or one being born next to it), or two meet
+    (module notes).
+    """
+    work = np.empty(27 + MAX_CONTACTS)
+    M1 = work[:9].reshape((3, 3))
+    M2 = work[9:18].reshape((3, 3))
+    k = work[18:27]
+    found = work[27:]
+    _pose(c1, q1, c2, q2, M1, M2, k)
+    h = 2.0 * math.pi / n_scan
+    iterations = 0
+    ok = 0 < n_previous <= out.shape[0]
+    for i in range(n_previous if ok else 0):
+        s = s_previous[i]
+        converged = False
+        for _ in range(max_iterations):
+            _, gp, gpp = _profile(k, R1, R2, math.cos(s), math.sin(s))
+            iterations += 1
+            if not gpp > 0.0:
+                break
+            step = -gp / gpp
+            if step > 0.25 * h:
+                step = 0.25 * h
+            elif step < -0.25 * h:
+                step = -0.25 * h
+            s += step
+            if abs(step) <= 1e-12:
+                converged = True
+                break
+        if not converged:
+            ok = False
+            break
+        if _inflection_near(k, R1, R2, s, h):  # a maximum close by: a twin, or one being born, may be missed
+            ok = False
+            break
+        s = s % (2.0 * math.pi)
+        for j in range(i):
+            separation = abs(found[j] - s)
+            if min(separation, 2.0 * math.pi - separation) < 0.25 * h:
+                ok = False
+        found[i] = s
+        if not ok:
+            break
+    if ok:
+        for i in range(n_previous):
+            _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, found[i], 0.0, out[i])
+        return n_previous, iterations, 0
+    rows, more = _scan(k, c1, M1, R1, r1, c2, M2, R2, r2, n_scan, out)
+    return rows, iterations + more, 1
+
+
+@_jit()
+def pair_contacts_follow(c1, q1, R1, r1, c2, q2, R2, r2, s_previous, n_previous, newton_steps, out):
+    """The rows of the minima followed from ``s_previous[:n_previous]`` by exactly ``newton_steps`` Newton steps
+    (0: evaluated at those angles), with no check and no fallback: for the stages of a Runge-Kutta step between
+    two searches.  The distance is stationary at a minimum, so an angle off by ds changes the gap by only
+    g'' ds^2/2 (second order).  Returns 0 if a Newton step met g'' <= 0 (that minimum is no longer near: search
+    again), else 1 (with no Newton step, always 1).
+    """
+    work = np.empty(27)
+    M1 = work[:9].reshape((3, 3))
+    M2 = work[9:18].reshape((3, 3))
+    k = work[18:]
+    _pose(c1, q1, c2, q2, M1, M2, k)
+    ok = 1
+    for i in range(n_previous):
+        s = s_previous[i]
+        for _ in range(newton_steps):
+            _, gp, gpp = _profile(k, R1, R2, math.cos(s), math.sin(s))
+            if not gpp > 0.0:
+                ok = 0
+                break
+            s -= gp / gpp
+        _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, s, 0.0, out[i])
+    return ok
+
+
+#: Modes of :func:`pairs_contacts`.
+COLD, WARM, FOLLOW = 0, 1, 2
+
+
+@_jit()
+def pairs_contacts(centres, orientations, R, r, pairs, n_scan, mode, iterations, state, counts, out, stats):
+    """The contacts of many pairs of rings in one call (the narrow phase of a step, or of a stage).
+
+    Parameters: ``centres`` (n, 3) m, ``orientations`` (n, 4) quaternions (w, x, y, z), ``R``, ``r`` (n,) m;
+    ``pairs`` (m, 2) int; ``mode``: ``COLD`` searches every pair from scratch (:func:`pair_contacts`), ``WARM``
+    starts each pair from ``state[p, :counts[p]]``, the angles s_1 of its last minima, with at most
+    ``iterations`` Newton steps each (:func:`pair_contacts_warm`; a pair with counts[p] == 0 is searched cold),
+    ``FOLLOW`` takes exactly ``iterations`` Newton steps from them with no check (:func:`pair_contacts_follow`;
+    a pair that meets g'' <= 0 is searched cold).  ``out`` (m, MAX_CONTACTS, FIELDS) receives each pair's rows;
+    ``counts`` (m,) their number and ``state`` their angles s_1 (both updated in place for the next call, except
+    by a follow, which leaves them for the step's search; a follow that fell back on the cold search updates
+    them).  ``stats`` (3,) int receives the Newton
+    iterations, the cold searches and the warm starts or follows that fell back on one.  Every minimum is
+    returned, touching or not: a contact carries force where its gap (field 0) is negative.
+    """
+    stats[0] = 0
+    stats[1] = 0
+    stats[2] = 0
+    for p in range(pairs.shape[0]):
+        i = pairs[p, 0]
+        j = pairs[p, 1]
+        c1, q1, R1, r1 = centres[i], orientations[i], R[i], r[i]
+        c2, q2, R2, r2 = centres[j], orientations[j], R[j], r[j]
+        if mode == FOLLOW and counts[p] > 0:
+            if pair_contacts_follow(c1, q1, R1, r1, c2, q2, R2, r2, state[p], counts[p], iterations, out[p]) == 1:
+                stats[0] += iterations * counts[p]
+                continue
+            stats[2] += 1
+        if mode == WARM and counts[p] > 0:
+            rows, spent, fell_back = pair_contacts_warm(c1, q1, R1, r1, c2, q2, R2, r2, n_scan, state[p], counts[p],
+                                                        iterations, out[p])  # fmt: skip
+            stats[1] += fell_back
+            stats[2] += fell_back
+        else:
+            rows, spent = pair_contacts(c1, q1, R1, r1, c2, q2, R2, r2, n_scan, out[p])
+            stats[1] += 1
+        stats[0] += spent
+        counts[p] = rows
+        for c in range(rows):
+            state[p, c] = out[p, c, 1]
+
+
+# -- the contact law -------------------------------------------------------------------------------------------
+@_jit()
+def elliptical_factor_at(s, table, step):
+    """Gamma at s = ln(1 + ln(B/A)) from its values on the uniform grid s_j = j ``step`` (``table``): the cubic
+    through the four nearest values (clamped to the table's ends)."""
+    n = table.size
+    x = s / step
+    j = int(x)
+    if j < 1:
+        j = 1
+    if j > n - 3:
+        j = n - 3
+    t = x - j  # position from node j; the cubic through nodes j - 1 .. j + 2
+    if x >= n - 1:
+        return table[n - 1]
+    a = table[j - 1]
+    b = table[j]
+    c = table[j + 1]
+    d = table[j + 2]
+    return (
+        -a * t * (t - 1.0) * (t - 2.0) / 6.0
+        + b * (t + 1.0) * (t - 1.0) * (t - 2.0) / 2.0
+        - c * (t + 1.0) * t * (t - 2.0) / 2.0
+        + d * (t + 1.0) * t * (t - 1.0) / 6.0
+    )
+
+
+@_jit()
+def hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, cos_angle, E_star, max_log_ratio, table, step):
+    """K_c (N/m^1.5) of two surfaces with principal curvatures (k1a, k1b), (k2a, k2b) (1/m, convex positive)
+    whose first principal directions make the angle with cosine ``cos_angle``; E* in Pa.
+
+    Hertz's sums (App. A, Eqs. (A2a)-(A2b)), K_c = 4/3 E* (2A)^(-1/2) Gamma(B/A) with Gamma from ``table``
+    (:func:`ringchain.theory.elliptical_factor_grid`), as :func:`ringchain.theory.hertz_stiffness_curvatures`.
+    K_c grows without bound as A -> 0 (a minimum about to split: theta_min at a crossing); the ellipse is
+    capped at ln(B/A) = ``max_log_ratio`` (and at the table's end, 690): a smaller A, zero or negative
+    included, is raised to B exp(-max_log_ratio), which keeps K_c finite and continuous.
+    """
+    d1 = k1a - k1b
+    d2 = k2a - k2b
+    total = 0.5 * (k1a + k1b + k2a + k2b)
+    cos2 = 2.0 * cos_angle * cos_angle - 1.0
+    radicand = d1 * d1 + d2 * d2 + 2.0 * d1 * d2 * cos2
+    difference = 0.5 * math.sqrt(radicand) if radicand > 0.0 else 0.0
+    A = 0.5 * (total - difference)
+    B = A + difference
+    cap = math.log1p(max_log_ratio) if max_log_ratio > 0.0 else 0.0
+    top = (table.size - 1) * step
+    if not cap < top:
+        cap = top
+    if A > 0.0 and math.log1p(difference / A) < max_log_ratio:
+        s = math.log1p(math.log1p(difference / A))
+        if s > cap:
+            s = cap
+    else:
+        s = cap
+    if s >= cap:
+        A = B * math.exp(-math.expm1(s))
+    gamma = elliptical_factor_at(s, table, step)
+    return 4.0 / 3.0 * E_star / math.sqrt(2.0 * A) * gamma
+
+
+@_jit()
+def contact_force(row, c1, v1, w1, c2, v2, w2, law, table, step, force, torque_1, torque_2):
+    """Force and torques of one contact row (module notes) between ring 1 and ring 2.
+
+    Parameters: ``row`` (FIELDS,); centres c (3,) m, velocities v (3,) m/s and angular velocities w (3,) rad/s,
+    all in space; ``law`` (LAW_PARAMETERS,) or (LAW_PARAMETERS + 1,): kind (0 Hertz of the curvatures, 1 the
+    power law K delta^n), K, n, gamma, mu, v_reg, E*[, the largest ln(B/A)]; ``table``, ``step``: the elliptical
+    factor (kind 0; :func:`ringchain.theory.elliptical_factor_grid`).
+    Writes the force on ring 1 (N; ring 2 gets its opposite) and the torques on rings 1 and 2 about their
+    centres (N m), all in space.  Returns (normal force N, stored energy J, dashpot power W, friction power W):
+    the powers are dissipated (>= 0).
+
+    With a constant K (the power law) the elastic force and torques are exactly the gradient of the stored
+    energy K delta^(n+1)/(n+1) (the gap is stationary in s_1 and s_2 at the minimum, and the contact point lies
+    on the common normal of the centre circles).  The Hertz stiffness of the curvatures changes with the pose
+    (the angle between the tubes, the place round each tube): its force leaves out the pose derivative of K,
+    so the stored energy is then conserved only to that order.  v_reg = 0 is Coulomb's law itself (the friction
+    force jumps where the slip reverses).
+    """
+    for i in range(3):
+        force[i] = 0.0
+        torque_1[i] = 0.0
+        torque_2[i] = 0.0
+    delta = -row[0]
+    if not delta > 0.0:
+        return 0.0, 0.0, 0.0, 0.0
+    if law[0] == 0.0:
+        cap = law[7] if law.size > 7 else 690.0
+        K = hertz_stiffness_curvatures(row[9], row[10], row[11], row[12], row[13], law[6], cap, table, step)
+        n = 1.5
+    else:
+        K = law[1]
+        n = law[2]
+    elastic = K * delta * math.sqrt(delta) if n == 1.5 else K * delta**n
+    energy = elastic * delta / (n + 1.0)
+    # lever arms from the centres, and the velocity of ring 1's material point at the contact relative to ring 2's
+    a1 = (row[3] - c1[0], row[4] - c1[1], row[5] - c1[2])
+    a2 = (row[3] - c2[0], row[4] - c2[1], row[5] - c2[2])
+    rel = (
+        (v1[0] + w1[1] * a1[2] - w1[2] * a1[1]) - (v2[0] + w2[1] * a2[2] - w2[2] * a2[1]),
+        (v1[1] + w1[2] * a1[0] - w1[0] * a1[2]) - (v2[1] + w2[2] * a2[0] - w2[0] * a2[2]),
+        (v1[2] + w1[0] * a1[1] - w1[1] * a1[0]) - (v2[2] + w2[0] * a2[1] - w2[1] * a2[0]),
+    )
+    normal_speed = rel[0] * row[6] + rel[1] * row[7] + rel[2] * row[8]
+    delta_rate = -normal_speed
+    normal = elastic + law[3] * delta_rate
+    if normal < 0.0:
+        normal = 0.0
+    # the dashpot's share of the normal force (with the bracket: normal - elastic) and the power it takes
+    dashpot_power = (normal - elastic) * delta_rate
+    slip = (rel[0] - normal_speed * row[6], rel[1] - normal_speed * row[7], rel[2] - normal_speed * row[8])
+    slip2 = slip[0] * slip[0] + slip[1] * slip[1] + slip[2] * slip[2]
+    mu = law[4]
+    factor = 0.0
+    if mu > 0.0 and slip2 > 0.0:
+        factor = mu * normal / math.sqrt(slip2 + law[5] * law[5])
+    for i in range(3):
+        force[i] = normal * row[6 + i] - factor * slip[i]
+    friction_power = factor * slip2
+    torque_1[0] = a1[1] * force[2] - a1[2] * force[1]
+    torque_1[1] = a1[2] * force[0] - a1[0] * force[2]
+    torque_1[2] = a1[0] * force[1] - a1[1] * force[0]
+    torque_2[0] = -(a2[1] * force[2] - a2[2] * force[1])
+    torque_2[1] = -(a2[2] * force[0] - a2[0] * force[2])
+    torque_2[2] = -(a2[0] * force[1] - a2[1] * force[0])
+    return normal, energy, dashpot_power, friction_power
+
+
+numba.config.CACHE_DIR = _previous_cache_dir
