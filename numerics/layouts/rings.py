@@ -343,19 +343,21 @@ def _pair_laws(rings, axes, pairs, linked, law):
     from ringchain.theory import hertz_stiffness_pair
 
     L = len(pairs)
-    K, n = np.empty(L), np.empty(L)
-    for k, (i, j) in enumerate(pairs):
-        a, b = rings[i], rings[j]
-        if law == "power-law":
-            (K_a, n_a), (K_b, n_b) = _power_law(a), _power_law(b)
+    if law == "power-law":
+        K, n = np.empty(L), np.empty(L)
+        for k, (i, j) in enumerate(pairs):
+            (K_a, n_a), (K_b, n_b) = _power_law(rings[i]), _power_law(rings[j])
             K[k], n[k] = (K_a, n_a) if (K_a, n_a) == (K_b, n_b) else (np.sqrt(K_a * K_b), 0.5 * (n_a + n_b))
-            continue
-        angle = np.arccos(min(1.0, abs(float(axes[i] @ axes[j])))) if linked[k] else np.pi / 2
-        angle = max(angle, 1e-3)
-        K[k] = float(hertz_stiffness_pair(a.R, a.r, a.material.E, a.material.nu, b.R, b.r, b.material.E,
-                                          b.material.nu, angle))  # fmt: skip
-        n[k] = 1.5
-    return K, n
+        return K, n
+    if not L:
+        return np.zeros(0), np.zeros(0)
+    i, j = pairs.T
+    cosine = np.minimum(1.0, np.abs(np.einsum("kc,kc->k", axes[i], axes[j])))
+    angle = np.where(linked, np.maximum(np.arccos(cosine), 1e-3), np.pi / 2)
+    R, r = np.array([ring.R for ring in rings]), np.array([ring.r for ring in rings])
+    E, nu = np.array([ring.material.E for ring in rings]), np.array([ring.material.nu for ring in rings])
+    K = np.asarray(hertz_stiffness_pair(R[i], r[i], E[i], nu[i], R[j], r[j], E[j], nu[j], angle), dtype=float)
+    return np.broadcast_to(K, (L,)).copy(), np.full(L, 1.5)
 
 
 @functools.cache
