@@ -149,7 +149,7 @@ def _fire(gradient, x, *, tol, stiffness, max_iterations, max_move=0.5):
 SOFTENING = (1e-6, 1e-4, 1e-2)
 
 
-def equilibrium(network, *, g=STANDARD_GRAVITY, force_tol=1e-8, soften=True, max_iterations=20000):
+def equilibrium(network, *, g=STANDARD_GRAVITY, force_tol=1e-8, soften=True, max_iterations=2000):
     """The network at its static state under gravity (along -z), its fixed rings held where they are.
 
     Parameters

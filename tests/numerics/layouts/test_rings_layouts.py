@@ -146,15 +146,15 @@ def test_check_links_names_the_pair():
 def test_hanging_chain_stretches_each_contact_by_the_weight_below(law):
     n = 6
     chain = Rings.chain(n, RING, law=law)
-    rest = chain.equilibrium(force_tol=1e-10, soften=False)
+    rest = chain.equilibrium(force_tol=1e-9, soften=False, max_iterations=500)
     K, exponent = (RING.K_c, 1.5) if law == "hertz" else RING.power_law()
     carried = np.arange(1, n) * RING.mass * STANDARD_GRAVITY  # contact k holds rings 0..k
     expected = (carried / K) ** (1 / exponent)
     approach = [-np.min(torus_contacts(rest.centres[k], rest.orientations[k], RING, rest.centres[k + 1],
                                        rest.orientations[k + 1], RING).gap) for k in range(n - 1)]  # fmt: skip
-    # Residual force <= 1e-10 m g on a ring: a relative error <= 1e-10 m g / (n F) of each approach; the
-    # position rounding (1e-17 m) is far below the approaches (1e-7 m).
-    np.testing.assert_allclose(approach, expected, rtol=1e-9)
+    # Residual force <= 1e-9 m g on a ring (the contact kernels' own floor is about 2e-10 m g): a relative
+    # error <= 1e-9 m g / (n F) of each approach; the position rounding (1e-17 m) is far below the approaches.
+    np.testing.assert_allclose(approach, expected, rtol=1e-8)
     # The chain stays straight (symmetry): sideways offsets at the rounding of the forces.
     np.testing.assert_allclose(rest.centres[:, :2], 0.0, atol=1e-15)
 
