@@ -188,7 +188,7 @@ def _speed(args) -> int:
     rings = opt.speed_rings(args, rows)
     start = args.m_eff_ratio if "m_eff_ratio" in opt.given(args) else None  # None: fit_speed_amplitude's own
     if rows is not None and "model" in rows and not (args.eq8 or args.free_n or args.K is not None):
-        from .fit import fit_speed_lattice
+        from ..jobs.fit import fit_speed_lattice
 
         with opt.computing(f"the chains of {args.file}"):
             points = opt.speed_points(rows, rings)

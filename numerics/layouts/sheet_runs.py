@@ -198,7 +198,7 @@ def read_sheet_run(path):
     except (OSError, ValueError, KeyError, TypeError) as exc:  # h5py's OSError does not name the file
         raise DataError(f"not a sheet's run: it cannot be read as a NetCDF-4 file ({' '.join(str(exc).split())})",
                         path=path) from None  # fmt: skip
-    if dataset.attrs.get("created_by") != "ringchain.numerics.layouts.sheet":
+    if dataset.attrs.get("created_by") not in ("ringchain.numerics.Sheet", "ringchain.numerics.sheet"):  # new, 0.1
         raise DataError("not a sheet's run written by ringchain (SheetSimulation.to_netcdf): no created_by", path=path)
     missing = [name for name in _REQUIRED if name not in dataset]
     if "site" in dataset.dims and dataset.sizes["site"] == dataset.sizes.get("network_site"):

@@ -68,6 +68,7 @@ def test_every_chapter_is_in_the_table_of_contents_and_back():
         "designing",
         "disorder",
         "sheets",
+        "rings_in_space",
         "fitting",
         "paper_notes",
         "bibliography",

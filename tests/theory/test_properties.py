@@ -104,6 +104,10 @@ def test_every_public_function_is_covered():
     covered |= YIELD_COVERED  # issue 22: contacts that yield (its block below)
     covered |= SHEET_COVERED  # issue 21: sheets of interlinked rings (its block below)
     covered |= DISORDER_COVERED  # issue 23: disorder (its block below)
+    # issues 29 and 32: rigid tori and the sheet's group velocity, covered by the extreme-argument cases below
+    covered |= {"torus_moments", "hertz_stiffness_curvatures", "contact_modulus_pair", "elliptical_factor_grid",
+                "sheet_group_velocity"}  # fmt: skip
+    data |= {"ELLIPTICAL_GRID_STEP"}
     assert set(theory.__all__) == covered | data
 
 
@@ -906,6 +910,8 @@ PHYSICAL = dict(
     # disorder: a frequency inside the band 2 sqrt(k/m), spreads, a distance, a speed and a decay length
     omega=10.0, sigma_K=0.1, sigma_k=0.1, sigma_m=0.1, sigma_Z=0.1, correlation=0.5, distance=1.0, V0=10.0,
     attenuation_length=10.0,
+    # rigid tori: the principal curvatures of two tubes at their crossing (1/r across, -1/(R - r) along), 1/m
+    k1_a=400.0, k1_b=-50.0, k2_a=400.0, k2_b=-50.0,
 )  # fmt: skip
 #: Per-ring values of a short disordered chain (the varied one is scaled by the extreme value).
 RINGS = dict(K=4.9e6 * np.array([1.0, 1.2, 0.8]), k=2.0 * np.array([1.0, 1.2, 0.8]),
@@ -920,7 +926,7 @@ OTHER = {"dispersion": dict(model="power-law"), "band_edges": dict(model="power-
 ESTIMATES = [dict(estimate="effective-medium"), dict(estimate="harmonic-mean")]
 PATTERNS = [dict(pattern="square"), dict(pattern="triangular")]
 CHOICES = {"disordered_solitary_wave_speed": ESTIMATES, "disorder_speed_shift": ESTIMATES,
-           "sheet_dispersion": PATTERNS, "sheet_sound_speeds": PATTERNS}  # fmt: skip
+           "sheet_dispersion": PATTERNS, "sheet_sound_speeds": PATTERNS, "sheet_group_velocity": PATTERNS}  # fmt: skip
 
 
 def _one_extreme_cases():

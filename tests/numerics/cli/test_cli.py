@@ -270,7 +270,7 @@ def test_help_exits_0_and_no_subcommand_exits_2(capsys):
     code, out, _ = run(capsys, "--help")
     assert code == 0 and all(name in out for name in ("paper", "ring", "simulate", "sweep", "ensemble", "cache"))
     code, out, err = run(capsys)
-    required = "the following arguments are required: {paper,ring,simulate,sweep,ensemble,cache,fit,sheet}"
+    required = "the following arguments are required: {paper,ring,simulate,sweep,ensemble,cache,fit,sheet,rings}"
     assert_one_line_error(code, out, err, required)
 
 

@@ -8,8 +8,9 @@ import tracemalloc
 
 import numpy as np
 import pytest
-from ringchain.numerics import RunTooLargeError, Sheet, estimate_run, integrate, simulate
+from ringchain.numerics import RunTooLargeError, Sheet, estimate_run, simulate
 from ringchain.numerics.cli import main
+from ringchain.numerics.engine import integrate
 from ringchain.numerics.engine.network import Network
 from ringchain.theory import Ring
 
