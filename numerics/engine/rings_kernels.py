@@ -56,7 +56,7 @@ v_t; the force acts at the contact point on ring 1 and its opposite on ring 2.
 The module's constants that the kernels read (``MAX_CONTACTS``, ``LINE_POINTS``, the modes of
 :func:`pairs_contacts`) are compiled in as constants, as Numba does with globals.
 
-The disk cache.  As :mod:`ringchain.numerics.kernels` (its folder, ``CACHE``): Numba keys a cached kernel
+The disk cache.  As :mod:`ringchain.numerics.engine.kernels` (its folder, ``CACHE``): Numba keys a cached kernel
 on its own file, so the kernels that call one another all live in this module; a kernel of another
 module that calls these is not recompiled when they change (clear the cache after editing them).
 """

@@ -1,7 +1,7 @@
 r"""Compiled kernels of rigid rings in space: their right-hand side, a splitting scheme for long runs, and their
-contact forces, on the engine of :mod:`ringchain.numerics.kernels`.
+contact forces, on the engine of :mod:`ringchain.numerics.engine.kernels`.
 
-The model (:class:`~ringchain.numerics.Rings`, kind 2 of a :class:`~ringchain.numerics.kernels.Packed` model).
+The model (:class:`~ringchain.numerics.Rings`, kind 2 of a :class:`~ringchain.numerics.engine.kernels.Packed` model).
 Per ring seven coordinates x = [displacement of the centre from its reference (3, m: small numbers, whose
 error the step control measures against small tolerances), unit quaternion (w, x, y, z) body -> space] and seven rates
 u = [velocity (3, m/s, space), angular velocity (3, rad/s, body frame), 0] (the seventh rate pads the state so
@@ -340,7 +340,7 @@ def _verlet_rings_run(m, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u):
 
 def verlet_rings(packed: Packed, x0, u0, t_eval, t_end, dt, keep, g):
     """The splitting scheme of the module notes over ``t_eval`` for one or more runs (rows of x0, u0): the same
-    returns as :func:`ringchain.numerics.kernels.verlet` (x and u of ``keep`` (B, T, K), final x and u, status,
+    returns as :func:`ringchain.numerics.engine.kernels.verlet` (x and u of ``keep`` (B, T, K), final x and u, status,
     the step, the number of steps)."""
     x0 = np.ascontiguousarray(x0, dtype=float)
     u0 = np.ascontiguousarray(u0, dtype=float)

@@ -4,7 +4,7 @@ Every other lattice of the package puts a ring at a point.  Here each ring is a 
 tube radius r, its material) with a position, an orientation, a velocity and an angular velocity; rings
 touch where their tubes overlap, anywhere on them, and push each other apart along the normal of the
 contact; a friction force acts against the slip.  The model implements the engine's model and dynamics
-contracts (:mod:`ringchain.numerics.integrate`), so :func:`~ringchain.numerics.simulate` integrates it with
+contracts (:mod:`ringchain.numerics.engine.integrate`), so :func:`~ringchain.numerics.simulate` integrates it with
 the compiled Dormand-Prince pair (max-norm error control) or with velocity Verlet (a splitting with the exact
 free rotor, for long undamped runs), and SciPy's methods as the reference.
 
@@ -287,7 +287,7 @@ class Rings:
         forces[free, 2] -= g * self.masses[free]
         return elastic + gravity, forces, loads[:, 3:]
 
-    # -- the model contract (ringchain.numerics.integrate) --------------------------------------------------------
+    # -- the model contract (engine.integrate) ---------------------------------------------------------------------
     def dynamics(self) -> RingsDynamics:
         """What the engine integrates (a fresh one per run: it carries the warm start of the contacts)."""
         return RingsDynamics(self)
@@ -366,7 +366,7 @@ def _power_law(ring):
 
 
 class RingsDynamics:
-    """The dynamics contract of :mod:`ringchain.numerics.network` for :class:`Rings` (state of one run:
+    """The dynamics contract of :mod:`ringchain.numerics.engine.network` for :class:`Rings` (state of one run:
     [x (7n), u (7n), W if damped]; the module notes of :mod:`ringchain.numerics.engine.rings_step`)."""
 
     stateful = False
@@ -415,7 +415,7 @@ class RingsDynamics:
                       np.ascontiguousarray(bodies), table, np.zeros(n))  # fmt: skip
 
     def packed(self):
-        """The :class:`~ringchain.numerics.kernels.Packed` form (kind 2) of the rings, made once per run."""
+        """The :class:`~ringchain.numerics.engine.kernels.Packed` form (kind 2) of the rings, made once per run."""
         return self._packed
 
     def state(self, centres, orientations) -> np.ndarray:
