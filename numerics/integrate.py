@@ -296,7 +296,8 @@ def _compiled(method, dyn, x0, u0, scales, t_eval, t_end, rtol, atol, dt, g, kee
     watch(t_end, final[:, :N], final[:, N : 2 * N], final[:, 2 * N] if dyn.damped else 0.0,
           final[:, first:] if memory is not None else None)  # fmt: skip
     return xs, us, w, {"method": method, "rtol": rtol, "nfev": int(counts[:, 0].sum()),
-                       "steps": counts[:, 1].tolist(), "rejected": counts[:, 2].tolist()}, \
+                       "steps": counts[:, 1].tolist(), "rejected": counts[:, 2].tolist(),
+                       "cut": counts[:, 3].tolist()}, \
         (ms if memory is not None else None)  # fmt: skip
 
 
