@@ -123,8 +123,8 @@ EVERY = 10
 
 
 def event_reference(chain, y0, t_cmp, g, rtol=1e-13):
-    """Sensor forces on ``t_cmp`` of the recipe's right-hand side (:func:`paper_rhs`) integrated by SciPy's DOP853
-    from contact event to contact event, and the number of events.
+    """Sensor forces (rings 6 and 12) on ``t_cmp`` of the recipe's right-hand side (:func:`paper_rhs`) integrated
+    by SciPy's DOP853 from contact event to contact event, and the number of events.
 
     Each segment is found by a run with the Hertz contacts' extensions as terminal events (the first change of
     engagement), then integrated again from its start to end exactly at the event, so that no step of the
@@ -177,8 +177,8 @@ def comparison(chain):
     y0 = np.concatenate([x0[0], u0[0]])
     t_recipe = np.linspace(0.0, T_END, round(T_END * 1e3 * STEPS_PER_MS) + 1)
     t_cmp = t_recipe[::EVERY]
-    ref = event_reference(chain, y0, t_cmp, STANDARD_GRAVITY)[0][:, SENSORS]
-    looser = event_reference(chain, y0, t_cmp, STANDARD_GRAVITY, rtol=1e-12)[0][:, SENSORS]
+    ref = event_reference(chain, y0, t_cmp, STANDARD_GRAVITY)[0]
+    looser = event_reference(chain, y0, t_cmp, STANDARD_GRAVITY, rtol=1e-12)[0]
     lsoda = simulate(chain, T_END, drop_height=DROP, t_eval=t_cmp, method="LSODA", rtol=1e-12).sensor_force[:, SENSORS]
     return y0, t_recipe, t_cmp, ref, (looser, lsoda)
 

@@ -72,6 +72,11 @@ def compile_estimate(family: str) -> float:
     return COMPILE_SECONDS[family] * max(1.0, load)
 
 
+def compiled() -> int:
+    """How many kernel families this process has compiled (not loaded from the disk cache) so far."""
+    return len(_announced)
+
+
 def announce_compile(dispatcher, family: str, folder) -> None:
     """One line on stderr when ``dispatcher`` is about to be compiled (once per family and process)."""
     if family in _announced or not will_compile(dispatcher):

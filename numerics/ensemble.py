@@ -35,6 +35,7 @@ from __future__ import annotations
 
 import math
 import re
+import time
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 
@@ -43,6 +44,7 @@ from ringchain.theory import STANDARD_GRAVITY, Ring
 from ringchain.theory import _validate as v
 
 from . import signals
+from ._kernel_calls import compiled
 from .chain import MODELS, Chain
 from .disorder import check_seed, check_spread, describe_spread, draw_rings, member_seeds
 from .executors import run_tasks
@@ -505,11 +507,18 @@ def ensemble(ring, n_rings, count, *, spread, seed, model="dual-spring", m_eff_r
                n_samples=n_samples, chain_options=chain_options, gravity=gravity, g=g,
                max_energy_drift=energy_limit, **solver)  # fmt: skip
     # The ordered chain first, in this process: it checks the solver's options before any worker starts.
-    reference = run_members(ring, n_rings, {}, seeds[:1], **run)
+    # Its time, per member, gives the members' work (timed again if it compiled the kernels): the job runs here
+    # when a pool would save less than it costs to start (run_tasks).
+    for _ in range(2):
+        before, start = compiled(), time.perf_counter()
+        reference = run_members(ring, n_rings, {}, seeds[:1], **run)
+        seconds = (time.perf_counter() - start) * count
+        if compiled() == before:
+            break
     chunks = [seeds[k : k + batch_size] for k in range(0, count, batch_size)]
     results = run_tasks(run_members, [(ring, n_rings, spread, chunk) for chunk in chunks], executor, options=run,
                         max_workers=max_workers, progress=progress, sizes=[len(c) for c in chunks], name="ensemble",
-                        unit="member")  # fmt: skip
+                        unit="member", seconds=seconds)  # fmt: skip
 
     def joined(name):
         return np.concatenate([result[name] for result in results])

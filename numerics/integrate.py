@@ -90,9 +90,9 @@ __all__ = [
     "EnergyWatch",
 ]
 
-#: Default integrator: the compiled Dormand-Prince 5(4) pair, the fastest method that keeps the accuracy
-#: of the earlier default (LSODA at rtol 1e-9): sensor forces of the paper's chain within 1.3e-5 of their
-#: peak against a tight reference (1.1e-5 for LSODA), 5-11x faster (benchmarks/bench_kernels.py).
+#: Default integrator: the compiled Dormand-Prince 5(4) pair, its steps ending where contacts open or close:
+#: sensor forces of the paper's chain within 2.8e-7 of their peak against an event-located tight reference
+#: (3.1e-5 for LSODA at rtol 1e-9; benchmarks/bench_paper_recipe.py), and faster (benchmarks/bench_kernels.py).
 DEFAULT_METHOD = "dopri5"
 
 #: Default relative tolerance of each adaptive method; the absolute tolerances are this times the
@@ -112,8 +112,9 @@ VERLET_STEPS_PER_PERIOD = 60
 #: The adaptive methods: "dopri5" (Dormand-Prince 5(4), compiled, max-norm error control, each run of a
 #: batch with its own steps: :mod:`ringchain.numerics.kernels`), "odeint" (LSODA stepped in Fortran) and
 #: the :func:`scipy.integrate.solve_ivp` methods, the independent reference.  LSODA (Adams, switching to BDF
-#: with a banded Jacobian if the chain turns stiff) suits the chain; the explicit Runge-Kutta methods lose
-#: their order at the kink of the contact law at delta = 0, which costs the higher orders most.
+#: with a banded Jacobian if the chain turns stiff) suits the chain; SciPy's explicit Runge-Kutta methods lose
+#: their order at the kink of the contact law at delta = 0, which costs the higher orders most ("dopri5" ends
+#: its steps there and keeps its order: :mod:`ringchain.numerics.kernels`).
 ADAPTIVE_METHODS = ("dopri5", "odeint", "LSODA", "DOP853", "RK45", "RK23")
 
 #: The compiled methods (:mod:`ringchain.numerics.kernels`): their whole time loop runs in Numba.
