@@ -62,14 +62,19 @@ def will_compile(dispatcher) -> bool:
         return True
 
 
-def compile_estimate(family: str) -> float:
-    """Seconds a compile of ``family`` ("dopri5", "verlet") takes on this machine now: the quiet figure
-    times the load average per core, when above one."""
+def load_factor() -> float:
+    """How much slower than a quiet machine this one is now: the load average per core, at least 1."""
     try:
         load = os.getloadavg()[0] / (os.cpu_count() or 1)
     except OSError:  # no load average on this platform
         load = 1.0
-    return COMPILE_SECONDS[family] * max(1.0, load)
+    return max(1.0, load)
+
+
+def compile_estimate(family: str) -> float:
+    """Seconds a compile of ``family`` ("dopri5", "verlet") takes on this machine now: the quiet figure
+    times :func:`load_factor`."""
+    return COMPILE_SECONDS[family] * load_factor()
 
 
 def compiled() -> int:
