@@ -536,17 +536,21 @@ def _switches(m, members, y, N, n, out_value, out_rate):
 
 
 @_jit()
-def _first_switch(value0, rate0, value1, rate1, h):
+def _first_switch(value0, rate0, value1, rate1, h, floor):
     """Where in a step of length ``h`` a switch first changes sign (on the cubic through the values and rates at
-    its ends; within 1e-7 of an end: at that end), as a fraction of the step; 2.0 for nowhere."""
+    its ends; within 1e-7 of an end: at that end; not within ``floor`` of zero), as a fraction of the step; 2.0
+    for nowhere."""
     first = 2.0
     for q in range(value0.shape[0]):
         for k in range(value0.shape[1]):
             e0, e1 = value0[q, k], value1[q, k]
             s0, s1 = h * rate0[q, k], h * rate1[q, k]
             slope = e1 - e0  # p(z) = (1 - z) e0 + z e1 + z (1 - z) ((1 - z)(s0 - slope) - z (s1 - slope)):
-            if (e0 > 0.0) == (e1 > 0.0) and 4.0 * min(abs(e0), abs(e1)) > max(abs(s0 - slope), abs(s1 - slope)):
+            bend = 0.25 * max(abs(s0 - slope), abs(s1 - slope))
+            if (e0 > 0.0) == (e1 > 0.0) and min(abs(e0), abs(e1)) > bend:
                 continue  # it stays within max|s - slope|/4 of the chord, which keeps its sign: no zero
+            if max(abs(e0), abs(e1)) + bend <= floor:
+                continue  # it stays within the displacements' tolerance of zero (rounding at rest): no matter
             first = min(first, _first_zero(e0, s0, e1, s1, 1e-7, 1.0 - 1e-7))
     return first
 
@@ -629,6 +633,9 @@ def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, 
     value0, rate0, value1, rate1 = np.empty((G, S)), np.empty((G, S)), np.empty((G, S)), np.empty((G, S))
     if S:
         _switches(m, members, y, N, n, value0, rate0)
+    floor = tolerance[0]  # a switch that stays within the displacements' absolute tolerance of zero is not located
+    for c in range(N):
+        floor = min(floor, tolerance[c])
     cuts = 0
     h_after = 0.0  # the step a cut step's first trial proposed for after it (0: the last trial was not cut)
     # Initial step (Hairer's HINIT): the first-derivative estimate, then a second-order correction.
@@ -679,7 +686,7 @@ def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, 
         factor = 0.9 * error**-0.2 if error > 0.0 else 10.0
         if error <= 1.0 and S:
             _switches(m, members, y_new, N, n, value1, rate1)
-            z = _first_switch(value0, rate0, value1, rate1, h)
+            z = _first_switch(value0, rate0, value1, rate1, h, floor)
             if z < (0.99 if h_after > 0.0 else 1.0):  # a contact opens or closes inside: end the step there
                 if h_after == 0.0:
                     h_after = h * min(1.0, max(0.2, factor))
