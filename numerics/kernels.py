@@ -30,9 +30,8 @@ never writes it; the law reads max(memory, delta), so a stage beyond the memory 
 After each accepted step the memory becomes the largest extension over the step, read from the cubic
 through the extensions and rates at both ends (:func:`_remember`: the peak of a step, not only its end,
 to fourth order); a sample records the memory its step started from (what the stages used).  Velocity
-Verlet updates it after each step from the new positions.  Memory as an integrated state (dm/dt = the
-rate while loading) was the other choice: its right-hand side jumps whenever the approach crosses the
-memory, which the step control pays for with rejections at every loading; and it drifts off the approach.
+Verlet updates it after each step from the new positions.  (Memory as an integrated state, dm/dt = the
+rate while loading, jumps whenever the approach crosses the memory: rejections at every loading.)
 
 The Runge-Kutta pair.  Dormand and Prince's 5(4) pair with its fourth-order continuous extension
 (Hairer, Norsett and Wanner, Solving ODEs I, Sec. II.5-6), first-same-as-last, step-size control
@@ -42,13 +41,11 @@ at rest with no net force), or a run repeated in a batch, never changes the step
 RMS norm over n components loosens the control by sqrt(n) when most of them are idle).  A member
 hanging at rest under gravity is not exactly idle: its rounding-level accelerations, against its own
 tiny tolerances, change a shared step slightly (``shared=True``: 601 steps instead of 596 measured).
-Each member of a batch takes its own steps; the members run on a pool of threads, each taking ranges of
-members through one kernel that releases the GIL (one compiled kernel for one run or many).
-The samples are read from the continuous extension.
+Each member of a batch takes its own steps, on a pool of threads through one kernel that releases the GIL
+(one compiled kernel for one run or many).  The samples are read from the continuous extension.
 
 Velocity Verlet.  The fixed-step scheme of :func:`ringchain.numerics.integrate` (kick-drift-kick in
-leapfrog form, samples by cubic Hermite interpolation of the two ends of their step), one member per
-thread.
+leapfrog form, samples by cubic Hermite interpolation of the two ends of their step).
 
 Contacts opening and closing.  A contact's force (K delta^n while delta > 0, zero beyond) is not smooth
 where delta crosses zero; a step straddling that instant loses the pair's order, its error estimate no
@@ -497,8 +494,7 @@ def _first_zero(e0, s0, e1, s1, start, end):
 def _switches(m, members, y, N, n, out_value, out_rate):
     """Each switch (value, rate) of a group's members at its state ``y``, one row per member: zero where a
     contact's force stops being smooth (its extension, as :func:`_extension`; the zero of Thornton's unloading
-    curve); (1, 0) for a smooth law, which never switches.  Written out: a call per link passing the packed
-    model costs more than the arithmetic."""
+    curve); (1, 0) for a smooth law.  Written out: a call per link passing the packed model costs more."""
     S, d, w = out_value.shape[1], m.ints[1], 2 * N + (1 if m.ints[3] else 0)
     for q in range(members.size):
         o, v = q * n, q * n + N  # displacements and velocities of member q
@@ -538,8 +534,7 @@ def _switches(m, members, y, N, n, out_value, out_rate):
 @_jit()
 def _first_switch(value0, rate0, value1, rate1, h, floor):
     """Where in a step of length ``h`` a switch first changes sign (on the cubic through the values and rates at
-    its ends; within 1e-7 of an end: at that end; not within ``floor`` of zero), as a fraction of the step; 2.0
-    for nowhere."""
+    its ends; within 1e-7 of an end: at that end; not within ``floor`` of zero), a fraction of it; 2.0: none."""
     first = 2.0
     for q in range(value0.shape[0]):
         for k in range(value0.shape[1]):
@@ -633,9 +628,7 @@ def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, 
     value0, rate0, value1, rate1 = np.empty((G, S)), np.empty((G, S)), np.empty((G, S)), np.empty((G, S))
     if S:
         _switches(m, members, y, N, n, value0, rate0)
-    floor = tolerance[0]  # a switch that stays within the displacements' absolute tolerance of zero is not located
-    for c in range(N):
-        floor = min(floor, tolerance[c])
+    floor = tolerance[:N].min()  # a switch within the displacements' absolute tolerance of zero is not located
     cuts = 0
     h_after = 0.0  # the step a cut step's first trial proposed for after it (0: the last trial was not cut)
     # Initial step (Hairer's HINIT): the first-derivative estimate, then a second-order correction.
