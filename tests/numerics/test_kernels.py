@@ -376,6 +376,9 @@ def test_an_unwritable_cache_folder_still_runs(tmp_path):
                          capture_output=True, text=True, timeout=600)  # fmt: skip
     assert out.returncode == 0, out.stderr
     assert out.stdout.split()[-1] == "None"  # the kernels noticed and compiled without a disk cache
+    # and said so on stderr before compiling, once
+    assert out.stderr.count("ringchain: compiling the integrator for this machine, once: about") == 1, out.stderr
+    assert "not cached" in out.stderr
     chain = Chain.power_law(6, K=4.9e6, n=1.11, m=8.2e-3, a=0.04)
     here = simulate(chain, 2e-4, impact_velocity=0.5, n_samples=21, method="verlet")
     # The same kernel compiled from the same source, with or without the cache: the same numbers.
