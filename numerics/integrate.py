@@ -92,7 +92,7 @@ __all__ = [
 
 #: Default integrator: the compiled Dormand-Prince 5(4) pair, its steps ending where contacts open or close:
 #: sensor forces of the paper's chain within 2.8e-7 of their peak against an event-located tight reference
-#: (3.1e-5 for LSODA at rtol 1e-9; benchmarks/bench_paper_recipe.py), and faster (benchmarks/bench_kernels.py).
+#: (8.8e-6 for odeint at rtol 1e-9, 18x slower in the same run; benchmarks/bench_paper_recipe.py).
 DEFAULT_METHOD = "dopri5"
 
 #: Default relative tolerance of each adaptive method; the absolute tolerances are this times the
