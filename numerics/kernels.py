@@ -51,10 +51,11 @@ Contacts opening and closing.  A contact's force (K delta^n while delta > 0, zer
 where delta crosses zero; a step straddling that instant loses the pair's order, its error estimate no
 longer measures its error, and the error stops falling with the tolerance (on the paper's chain, 1.8e-3
 to 6.8e-4 of the peak from rtol 1e-6 to 1e-8).  So each step ends where a contact opens or closes
-(``locate``, the default): once a trial step passes the error test, each link's switch (its extension; the
-zero of Thornton's unloading curve) is followed on the cubic through its values and rates at both ends,
-and where one changes sign inside, the step is retaken to end just past the first change (bisection on
-the cubic).  The error then falls as a fifth-order method's (benchmarks/bench_paper_recipe.py).
+(``locate``, the default): once a trial step passes the error test, each contact's extension is followed
+on the cubic through its values and rates at both ends, and where one changes sign inside, the step is
+retaken to end just past the first change (bisection on the cubic).  The error then falls as a
+fifth-order method's (benchmarks/bench_paper_recipe.py).  Thornton's contact is not located yet (its
+switch, the zero of the unloading curve, moved with the memory and the step underflowed in a collision).
 
 The disk cache.  Kernels are compiled on first use and cached on disk by Numba in the package's cache
 folder (``<ringchain cache>/numba``, :func:`ringchain.theory._codegen.cache_dir`), so a later process
@@ -493,12 +494,11 @@ def _first_zero(e0, s0, e1, s1, start, end):
 @_jit()
 def _switches(m, members, y, N, n, out_value, out_rate):
     """Each switch (value, rate) of a group's members at its state ``y``, one row per member: zero where a
-    contact's force stops being smooth (its extension, as :func:`_extension`; the zero of Thornton's unloading
-    curve); (1, 0) for a smooth law.  Written out: a call per link passing the packed model costs more."""
-    S, d, w = out_value.shape[1], m.ints[1], 2 * N + (1 if m.ints[3] else 0)
+    contact's force stops being smooth (its extension, as :func:`_extension`); (1, 0) for a smooth law.
+    Written out: a call per link passing the packed model costs more."""
+    S, d = out_value.shape[1], m.ints[1]
     for q in range(members.size):
         o, v = q * n, q * n + N  # displacements and velocities of member q
-        bp = members[q] * (m.par.shape[0] > 1)
         for k in range(S):
             e, rate = 1.0, 0.0
             if m.ints[0] == 1:  # the ring-resolved chain: the contact above ring k, with ring k + 1 or the support
@@ -507,7 +507,7 @@ def _switches(m, members, y, N, n, out_value, out_rate):
                     e, rate = y[top + dofs - 1] - y[top], y[top + dofs - 1 + N] - y[top + N]
                 elif m.ints[8]:
                     e, rate = -y[top], -y[top + N]
-            elif m.kind[k] != 1 and m.kind[k] != 2:
+            elif m.kind[k] == 0 or m.kind[k] == 4:  # a power law, Hunt-Crossley (not yet Thornton: see the notes)
                 i, j = m.li[k], m.lj[k]
                 if d == 1:
                     e = (y[o + j] if j >= 0 else 0.0) - y[o + i]
@@ -524,10 +524,6 @@ def _switches(m, members, y, N, n, out_value, out_rate):
                         du = (0.0 if j < 0 else y[v + j * d + c]) - y[v + i * d + c]
                         rate += du * (m.rest_vectors[k, c] + gap) / length
                     e = stretch / (length + m.spans[k]) + m.prestretch[k]
-                if m.kind[k] == 3 and n > w:
-                    dy, dm = m.par[bp, k, 1], y[o + w + k]
-                    if dm > dy:  # unloading from beyond yield: the force ends where the unloading curve meets zero
-                        e -= dm - 0.5 * math.sqrt(dy) * (3.0 * dm - dy) / math.sqrt(dm)
             out_value[q, k], out_rate[q, k] = e, rate
 
 
