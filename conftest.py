@@ -41,8 +41,11 @@ def _alias_package_folders() -> None:
     for package, folder in (("ringchain.theory", "theory"), ("ringchain.numerics", "numerics")):
         module = importlib.import_module(package)
         sys.modules.setdefault(folder, module)
-        for info in pkgutil.iter_modules(module.__path__):
-            sys.modules.setdefault(f"{folder}.{info.name}", importlib.import_module(f"{package}.{info.name}"))
+        for info in pkgutil.walk_packages(module.__path__, prefix=f"{package}."):
+            if info.name.rsplit(".", 1)[-1] == "__main__":
+                continue  # running it would run the command
+            name = folder + info.name[len(package) :]
+            sys.modules.setdefault(name, importlib.import_module(info.name))
 
 
 _alias_package_folders()

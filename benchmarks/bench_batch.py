@@ -11,7 +11,7 @@ Both use the same integrator, duration and samples; the script prints both times
 their ratio (the target is at least 20x), and the largest relative difference between
 the batch's and the separate runs' peak forces at rings 6 and 12 (with "verlet" and a
 common step the two must agree to rounding).  The sweep engine
-(:func:`ringchain.numerics.sweep`) batches with the fixed-step Verlet method by default,
+(:func:`ringchain.numerics.jobs.sweep`) batches with the fixed-step Verlet method by default,
 because adaptive methods share one step size across the batch and every run's contact
 openings shrink it (run with ``--method LSODA`` or ``--method DOP853`` to see the effect).
 

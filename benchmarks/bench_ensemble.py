@@ -4,7 +4,7 @@ The chains are the issue's (issue 23): R/r = 9 rings (the paper's, m_eff/m0 = 0.
 spread by 10 % (R) and 5 % (r), 40 to a chain, hanging, struck by a 5 cm drop and read at every
 ring.  The script prints, each measured in this run on this machine:
 
-- the headline: one :func:`~ringchain.numerics.ensemble` call of 128 members on ``--workers``
+- the headline: one :func:`~ringchain.numerics.jobs.ensemble` call of 128 members on ``--workers``
   local processes (default 2), wall time and time per member (the issue's goal: 10 s with the
   compiled engine of issue 20); the wall time includes starting the worker processes, which the
   script measures separately (an ensemble of two members, one per worker);
@@ -30,8 +30,8 @@ import os
 import numpy as np
 from bench_batch import best_of  # the benchmarks' one timer (run from benchmarks/, as each script is)
 from ringchain.numerics import DEFAULT_METHOD, Chain, ensemble, simulate
-from ringchain.numerics.disorder import member_seeds
-from ringchain.numerics.ensemble import DEFAULT_BATCH_SIZE
+from ringchain.numerics.jobs.ensemble import DEFAULT_BATCH_SIZE
+from ringchain.numerics.layouts.disorder import member_seeds
 from ringchain.theory import Ring
 
 RING = Ring.from_aspect_ratio(9.0)

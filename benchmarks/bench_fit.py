@@ -24,7 +24,7 @@ import os
 import numpy as np
 from bench_batch import best_of  # this folder is on sys.path when a script runs from it
 from ringchain.numerics import fit_traces, paper_chain, simulate
-from ringchain.numerics.fit_dynamic import _records, _TraceProblem
+from ringchain.numerics.jobs.fit_dynamic import _records, _TraceProblem
 
 DROP = 0.02  # m
 T0 = 4e-5  # s: the impact 40 us after the trigger

@@ -3,7 +3,7 @@
 Four measurements, each a ratio measured in one run (issue 20, "Must show"):
 
 (a) ``c``: the C reference.  benchmarks/c/dopri5_chain.c is the scheme of ringchain's "dopri5"
-    (:mod:`ringchain.numerics.kernels`: Dormand-Prince 5(4), max-norm error control, the same step-size
+    (:mod:`ringchain.numerics.engine.kernels`: Dormand-Prince 5(4), max-norm error control, the same step-size
     controller) as a plain C loop, built here with the system ``cc -O2`` into a temporary folder.  Both
     integrate a uniform Hertz chain (F = K delta^(3/2) while engaged; K, m and a of the paper's R/r = 9
     ring, free ends, no gravity) of ``--rings`` rings (10^4) with random initial velocities (normal,
@@ -42,8 +42,9 @@ from pathlib import Path
 
 import numpy as np
 from bench_paper_recipe import DROP, EVERY, SENSORS, T_END, best_times, comparison, paper_rhs, run_recipe, sensor_forces
-from ringchain.numerics import STANDARD_GRAVITY, Chain, kernels, paper_chain, simulate
-from ringchain.numerics.integrate import DEFAULT_RTOL
+from ringchain.numerics import STANDARD_GRAVITY, Chain, paper_chain, simulate
+from ringchain.numerics.engine import kernels
+from ringchain.numerics.engine.integrate import DEFAULT_RTOL
 
 C_SOURCE = Path(__file__).parent / "c" / "dopri5_chain.c"
 HERTZ_T_END = 2e-4  # s: 0.2 ms
@@ -54,7 +55,8 @@ PARTS = ("c", "paper", "cold", "ns")
 COLD_PROBE = """
 import time
 start = time.perf_counter()
-from ringchain.numerics import kernels, paper_chain, simulate
+from ringchain.numerics import paper_chain, simulate
+from ringchain.numerics.engine import kernels
 sim = simulate(paper_chain("dual-spring"), 2e-3, drop_height=0.05)
 print(time.perf_counter() - start, kernels.CACHE is not None)
 """

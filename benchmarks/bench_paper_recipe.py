@@ -35,8 +35,9 @@ import os
 import time
 
 import numpy as np
-from ringchain.numerics import STANDARD_GRAVITY, Chain, initial_state, kernels, paper_chain, simulate
-from ringchain.numerics.integrate import DEFAULT_RTOL
+from ringchain.numerics import STANDARD_GRAVITY, Chain, initial_state, paper_chain, simulate
+from ringchain.numerics.engine import kernels
+from ringchain.numerics.engine.integrate import DEFAULT_RTOL
 from scipy.integrate import odeint, solve_ivp
 
 DROP = 0.05  # m

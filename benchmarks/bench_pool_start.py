@@ -1,12 +1,12 @@
 """What a pool of worker processes costs before it saves anything: the threshold of ``run_tasks``.
 
 A sweep or an ensemble given no executor runs its tasks on local "spawn" worker processes
-(:func:`ringchain.numerics.executors.default_executor`).  Each worker is a fresh interpreter: it
+(:func:`ringchain.numerics.engine.executors.default_executor`).  Each worker is a fresh interpreter: it
 imports NumPy, SciPy, Numba and ringchain and loads the compiled kernels from the disk cache before
 its first task.  This script measures that cost: the wall time from starting a pool of ``--workers``
 processes to each one having run one short simulation of the paper's chain (0.1 ms), against the same
 simulation in this process, warm.  The difference is
-:data:`~ringchain.numerics.executors.POOL_START_SECONDS` (a pool pays it once; the calling process
+:data:`~ringchain.numerics.engine.executors.POOL_START_SECONDS` (a pool pays it once; the calling process
 never).  Run: ``python benchmarks/bench_pool_start.py`` (best of ``--repeat``).
 """
 
@@ -27,7 +27,7 @@ def one_run(_=None) -> float:
 
 
 def main(argv=None):
-    from ringchain.numerics.executors import POOL_START_SECONDS, default_executor
+    from ringchain.numerics.engine.executors import POOL_START_SECONDS, default_executor
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--workers", type=int, default=os.cpu_count() or 1)

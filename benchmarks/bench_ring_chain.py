@@ -28,7 +28,7 @@ import argparse
 
 import numpy as np
 from bench_paper_recipe import best_time  # this folder is on sys.path when a script runs from it
-from ringchain.numerics.effective_mass import (
+from ringchain.numerics.jobs.effective_mass import (
     DROP_HEIGHTS,
     arrival_times,
     fit_effective_mass,
@@ -37,8 +37,8 @@ from ringchain.numerics.effective_mass import (
     spectral_peaks,
     trailing_spectrum,
 )
-from ringchain.numerics.ring_beam import DEFAULT_MODES, RingModel
-from ringchain.numerics.ring_chain import RingChain, simulate_rings
+from ringchain.numerics.layouts.ring_beam import DEFAULT_MODES, RingModel
+from ringchain.numerics.layouts.ring_chain import RingChain, simulate_rings
 from ringchain.theory import Ring, n_per_mm_to_si, paper_data
 
 T_END = 3e-3  # s

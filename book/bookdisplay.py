@@ -118,9 +118,9 @@ STRIKER = striker_note("m_eff")
 def stiffness_words(model: str, stiffness: str, aspect_ratio: float = 9.0) -> str:
     """Where ``paper_chain(model, stiffness=...)`` takes its stiffness from, as Markdown for a caption.
 
-    The words are the package's (:func:`ringchain.numerics.paper.stiffness_note`), with the symbols set as math.
+    The words are the package's (:func:`ringchain.numerics.jobs.paper.stiffness_note`), with the symbols set as math.
     """
-    from ringchain.numerics.paper import stiffness_note
+    from ringchain.numerics.jobs.paper import stiffness_note
 
     note = stiffness_note(model, stiffness, aspect_ratio).replace("N/mm^n", "N/mm@UNITS@")
     note = re.sub(r"\b(K_c|K_b|K|n)\b", r"$\1$", note)

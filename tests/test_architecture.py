@@ -1,25 +1,33 @@
-"""The floors of ../shared/ARCHITECTURE.md, read from the code: no import cycle, no private reach, thin command line.
+"""The floors of ../shared/ARCHITECTURE.md, read from the code: no import cycle, no private reach, imports only
+downwards, thin command line, the public names where they were.
 
 Every import counts, at the top of a module or inside a function.  A module may import an underscore name
-only from a private module (``_validate``, ``_codegen``, ``_cli_options``).
+only from a private module (``_validate``, ``_codegen``, ``_options``).
 """
 
 import ast
+import importlib
 from pathlib import Path
 
 import pytest
+import tomllib
 
 ROOT = Path(__file__).resolve().parents[1]
 PACKAGES = {"theory": "ringchain.theory", "numerics": "ringchain.numerics"}
 
+#: The floors of numerics, bottom to top: a module imports only from its own floor and those below.
+FLOORS = ("engine", "contact", "layouts", "jobs", "cli")
+
 
 def modules() -> dict:
-    """{dotted name: (syntax tree, is a package __init__)} of every module of the two packages."""
+    """{dotted name: (syntax tree, is a package __init__)} of every module of the two packages, subpackages too."""
     out = {}
     for folder, package in PACKAGES.items():
-        for path in sorted((ROOT / folder).glob("*.py")):
-            name = package if path.name == "__init__.py" else f"{package}.{path.stem}"
-            out[name] = (ast.parse(path.read_text()), path.name == "__init__.py")
+        for path in sorted((ROOT / folder).rglob("*.py")):
+            parts = list(path.relative_to(ROOT / folder).with_suffix("").parts)
+            is_package = parts[-1] == "__init__"
+            name = ".".join([package, *(parts[:-1] if is_package else parts)])
+            out[name] = (ast.parse(path.read_text()), is_package)
     return out
 
 
@@ -83,15 +91,65 @@ def test_no_private_name_is_imported_across_modules():
     assert reached == []
 
 
-def test_the_command_line_is_thin_and_no_numerics_module_is_huge():
-    lines = {path.name: len(path.read_text().splitlines()) for path in (ROOT / "numerics").glob("*.py")}
-    assert lines["cli.py"] < 350
+def floor(name: str) -> int | None:
+    """The floor of a numerics module (index into FLOORS); None for the package's face and for theory."""
+    parts = name.split(".")
+    if parts[:2] != ["ringchain", "numerics"] or len(parts) < 4:
+        return None
+    return FLOORS.index(parts[2])
+
+
+def test_every_numerics_module_lives_on_a_floor():
+    stray = [name for name in MODULES if name.startswith("ringchain.numerics.") and name.count(".") == 2
+             and name.rsplit(".", 1)[-1] not in FLOORS]  # fmt: skip
+    assert stray == []
+    assert len(list((ROOT / "numerics").glob("*.py"))) <= 6
+    assert sorted(p.name for p in (ROOT / "numerics").iterdir() if p.is_dir() and p.name != "__pycache__") == sorted(
+        FLOORS
+    )
+
+
+def test_a_floor_imports_only_from_itself_and_the_floors_below():
+    upward = []
+    for name, deps in graph().items():
+        here = floor(name)
+        if name.startswith("ringchain.theory"):
+            upward += [f"{name} -> {dep}" for dep in deps if dep.startswith("ringchain.numerics")]
+        elif here is not None:
+            upward += [f"{name} -> {dep}" for dep in deps if (floor(dep) or 0) > here]
+    assert upward == []
+
+
+def test_the_wheel_lists_every_subpackage():
+    config = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["setuptools"]
+    packages = {name for name, (_, is_package) in MODULES.items() if is_package}
+    assert packages == set(config["packages"])
+
+
+def test_the_public_names_of_the_last_release_import_from_the_same_package():
+    listed = [line.split() for line in (ROOT / "tests" / "public_names.txt").read_text().splitlines()
+              if line and not line.startswith("#")]  # fmt: skip
+    missing = []
+    for package, name in listed:
+        module = importlib.import_module(package)
+        if name not in module.__all__ or not hasattr(module, name):
+            missing.append(f"{package}.{name}")
+    assert len(listed) > 150 and missing == []
+    from ringchain.numerics.engine import laws, signals
+    from ringchain.numerics.laws import PowerLaw
+    from ringchain.numerics.signals import leading_pulse
+
+    assert PowerLaw is laws.PowerLaw and leading_pulse is signals.leading_pulse
+
+
+def test_the_command_line_is_thin_and_no_module_is_huge():
+    lines = {path.relative_to(ROOT).as_posix(): len(path.read_text().splitlines())
+             for folder in PACKAGES for path in (ROOT / folder).rglob("*.py")}  # fmt: skip
+    assert lines["numerics/cli/commands.py"] < 350
     assert {name: n for name, n in lines.items() if n > 900} == {}
 
 
-@pytest.mark.parametrize("floor", ["network", "laws", "integrate", "results", "traces"])
-def test_the_engine_knows_no_layout_and_no_job(floor):
-    above = {"chain", "chain_file", "ring_chain", "ring_beam", "paper", "experiment", "sweep", "fit", "fit_dynamic",
-             "junction", "effective_mass", "cli", "fit_cli", "_cli_options", "sheet", "sheet_runs",
-             "sheet_cli"}  # fmt: skip
-    assert {dep.rsplit(".", 1)[-1] for dep in graph()[f"ringchain.numerics.{floor}"]} & above == set()
+@pytest.mark.parametrize("module", ["network", "laws", "integrate", "kernels", "results", "traces", "signals"])
+def test_the_engine_knows_no_layout_and_no_job(module):
+    deps = graph()[f"ringchain.numerics.engine.{module}"]
+    assert {dep for dep in deps if dep.startswith("ringchain.numerics") and floor(dep) != 0} == set()

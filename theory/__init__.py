@@ -10,13 +10,13 @@ Static theory of one contact (paper Sec. II, Eqs. 1-4, App. A):
 - :func:`hertz_stiffness_pair` -- K_c of two different tori (radii, materials), for chains that vary;
 - :func:`contact_semi_axes` -- the semi-axes of the contact ellipse under a force (where it outgrows the tube);
 - :func:`torus_gap`, :func:`contact_patches` -- the exact gap of two tori beyond its quadratic
-  (Hertz) part, and the two contact points it has below theta_min (:mod:`.contact`, Sec. 4);
+  (Hertz) part, and the two contact points it has below theta_min (:mod:`.gap`);
 - :func:`bending_stiffness` -- K_b of one ring by Castigliano (Eq. 2);
 - :func:`series_displacement`, :func:`local_exponent`, :func:`crossover_force`,
   :func:`fit_power_law` -- the series law and its power-law reduction (Eqs. 3-4);
 - :class:`Ring`, :class:`Material` -- a ring of the chain and its material.
 
-Long waves (paper Sec. IV.C, App. B; modules :mod:`.longwave` and :mod:`.solitary`):
+Long waves (paper Sec. IV.C, App. B; modules :mod:`.longwave`, :mod:`.solitary` and :mod:`.prestressed`):
 
 - :func:`solitary_wave_speed`, :func:`solitary_wave_speed_from_velocity` -- V_s of the
   compact solitary wave (Eq. (8));
@@ -35,7 +35,8 @@ Linear waves and what the pulse carries (beyond the paper; modules :mod:`.linear
 - :func:`impact_speed` -- sqrt(2 g h), the speed of a dropped ring when its slack is taken up;
 - :func:`impact_amplitude` -- the peak force launched by a striker at speed v0 (F_m ~ v0^(2n/(n+1))).
 
-Disorder: rings that differ from one another (beyond the paper; module :mod:`.disorder`):
+Disorder: rings that differ from one another (beyond the paper; modules :mod:`.disorder`, :mod:`.scattering`
+and :mod:`.attenuation`):
 
 - :func:`effective_medium_speed`, :func:`harmonic_mean_speed` -- long linear waves: the homogenised
   speed <a>/sqrt(<m><1/k>) and the harmonic mean of the local speeds, from per-ring arrays;
@@ -57,6 +58,7 @@ Sheets of interlinked rings (beyond the paper, its Sec. V outlook; module :mod:`
 
 - :func:`sheet_dispersion` -- the in-plane branches of a pretensioned square (4-in-1) or triangular
   (6-in-1) sheet, from the network's energy to second order (axial stiffness k, geometric stiffness T/a);
+- :func:`sheet_group_velocity` -- the group velocity of each branch, grad_q omega (the front of a point source);
 - :func:`sheet_sound_speeds`, :class:`SheetSpeeds` -- its long-wave longitudinal and transverse speeds
   against the direction (anisotropic for the square sheet, isotropic for the triangular one).
 
@@ -95,30 +97,23 @@ chain (``sigma_K``, ``sigma_m``, ``correlation``, ``sigma_Z``) after the chain's
 """
 
 from . import curved_beam, paper_data
+from .attenuation import attenuated_travel_time, disorder_attenuation_length  # issue 23: disorder
 from .contact import (
     contact_ellipse,
     contact_modulus,
-    contact_patches,
     contact_semi_axes,
     hertz_stiffness,
     hertz_stiffness_pair,
     minimum_contact_angle,
-    smallest_patch_angle,
-    torus_gap,
 )
 from .curved_beam import inextensional_frequency, ring_frequencies
 from .disorder import (  # issue 23: disorder
-    attenuated_travel_time,
-    chain_impedance_spread,
-    disorder_attenuation_length,
-    disorder_pulse_spread,
     disorder_speed_shift,
     disordered_solitary_wave_speed,
     effective_medium_speed,
     harmonic_mean_speed,
-    impedance_spread,
-    localization_length,
 )
+from .gap import contact_patches, smallest_patch_angle, torus_gap
 from .geometry import MIN_CHAIN_ASPECT_RATIO, PAPER_TUBE_RADIUS, Ring
 from .linear import (
     STANDARD_GRAVITY,
@@ -150,8 +145,15 @@ from .plastic import (
     thornton_unloading_force,
     yield_velocity,
 )
+from .prestressed import solitary_wave_speed_prestressed
 from .pulse import impact_amplitude, solitary_wave_energy, solitary_wave_momentum
 from .ring import bending_stiffness
+from .scattering import (  # issue 23: disorder
+    chain_impedance_spread,
+    disorder_pulse_spread,
+    impedance_spread,
+    localization_length,
+)
 from .series import (
     DEFAULT_FORCE_WINDOW,
     crossover_force,
@@ -164,12 +166,11 @@ from .series import (
     series_stiffness_for_power_law,
     si_to_n_per_mm,
 )
-from .sheet import SheetSpeeds, sheet_dispersion, sheet_sound_speeds
+from .sheet import SheetSpeeds, sheet_dispersion, sheet_group_velocity, sheet_sound_speeds
 from .solitary import (
     solitary_wave_profile,
     solitary_wave_speed,
     solitary_wave_speed_from_velocity,
-    solitary_wave_speed_prestressed,
     solitary_wave_width,
 )
 from .subsurface import FirstYield, first_yield, subsurface_stress, yield_force
@@ -236,6 +237,7 @@ __all__ = [
     "ring_frequencies",
     "inextensional_frequency",
     "sheet_dispersion",
+    "sheet_group_velocity",
     "sheet_sound_speeds",
     "SheetSpeeds",
     # issue 22: contacts that yield

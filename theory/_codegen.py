@@ -55,7 +55,7 @@ _FUNC_NAME = "_lambdifygenerated"
 #: First bytes of a cache entry; the SHA-256 checksum of the entry follows on the same line.
 _MAGIC = b"# ringchain generated code v1 sha256="
 
-#: Names of cache entries (``contact._stiffness_elliptical-<20 hex digits>.py``) and of the
+#: Names of cache entries (``elliptical._stiffness_elliptical-<20 hex digits>.py``) and of the
 #: temporary files they are written through: the only files :func:`clear_cache` removes.
 _ENTRY_NAME = re.compile(r"[A-Za-z_]\w*(?:\.[A-Za-z_]\w*)*-[0-9a-f]{20}\.py")
 _TEMP_NAME = re.compile(r"\.tmp-[A-Za-z_]\w*(?:\.[A-Za-z_]\w*)*-[0-9a-f]{20}-\d+-[0-9a-f]{8}\.py")

@@ -14,6 +14,12 @@ unchanged), and :func:`split_product` separates a product into the factor that d
 given symbols (typically the arrays, such as the geometry or the force) and the rest
 (typically scalars, such as the material or the chain), so that the numeric function
 multiplies the two once, after each is evaluated on its own arguments.
+
+Shared by several derivations, on the symbolic side: :func:`tidy_powers` and :func:`merge_powers`
+merge the powers of positive bases (the first also cancels exponents and factors the bases of powers
+of sums: :mod:`.solitary`, :mod:`.prestressed`; the second only expands, flattens and combines:
+:mod:`.disorder`, :mod:`.attenuation`), and :func:`sum_of_squares` writes a variance of two
+correlated terms in a form that rounding cannot make negative (:mod:`.disorder`, :mod:`.scattering`).
 """
 
 from __future__ import annotations
@@ -22,7 +28,16 @@ import numpy as np
 
 from ._codegen import sp
 
-__all__ = ["positive_differences", "split_product", "log_monomial", "power_law", "power_law_value"]
+__all__ = [
+    "positive_differences",
+    "split_product",
+    "log_monomial",
+    "power_law",
+    "power_law_value",
+    "tidy_powers",
+    "merge_powers",
+    "sum_of_squares",
+]
 
 
 def _leading_negative(add) -> bool:
@@ -137,3 +152,31 @@ def power_law_value(log_coefficient, exponent, variable):
         value += log_coefficient
         return np.exp(value, out=value)
     return np.exp(log_coefficient + exponent * value)
+
+
+def tidy_powers(expr):
+    """Merge powers and cancel their exponents (every base positive); the bases of powers of sums factored."""
+    expr = expr.replace(lambda e: e.is_Pow and e.base.is_Add, lambda e: sp.Pow(sp.factor(e.base), e.exp))
+    expr = sp.expand_power_base(sp.powdenest(sp.expand_power_base(expr, force=True), force=True), force=True)
+    expr = sp.powsimp(expr, combine="exp", force=True)
+    expr = expr.replace(
+        lambda e: e.is_Pow and bool(e.exp.free_symbols), lambda e: sp.Pow(e.base, sp.factor(sp.cancel(e.exp)))
+    )
+    return sp.powsimp(expr, combine="exp", force=True)
+
+
+def merge_powers(expr):
+    """Powers of positive bases merged (the bases expanded, nested powers flattened, equal bases combined)."""
+    return sp.powsimp(sp.powdenest(sp.expand_power_base(expr, force=True), force=True), force=True)
+
+
+def sum_of_squares(variance, first, second, correlation):
+    """``variance`` = first^2 + second^2 + 2 c first second (checked) in a form that stays non-negative.
+
+    (1+c)/2 (first+second)^2 + (1-c)/2 (first-second)^2.
+
+    Both terms are non-negative for |c| <= 1, so rounding never makes the value negative.
+    """
+    if sp.simplify(variance - (first**2 + second**2 + 2 * correlation * first * second)) != 0:  # pragma: no cover
+        raise RuntimeError(f"{variance} is not the variance of two correlated terms")
+    return (1 + correlation) / 2 * (first + second) ** 2 + (1 - correlation) / 2 * (first - second) ** 2

@@ -31,6 +31,11 @@ __all__ = [
     "distinct",
     "compact_wave_exponent",
     "compact_wave_chain",
+    "torus_radii",
+    "spreads",
+    "exponent_between",
+    "finite_array_result",
+    "rings",
 ]
 
 
@@ -203,6 +208,70 @@ def compact_wave_chain(K, n, a, m=None):
     if m is not None:
         out.append(positive("m", m, "kg"))
     return out
+
+
+def torus_radii(R, r):
+    """R, r as float arrays with 0 < 2 r < R, finite; a ValueError naming the problem otherwise.
+
+    The usual case (r one number) costs two reductions over R.
+    """
+    r = positive("r", r, "m")
+    R = as_array("R", R)
+    broadcast_shape(R=R, r=r)
+    if R.size and r.size == 1:
+        lo, hi = R.min(), R.max()
+        fine = bool(hi < np.inf and 0.5 * lo > r.reshape(()))  # False for NaN too; 0.5 R is exact
+    else:
+        fine = False
+    if not fine:
+        R = positive("R", R, "m")
+        if not np.all(0.5 * R > r):
+            with np.errstate(all="ignore"):
+                ratio = np.min(R / r)
+            raise ValueError(
+                "R must exceed 2 r: for R <= 2 r the relative curvature of two interlocked tori is not "
+                f"positive and Hertz contact does not apply (got R/r = {show(ratio)})"
+            )
+    return R, r
+
+
+def spreads(sigma_K, sigma_m, correlation):
+    """Two relative spreads (>= 0) and their correlation (in [-1, 1]) of a disordered chain, as float arrays."""
+    sigma_K = nonnegative("sigma_K", sigma_K)
+    sigma_m = nonnegative("sigma_m", sigma_m)
+    correlation = in_range("correlation", correlation, -1.0, 1.0, closed_low=True, closed_high=True)
+    return sigma_K, sigma_m, correlation
+
+
+def exponent_between(n, low=1.0, high=np.inf):
+    """n in (low, high) for low 1 (the compact wave) or 0 (any power law), with what the bounds mean."""
+    try:
+        return in_range("n", n, low, high, closed_high=False)
+    except ValueError as error:
+        reason = {
+            1.0: "the compact solitary wave exists only for n > 1 (n = 1 is the linear chain)",
+            0.0: "the contact law F = K delta^n needs n > 0",
+        }[low]
+        if high < np.inf:
+            reason += f"; its strain profile has an infinite mean square wavenumber (a cusp) for n >= {high:g}"
+        raise ValueError(f"{error}: {reason}") from None
+
+
+def finite_array_result(value, what: str, inputs: str):
+    """``value`` as a float array (computed quietly), checked by :func:`finite_result`."""
+    with np.errstate(all="ignore"):
+        array = np.asarray(value, dtype=float)
+    return finite_result(array, what, inputs)
+
+
+def rings(name, value, unit):
+    """Per-ring values: positive, finite, at least one ring on the last axis (a number is one ring)."""
+    array = positive(name, value, unit)
+    if array.ndim == 0:
+        array = array[None]
+    if array.shape[-1] == 0:
+        raise ValueError(f"{name} must hold at least one ring: its last axis (the rings) is empty")
+    return array
 
 
 def show(array) -> str:

@@ -15,7 +15,7 @@ of the dual-spring ring is linear anyway.  Step by step:
    the stiffness is the only trace of the force law) times k_c.
 3. :func:`dual_spring_matrix` -- the dual-spring chain (Eqs. (5)-(6)) linearised about
    the static state: two sites of mass m/2 per ring (lower and upper half, the site
-   labelling of :mod:`ringchain.numerics.chain`), joined alternately by the ring's
+   labelling of :mod:`ringchain.numerics.layouts.chain`), joined alternately by the ring's
    bending spring K_b and by the contact, whose force law enters only through its
    slope k_c.  A Bloch wave (amplitudes A, B on the two halves, phase exp(i q a) from
    one ring to the next) turns the equations of motion into the 2 x 2 Hermitian
@@ -66,7 +66,7 @@ frequency of the trailing oscillations of the dual-spring chain behind a strong 
 after which the contacts are slack: in the paper's 20-ring chain the tail's strongest
 line lies 0.2-1.4 % above it after drops of 0.2-0.5 m and 5 % above after 50 mm, lifted
 by the contacts' brief re-engagements; after small drops (a few mm) the contacts stay
-taut and the tail is not at an edge (tests/numerics/test_linear_waves.py; book chapter
+taut and the tail is not at an edge (tests/numerics/layouts/test_linear_waves.py; book chapter
 "Linear waves and what the pulse carries").
 
 Numeric functions: :func:`dispersion`, :func:`band_edges`, :func:`sound_speed`,

@@ -61,7 +61,7 @@ cold-drawn wire; tests/theory/test_plastic.py).
 What the model leaves out: work hardening (the flattened contact of a real ring yields at a
 higher pressure the next time, and cold-worked wire hardly hardens), strain-rate effects, and
 the growth of the contact beyond Hertz's radius (a numerical capped-pressure contact,
-:func:`ringchain.numerics.contact_bem.capped_contact_curve`, carries 1.1-2 times Thornton's
+:func:`ringchain.numerics.contact.bem.capped_contact_curve`, carries 1.1-2 times Thornton's
 force at the same approach, the ratio growing with delta/delta_y).  Read e as a lower bound
 and the plastic loss as an upper bound.
 

@@ -27,13 +27,13 @@ impact.  Step by step:
    E ~ F_m^((n+1)/n) gives F_m ~ v_0^(2n/(n+1)) whatever the prefactor (scaling); the
    prefactor comes from the energy of step 4.
 
-Why energy and not momentum: on the lattice (tests/numerics/test_linear_waves.py) a
+Why energy and not momentum: on the lattice (tests/numerics/layouts/test_linear_waves.py) a
 striker of the chain's own mass gives the leading wave 97.6-99.4 % of its energy for
 n = 1.1-1.5, but 1.14-1.53 times its momentum (the striker and the first rings recoil
 towards the chain and carry the difference).  The energy law puts the amplitude of the
-formed wave 1.1-1.4 % too high (the measured error: the energy left behind and the
-long-wave error of the invariants partly cancel); the momentum law would be 14-36 %
-too low.
+formed wave 1.1-1.4 % too high (the measured error: the energy left behind, 0.6-2.4 %,
+and the long-wave error of the wave's energy, +1.39 to +0.25 %, both make it high and
+add); the momentum law would be 14-36 % too low.
 
 Numeric functions: :func:`solitary_wave_energy`, :func:`solitary_wave_momentum`,
 :func:`impact_amplitude`.
@@ -266,7 +266,7 @@ def solitary_wave_energy(F_m, *, K, n, m, a):
     because the wave spans a fixed number of rings.  Beyond the paper.  On the lattice
     the formed wave carries 0.05-0.07 (a/L) more than this at its measured amplitude,
     L = :func:`~ringchain.theory.solitary_wave_width` (the long-wave error; measured in
-    tests/numerics/test_linear_waves.py).
+    tests/numerics/layouts/test_linear_waves.py).
 
     Examples
     --------
@@ -338,7 +338,7 @@ def impact_amplitude(v0, *, K, n, m, a, m_striker=None):
     formed wave's peak force is 1.1-1.4 % below this prediction for n = 1.1-1.5.  A
     striker heavier than a ring launches a train of waves, and the leading one carries
     less than all of the energy: with m_striker = 2.70 m (Table I's m0/m_eff) the formed
-    wave is 2.3 % below the prediction for n = 1.11 (tests/numerics/test_striker.py) and
+    wave is 2.3 % below the prediction for n = 1.11 (tests/numerics/layouts/test_striker.py) and
     6.9 % for n = 3/2 (the book's chapter on linear waves).  In a short chain with n near 1
     the wave has no room to form (its width L/a grows as 1/(n - 1)).  Beyond the paper.
 

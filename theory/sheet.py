@@ -66,7 +66,13 @@ slope of the contact law at T, where K stands.  The long-wave speeds are compute
 scaled by the largest of them (``_tensor_in_speeds``), and long waves of the dispersion as q times
 those speeds, so that neither squares nor sin^2 of a tiny phase leave the doubles where omega does not.
 
-Numeric functions: :func:`sheet_dispersion`, :func:`sheet_sound_speeds`.
+7. :func:`dispersion_gradient` -- the derivatives of the entries of D(q) with respect to q_x and q_y.  The
+   eigenvalue omega^2 of a symmetric D with unit eigenvector U changes as U^T (dD/dq) U (first-order
+   perturbation), so the group velocity of a branch is v_g = grad_q omega = U^T (grad_q D) U/(2 omega): the
+   direction energy travels in, which from a point source is not the wavevector's (the wave surface is the
+   polar reciprocal of the slowness curve q/omega).
+
+Numeric functions: :func:`sheet_dispersion`, :func:`sheet_group_velocity`, :func:`sheet_sound_speeds`.
 """
 
 from __future__ import annotations
@@ -92,8 +98,10 @@ __all__ = [
     "uniform",
     "branches_along_x",
     "long_wave_speeds_squared",
+    "dispersion_gradient",
     "SheetSpeeds",
     "sheet_dispersion",
+    "sheet_group_velocity",
     "sheet_sound_speeds",
 ]
 
@@ -344,6 +352,14 @@ def long_wave_speeds_squared(pattern, angle=None):
     return project(n, n), project(t, t)
 
 
+@functools.cache
+def dispersion_gradient(pattern):
+    """(dD/dq_x, dD/dq_y): the derivatives of the Bloch matrix (step 7 of the module docstring), m^2/s^2 per rad/m."""
+    s = symbols()
+    D = dynamical_matrix(pattern)
+    return tuple(sp.ImmutableMatrix(D.applyfunc(lambda entry, q=q: sp.diff(entry, q))) for q in (s["q_x"], s["q_y"]))
+
+
 # --- numeric functions ----------------------------------------------------------------------------------------
 
 
@@ -366,6 +382,23 @@ def _triangular_matrix():
     s = symbols()
     D = dynamical_matrix("triangular")
     return (s["q_x"], s["q_y"], s["m"], *_family_arguments("triangular")), sp.Tuple(D[0, 0], D[1, 1], D[0, 1])
+
+
+def _gradient_entries(pattern):
+    s = symbols()
+    dx, dy = dispersion_gradient(pattern)
+    entries = sp.Tuple(dx[0, 0], dx[1, 1], dx[0, 1], dy[0, 0], dy[1, 1], dy[0, 1])
+    return (s["q_x"], s["q_y"], s["m"], *_family_arguments(pattern)), entries
+
+
+@derived
+def _square_gradient():
+    return _gradient_entries("square")
+
+
+@derived
+def _triangular_gradient():
+    return _gradient_entries("triangular")
 
 
 def _tensor_in_speeds(pattern):
@@ -400,6 +433,7 @@ def _triangular_tensor():
 
 
 _MATRIX = {"square": _square_matrix, "triangular": _triangular_matrix}
+_GRADIENT = {"square": _square_gradient, "triangular": _triangular_gradient}
 _TENSOR = {"square": _square_tensor, "triangular": _triangular_tensor}
 _SHEET = "wavevectors and sheet parameters (k, T, m, a)"
 
@@ -560,6 +594,66 @@ def sheet_dispersion(qx, qy, *, pattern, T, k, m, a):
             speeds = speeds * np.exp(0.5 * log_scale)[..., None]
             omega = np.where(long[..., None], q[..., None] * speeds, omega)
     return v.finite_result(omega, "omega", _SHEET)
+
+
+def sheet_group_velocity(qx, qy, *, pattern, T, k, m, a):
+    """Group velocities of the two in-plane branches of a pretensioned sheet, m/s.
+
+    Parameters
+    ----------
+    qx, qy : array_like
+        Wavevector components, rad/m, as in :func:`sheet_dispersion`; not both zero.
+    pattern, T, k, m, a
+        As in :func:`sheet_dispersion`.
+
+    Returns
+    -------
+    ndarray
+        v_g = grad_q omega, m/s, of shape broadcast(qx, qy, T, k, m, a) + (2, 2): the branches on the
+        second-last axis in the order of :func:`sheet_dispersion` (ascending omega), the (x, y) components
+        on the last.  Where the two branches meet (the square sheet's diagonal for long waves) omega is not
+        differentiable and the value is that of one of the two polarisations.
+
+    Notes
+    -----
+    v_g = U^T (grad_q D) U/(2 omega) for the unit eigenvector U of the Bloch matrix D(q) of the branch
+    (:func:`dispersion_gradient`, step 7 of the module docstring).  For long waves the branches are
+    non-dispersive and v_g along a ray direction traces the wave surface, the front of a point source:
+    for the square sheet's branch polarised along x it is the ellipse (x/c_L)^2 + (y/c_T)^2 = t^2, so that
+    off a lattice direction the front of that branch travels at 1/sqrt(cos^2/c_L^2 + sin^2/c_T^2), close
+    to c_T/|sin| where c_T << c_L.  Beyond the paper.
+
+    Examples
+    --------
+    >>> v = sheet_group_velocity(1e-6, 0.0, pattern="square", T=0.25, k=1.0, m=1.0, a=1.0)  # long wave along x
+    >>> [round(float(x), 9) for x in v[:, 0]]  # the string's sqrt(T a/m), then the chain's a sqrt(k/m)
+    [0.5, 1.0]
+    """
+    m, params = _sheet(pattern, k, T, m, a)
+    qx, qy = v.as_float("qx", qx), v.as_float("qy", qy)
+    v.broadcast_shape(qx=qx, qy=qy, m=m, **_named(pattern, params))
+    if np.any((qx == 0) & (qy == 0)):
+        raise ValueError(
+            "the wavevector (qx, qy) in rad/m must not be zero: the group velocity of a long wave is "
+            "taken at a small q (sheet_sound_speeds gives the long-wave phase speeds)"
+        )
+    with np.errstate(all="ignore"):  # overflow is reported below, by value
+        xx, yy, xy = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in _MATRIX[pattern](qx, qy, m, *params)))
+        lower, upper = _ascending(xx, yy, xy)
+        # The upper eigenvector makes the angle psi with x, tan(2 psi) = 2 xy/(xx - yy); the lower is normal to it.
+        psi = 0.5 * np.arctan2(2 * xy, xx - yy)
+        c, s = np.cos(psi), np.sin(psi)
+        gradient = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in _GRADIENT[pattern](qx, qy, m, *params)))
+        velocity = []
+        for omega2, (ux, uy) in ((lower, (-s, c)), (upper, (c, s))):
+            omega = np.sqrt(omega2)
+            components = [
+                (ux * ux * dxx + uy * uy * dyy + 2 * ux * uy * dxy) / (2 * omega)
+                for dxx, dyy, dxy in (gradient[:3], gradient[3:])
+            ]
+            velocity.append(np.stack(components, axis=-1))
+        velocity = np.stack(velocity, axis=-2)
+    return v.finite_result(velocity, "the group velocity", _SHEET)
 
 
 class SheetSpeeds(NamedTuple):

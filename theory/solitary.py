@@ -28,19 +28,11 @@ Continues :mod:`.longwave` from the strain equation (Eq. (B17)).  Step by step:
    :func:`speed_from_velocity`, :func:`force_profile` (F = K (a xi)^n, delta ~ a xi),
    :func:`speed_from_force` (paper Eq. (8)), :func:`support_width` (pi/omega),
    :func:`centred_force_profile`.
-5. Pre-stretched chain (beyond the paper): a static strain xi_0 > 0 far from the wave.
-   :func:`first_integral` -- with w(xi) = xi_tau^2, Eq. (B19) is linear in w and
-   xi^(n-1) is its integrating factor: n a^2/24 xi^(n-1) xi_tau^2 = P(xi) + E.
-   :func:`prestressed_speed_squared` -- xi_tau = 0 at xi_0 and at the peak xi_max gives
-   V_s^2 = 2 c_n^2 [(xi_max^(n+1) - xi_0^(n+1))/(n+1) - xi_0^n (xi_max - xi_0)]/(xi_max - xi_0)^2;
-   :func:`prestressed_speed_hypergeometric` writes it as
-   V_s^2 = n c_n^2 xi_max^(n-1) 2F1(1 - n, 2; 3; 1 - xi_0/xi_max), finite and accurate
-   for every 0 <= xi_0 <= xi_max, and :func:`prestressed_speed_from_force` in forces.
-   For n = 3/2 this is Nesterenko's weakly compressed chain.
+5. The pre-stretched chain (a static strain xi_0 > 0 far from the wave, beyond the paper)
+   continues from Eq. (B19) in :mod:`.prestressed`.
 
 Numeric functions: :func:`solitary_wave_speed`, :func:`solitary_wave_speed_from_velocity`,
-:func:`solitary_wave_width`, :func:`solitary_wave_profile`,
-:func:`solitary_wave_speed_prestressed`.
+:func:`solitary_wave_width`, :func:`solitary_wave_profile`.
 """
 
 from __future__ import annotations
@@ -52,8 +44,7 @@ import numpy as np
 from . import _validate as v
 from . import longwave
 from ._codegen import derived, sp
-from ._forms import power_law, power_law_value
-from .special import gauss_legendre, hyp2f1
+from ._forms import power_law, power_law_value, tidy_powers
 
 __all__ = [
     "symbols",
@@ -75,19 +66,11 @@ __all__ = [
     "speed_from_force",
     "support_width",
     "centred_force_profile",
-    "first_integral",
-    "prestressed_speed_squared",
-    "prestressed_speed_hypergeometric",
-    "prestressed_speed_from_force",
-    "prestress_factor",
-    "prestress_factor_elementary",
-    "prestress_factor_integral",
     "stable_profile",
     "solitary_wave_speed",
     "solitary_wave_speed_from_velocity",
     "solitary_wave_width",
     "solitary_wave_profile",
-    "solitary_wave_speed_prestressed",
 ]
 
 
@@ -223,24 +206,13 @@ def integration_constants(xi_inf=None):
 # --- 2. nonlinear oscillator (Eq. (B21)) ------------------------------------------------------------
 
 
-def _tidy(expr):
-    """Merge powers and cancel their exponents (every base here is positive)."""
-    expr = expr.replace(lambda e: e.is_Pow and e.base.is_Add, lambda e: sp.Pow(sp.factor(e.base), e.exp))
-    expr = sp.expand_power_base(sp.powdenest(sp.expand_power_base(expr, force=True), force=True), force=True)
-    expr = sp.powsimp(expr, combine="exp", force=True)
-    expr = expr.replace(
-        lambda e: e.is_Pow and bool(e.exp.free_symbols), lambda e: sp.Pow(e.base, sp.factor(sp.cancel(e.exp)))
-    )
-    return sp.powsimp(expr, combine="exp", force=True)
-
-
 def _power_coefficients(expr, base):
     """{exponent: coefficient} of expr as a sum of coefficient * base**exponent (base > 0)."""
     out: dict = {}
     for term in sp.Add.make_args(sp.expand(expr)):
         exponent = 0
         rest = []
-        for factor in sp.Mul.make_args(_tidy(sp.factor(term))):
+        for factor in sp.Mul.make_args(tidy_powers(sp.factor(term))):
             b, e = factor.as_base_exp()
             if b == base:
                 exponent += e
@@ -249,7 +221,7 @@ def _power_coefficients(expr, base):
         exponent = sp.factor(sp.cancel(exponent))
         out[exponent] = out.get(exponent, 0) + sp.Mul(*rest)
     factored = {e: sp.factor(c) for e, c in out.items()}
-    return {e: _tidy(c) for e, c in factored.items() if c != 0}
+    return {e: tidy_powers(c) for e, c in factored.items() if c != 0}
 
 
 def _coefficient(coefficients, exponent):
@@ -274,8 +246,8 @@ def _change_of_variables_ratio():
     coefficients = _power_coefficients(y_mumu_value, y)
     linear = _coefficient(coefficients, 1)
     kappa_value = next(k for k in sp.solve(sp.Eq(linear, -1), kappa, check=False) if k.is_positive)
-    nonlinear = _tidy(sp.simplify(-_coefficient(coefficients, (3 - n) / (n + 1)) / linear))  # kappa cancels
-    sigma_value = _tidy(sp.solve(sp.Eq(nonlinear, 1), sigma, check=False)[0])
+    nonlinear = tidy_powers(sp.simplify(-_coefficient(coefficients, (3 - n) / (n + 1)) / linear))  # kappa cancels
+    sigma_value = tidy_powers(sp.solve(sp.Eq(nonlinear, 1), sigma, check=False)[0])
     forcing = sp.expand(y_mumu_value.subs({q: q_value, kappa: kappa_value, sigma: sigma_value}))
     return dict(
         q=q_value,
@@ -395,7 +367,7 @@ def profile_residual():
     total = 0
     for coefficient in _power_coefficients(residual, S).values():
         # Split exponents such as n/(n-1) = 1 + 1/(n-1) so that equal powers cancel.
-        coefficient = _tidy(coefficient).replace(
+        coefficient = tidy_powers(coefficient).replace(
             lambda e: e.is_Pow and e.exp.has(n), lambda e: sp.Pow(e.base, sp.apart(e.exp, n))
         )
         total += sp.simplify(sp.expand(sp.expand_power_exp(coefficient)))
@@ -449,7 +421,7 @@ def speed_from_force():
     s = symbols()
     xi_peak = sp.solve(sp.Eq(s["F_m"], s["K"] * (s["a"] * s["xi_max"]) ** s["n"]), s["xi_max"], check=False)[0]
     speed = speed_from_strain().subs(s["xi_max"], xi_peak).subs(s["c_n"], sp.sqrt(longwave.wave_speed_squared()))
-    return _tidy(speed)
+    return tidy_powers(speed)
 
 
 def support_width():
@@ -468,148 +440,9 @@ def centred_force_profile():
     omega = compact_solution()["omega"]
     S = sp.Symbol("S", positive=True)
     hump = force_profile().subs(sp.Abs(sp.sin(omega * s["tau"])), S)
-    shape = _tidy(hump / hump.subs(S, 1))
-    centred = _tidy(shape.subs(S, sp.sin(omega * s["x"] + sp.pi / 2)))
+    shape = tidy_powers(hump / hump.subs(S, 1))
+    centred = tidy_powers(shape.subs(S, sp.sin(omega * s["x"] + sp.pi / 2)))
     return sp.Piecewise((centred, sp.Abs(omega * s["x"]) < sp.pi / 2), (0, True))
-
-
-# --- 5. pre-stretched chain -----------------------------------------------------------------------
-
-
-@functools.cache
-def first_integral():
-    """(lhs, rhs) of n a^2/24 xi^(n-1) xi_tau^2 = P(xi) + E, C_1 = 0 and C_0 kept; E a symbol.
-
-    With w(xi) = xi_tau^2, xi_tautau = w'(xi)/2 and Eq. (B19) becomes
-    b [(n-1) xi^(n-2) w + xi^(n-1) w'] = (V_s/c_n)^2 xi - xi^n - C_0, b = n a^2/24;
-    the integrating factor exp(int (n-1)/xi) = xi^(n-1) makes the left side
-    b d/dxi (xi^(n-1) w), and the right side integrates to P(xi).
-    """
-    s = symbols()
-    X, n = s["X"], s["n"]
-    w = sp.Function("w")
-    residual = eq19_residual(X, sp.sqrt(w(X)), sp.diff(w(X), X) / 2, C_1=0)  # lhs - rhs of Eq. (B19)
-    dispersive = sp.expand(-(residual - residual.subs(w(X), 0).doit()).doit())  # b[...] part
-    source = sp.expand(residual.subs(w(X), 0).doit())  # (V/c)^2 xi - xi^n - C_0
-    w_coefficient, w_prime_coefficient = dispersive.coeff(w(X)), dispersive.coeff(sp.diff(w(X), X))
-    factor = sp.simplify(sp.exp(sp.integrate(sp.expand(w_coefficient / w_prime_coefficient), X)))
-    b = sp.simplify(w_prime_coefficient / X ** (n - 1))
-    if sp.simplify(b * sp.diff(factor * w(X), X) - dispersive) != 0:  # pragma: no cover - derivation check
-        raise RuntimeError("xi^(n-1) is not an integrating factor")
-    E = sp.Symbol("E", real=True)
-    return b * factor * s["X_tau"] ** 2, sp.integrate(source, X) + E
-
-
-@functools.cache
-def prestressed_speed_squared():
-    """V_s^2(xi_max, xi_0) of the solitary wave on a chain with static strain xi_0 (elementary form).
-
-    :func:`first_integral` with C_0 from :func:`integration_constants` (xi -> xi_0) and
-    xi_tau = 0 at xi_0 (far field) and at the peak xi_max; solved for V_s^2.
-    """
-    s = symbols()
-    X, xi_0, xi_max = s["X"], s["xi_0"], s["xi_max"]
-    _, rhs = first_integral()
-    E = sp.Symbol("E", real=True)
-    rhs = rhs.subs(s["C_0"], integration_constants(xi_0)[s["C_0"]])
-    energy = sp.solve(rhs.subs(X, xi_0), E, check=False)[0]
-    ratio = sp.solve(rhs.subs(E, energy).subs(X, xi_max), s["V_s"] ** 2, check=False)
-    return sp.factor(sp.simplify(ratio[0]))
-
-
-@functools.cache
-def prestressed_speed_hypergeometric():
-    """V_s^2 = n c_n^2 xi_max^(n-1) 2F1(1 - n, 2; 3; 1 - xi_0/xi_max) (as ``hyp2f1``).
-
-    Writing xi = xi_max (1 - z u) turns the bracket of :func:`prestressed_speed_squared`
-    into the integral of the contact stiffness along the wave,
-    V_s^2 = 2 n c_n^2 xi_max^(n-1) int_0^1 u (1 - z u)^(n-1) du with z = 1 - xi_0/xi_max,
-    and Euler's integral (DLMF 15.6.1) makes that n c_n^2 xi_max^(n-1) 2F1(1-n, 2; 3; z).
-    The identity with the elementary form is proved symbolically in the tests
-    (:func:`sympy.hyperexpand`); here it is checked at a few points (a guard against an
-    inconsistent edit).  At z = 0 (no wave) 2F1 = 1: the sound speed; at z = 1 (no
-    pre-stretch) 2F1 = 2/(n(n+1)): the compact wave.  Unlike the elementary form, which is
-    0/0 as xi_max -> xi_0, it evaluates accurately for every 0 <= xi_0 <= xi_max.
-    """
-    s = symbols()
-    n, xi_0, xi_max = s["n"], s["xi_0"], s["xi_max"]
-    form = n * s["c_n"] ** 2 * xi_max ** (n - 1) * hyp2f1(1 - n, 2, 3, 1 - xi_0 / xi_max)
-    R = sp.Rational
-    for point in ({n: R(13, 10), xi_0: R(1, 5)}, {n: R(5, 2), xi_0: R(7, 10)}, {n: R(21, 20), xi_0: R(1, 100)}):
-        point = {**point, xi_max: R(11, 10), s["c_n"]: 2}
-        elementary, hypergeometric = (sp.N(e.subs(point), 30) for e in (prestressed_speed_squared(), form))
-        if abs(elementary / hypergeometric - 1) > 1e-20:  # pragma: no cover - derivation check
-            raise RuntimeError("the pre-stretched speed is not the hypergeometric form")
-    return form
-
-
-@functools.cache
-def prestressed_speed_from_force():
-    """V_s(F_m, F_0): :func:`prestressed_speed_hypergeometric` with F = K (a xi)^n for the peak and the static force."""
-    s = symbols()
-    K, a, n = s["K"], s["a"], s["n"]
-    xi_peak = sp.solve(sp.Eq(s["F_m"], K * (a * s["xi_max"]) ** n), s["xi_max"], check=False)[0]
-    xi_static = sp.solve(sp.Eq(s["F_0"], K * (a * s["xi_0"]) ** n), s["xi_0"], check=False)[0]
-    speed2 = prestressed_speed_hypergeometric().subs({s["xi_max"]: xi_peak, s["xi_0"]: xi_static}, simultaneous=True)
-    speed2 = speed2.subs(s["c_n"] ** 2, longwave.wave_speed_squared())
-    return _tidy(sp.sqrt(speed2))
-
-
-@functools.cache
-def prestress_factor():
-    """G^2 = V_s^2(xi_max, xi_0)/V_s^2(xi_max, 0) = n (n+1)/2 2F1(1 - n, 2; 3; 1 - w), w = xi_0/xi_max.
-
-    :func:`prestressed_speed_hypergeometric` over the compact wave's :func:`speed_from_strain`
-    squared; a function of n and w alone (checked).  Returns (G^2, w) with w a Symbol.
-    """
-    s = symbols()
-    w = sp.Symbol("w", positive=True)
-    ratio = prestressed_speed_hypergeometric().subs(s["xi_0"], w * s["xi_max"]) / speed_from_strain() ** 2
-    ratio = sp.powsimp(sp.expand_power_base(sp.simplify(ratio), force=True), force=True)
-    if ratio.has(s["xi_max"], s["c_n"]):  # pragma: no cover - derivation check
-        raise RuntimeError("the pre-stretch factor depends on more than n and xi_0/xi_max")
-    return ratio, w
-
-
-@functools.cache
-def prestress_factor_elementary():
-    """G^2 = (1 - q (1 + n Z))/Z^2 with q = F_0/F_m = w^n and Z = 1 - w: the elementary form.
-
-    From :func:`prestressed_speed_squared` over the compact wave's speed squared, with
-    w^n = q (F = K (a xi)^n) and w = 1 - Z.  Accurate where the numerator is not small:
-    its terms are at most 1, so its relative rounding error is a few 1e-16 divided by its
-    value; as F_0 -> F_m (Z -> 0) it is 0/0.  Returns (G^2, q, Z) with q, Z Symbols.
-    """
-    s = symbols()
-    n = s["n"]
-    w, q, Z = (sp.Symbol(name, positive=True) for name in ("w", "q", "Z"))
-    ratio = prestressed_speed_squared().subs(s["xi_0"], w * s["xi_max"]) / speed_from_strain() ** 2
-    ratio = sp.expand_power_exp(sp.expand(sp.powsimp(sp.expand_power_base(sp.simplify(ratio), force=True))))
-    closed = sp.factor(sp.simplify(ratio.subs(w**n, q).subs(w, 1 - Z)))
-    if closed.has(w, s["xi_max"], s["c_n"]):  # pragma: no cover - derivation check
-        raise RuntimeError(f"the elementary pre-stretch factor is not a function of q and Z: {closed}")
-    return closed, q, Z
-
-
-@functools.cache
-def prestress_factor_integral():
-    """(integrand, t): G^2 = int_0^1 integrand dt, from Euler's integral of 2F1 (DLMF 15.6.1).
-
-    2F1(a, b; c; z) = Gamma(c)/(Gamma(b) Gamma(c - b)) int_0^1 t^(b-1) (1 - t)^(c-b-1) (1 - z t)^(-a) dt
-    with a = 1 - n, b = 2, c = 3, times n (n+1)/2 (:func:`prestress_factor`): the integrand
-    n (n+1) t (1 - Z t)^(n-1), Z = 1 - w.  Smooth on [0, 1] wherever the elementary form
-    loses digits (Z small), so Gauss-Legendre quadrature evaluates it there.
-    """
-    factor, w = prestress_factor()
-    hypergeometric = next(iter(factor.atoms(sp.Function)))
-    a, b, c, argument = hypergeometric.args
-    t, Z = sp.Symbol("t", positive=True), sp.Symbol("Z", positive=True)
-    weight = sp.gamma(c) / (sp.gamma(b) * sp.gamma(c - b)) * t ** (b - 1) * (1 - t) ** (c - b - 1)
-    euler = weight * (1 - argument * t) ** (-a)
-    integrand = sp.simplify((factor / hypergeometric * euler).subs(w, 1 - Z))
-    if argument.subs(w, 1 - Z) != Z or integrand.has(w):  # pragma: no cover - derivation check
-        raise RuntimeError("the pre-stretch factor is not 2F1 of 1 - w")
-    return integrand, t, Z
 
 
 # --- numeric functions ----------------------------------------------------------------------------
@@ -618,7 +451,7 @@ def prestress_factor_integral():
 def _in_si(expr):
     """expr with c_n^2 = K a^(n+1)/m (:func:`.longwave.wave_speed_squared`)."""
     s = symbols()
-    return _tidy(expr.subs(s["c_n"], sp.sqrt(longwave.wave_speed_squared())))
+    return tidy_powers(expr.subs(s["c_n"], sp.sqrt(longwave.wave_speed_squared())))
 
 
 @derived
@@ -662,68 +495,6 @@ def stable_profile():
 def _profile():
     s = symbols()
     return (s["x"], s["F_m"], s["K"], s["n"], s["a"]), stable_profile()
-
-
-def _prestress_in_forces(expr, q, Z):
-    """expr(q, Z) with q = F_0/F_m and Z = 1 - q^(1/n) = -expm1(log(q)/n) (accurate for q -> 1)."""
-    from sympy.codegen.cfunctions import expm1
-
-    s = symbols()
-    ratio = s["F_0"] / s["F_m"]
-    values = {Z: -expm1(sp.log(ratio) / s["n"])}
-    if q is not None:
-        values[q] = ratio
-    return expr.subs(values)
-
-
-@derived
-def _prestress_elementary():
-    s = symbols()
-    closed, q, Z = prestress_factor_elementary()
-    numerator, denominator = sp.fraction(sp.factor(closed))
-    return (s["F_m"], s["F_0"], s["n"]), tuple(_prestress_in_forces(e, q, Z) for e in (numerator, denominator))
-
-
-@derived
-def _prestress_integrand():
-    """The integrand at t = x in [0, 1], with (1 - Z t)^(n-1) = exp((n - 1) log1p(-Z t))."""
-    from sympy.codegen.cfunctions import log1p
-
-    s = symbols()
-    integrand, t, Z = prestress_factor_integral()
-    base = 1 - Z * t
-    power = next(p for p in integrand.atoms(sp.Pow) if p.base in (base, sp.expand(base)))
-    stable = integrand.subs(power, sp.exp(power.exp * log1p(-Z * t)))
-    if stable.has(power):  # pragma: no cover - derivation check
-        raise RuntimeError("the integrand's power was not rewritten")
-    return (s["x"], s["F_m"], s["F_0"], s["n"]), _prestress_in_forces(stable.subs(t, s["x"]), None, Z)
-
-
-#: The elementary pre-stretch factor is used where its numerator is at least this: its
-#: relative rounding error is then below about 12 x 1e-16; below it, quadrature.
-_ELEMENTARY_FROM = 0.25
-#: Gauss-Legendre points for the pre-stretch factor: where the numerator is below
-#: _ELEMENTARY_FROM the integrand is analytic well beyond [0, 1] (its singularity, at
-#: t = 1/Z >= 2, or its exponent (n - 1) Z <= 1 keep it smooth), and 12 points integrate
-#: it to below 1e-16.
-_QUADRATURE_POINTS = 12
-
-
-def _prestress(F_m, F_0, n):
-    """sqrt(G^2): the pre-stretched speed over the compact wave's, broadcast over the arguments."""
-    with np.errstate(all="ignore"):
-        numerator, denominator = _prestress_elementary(F_m, F_0, n)
-        shape = np.broadcast_shapes(np.shape(numerator), np.shape(denominator))
-        factor = np.array(np.broadcast_to(numerator / denominator, shape), dtype=float)
-        near = np.broadcast_to(~(numerator >= _ELEMENTARY_FROM), shape)
-        if np.any(near):
-            F_m_, F_0_, n_ = (np.broadcast_to(value, shape)[near] for value in (F_m, F_0, n))
-            points, weights = gauss_legendre(_QUADRATURE_POINTS)
-            total = 0.0
-            for point, weight in zip(0.5 * (points + 1.0), 0.5 * weights, strict=True):
-                total = total + weight * _prestress_integrand(point, F_m_, F_0_, n_)
-            factor[near] = total
-        return np.sqrt(factor)
 
 
 def _chain_speed(function, variable, K, n, a, m):
@@ -892,59 +663,3 @@ def solitary_wave_profile(x, *, F_m, K, n, a):
     with np.errstate(all="ignore"):
         profile = _profile(x, F_m, K, n, a)
     return v.finite_result(profile, "the profile", "positions, force and chain parameters")
-
-
-def solitary_wave_speed_prestressed(F_m, *, F_0, K, n, m, a):
-    """Speed of the solitary wave on a chain pre-stretched by a static contact force F_0.
-
-    Parameters
-    ----------
-    F_m : array_like
-        Peak contact force of the wave, static part included, N; F_m >= F_0 and F_m > 0.
-    F_0 : array_like
-        Static contact force far from the wave, N, >= 0 (in a hanging chain, the weight
-        of the rings below the contact).
-    K, n, m, a : array_like
-        Chain: prefactor (N/m^n), exponent (> 1), mass (kg), spacing (m), as in
-        :func:`solitary_wave_speed`.
-
-    Returns
-    -------
-    ndarray
-        V_s = a sqrt(n K^(1/n) F_m^((n-1)/n)/m 2F1(1-n, 2; 3; 1 - (F_0/F_m)^(1/n))), m/s.
-
-    Notes
-    -----
-    Eq. (B19) with C_0 set by the static strain xi_0 = (F_0/K)^(1/n)/a and its first
-    integral (:func:`prestressed_speed_squared`,
-    :func:`prestressed_speed_hypergeometric`); the generalisation to any n of
-    Nesterenko's weakly compressed chain (n = 3/2).  F_0 = 0 gives
-    :func:`solitary_wave_speed`; F_0 -> F_m gives the linear sound speed
-    :func:`~ringchain.theory.linear_sound_speed` at F_0.  Evaluated as the compact wave's
-    speed times G = sqrt(n (n+1)/2 2F1): G from its elementary form
-    (:func:`prestress_factor_elementary`) where that keeps its digits, else from Euler's
-    integral (:func:`prestress_factor_integral`) by 12-point Gauss-Legendre quadrature;
-    both accurate to about 1e-15 for every n > 1 and 0 <= F_0 <= F_m (SciPy's hyp2f1
-    loses digits, or returns NaN, for large n).
-
-    Examples
-    --------
-    >>> round(float(solitary_wave_speed_prestressed(8.0, F_0=0.0, K=1.0, n=3.0, m=1.0, a=1.0)), 6)
-    1.414214
-    >>> round(float(solitary_wave_speed_prestressed(8.0, F_0=8.0, K=1.0, n=3.0, m=1.0, a=1.0)), 6)  # sqrt(3) 8^(1/3)
-    3.464102
-    """
-    F_m = v.positive("F_m", F_m, "N")
-    F_0 = v.nonnegative("F_0", F_0, "N")
-    chain = v.compact_wave_chain(K, n, a, m)
-    v.broadcast_shape(F_m=F_m, F_0=F_0, K=chain[0], n=chain[1], a=chain[2], m=chain[3])
-    if np.any(F_0 > F_m):
-        excess = np.broadcast_to(F_0, np.broadcast_shapes(F_0.shape, F_m.shape))[F_0 > F_m]
-        raise ValueError(
-            f"F_0 must not exceed F_m (got F_0 = {v.show(excess.max())} N above F_m): F_m is the peak contact "
-            "force of the wave with the static force F_0 included, so F_m >= F_0"
-        )
-    factor = _prestress(F_m, F_0, chain[1])
-    with np.errstate(all="ignore"):
-        speed = _chain_speed(_speed, F_m, *chain) * factor
-    return v.finite_result(speed, "V_s", _CHAIN)

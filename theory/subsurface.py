@@ -81,10 +81,10 @@ from .contact import (
     contact_ellipse,
     contact_modulus,
     effective_modulus,
-    elliptic_placeholders,
     hertz_stiffness,
 )
 from .contact import symbols as contact_symbols
+from .elliptical import elliptic_placeholders
 from .special import carlson_rd, carlson_rf
 
 __all__ = [
@@ -456,9 +456,9 @@ def axis_stresses_elliptical():
 def yield_relations():
     """(P, a, delta) of the elliptical Hertz contact with peak pressure p0, relative curvature A and shape m_1.
 
-    Johnson Sec. 4.2 (the relations :func:`.contact.hertz_elliptical_monomial` starts from):
+    Johnson Sec. 4.2 (the relations :func:`.elliptical.hertz_elliptical_monomial` starts from):
     b = a sqrt(m_1), A = p0 b D_m/(E* a^2), P = 2/3 pi a b p0, delta = p0 b K_m/E*, with
-    K_m = K(m) and D_m = (K(m) - E(m))/m the placeholders of :func:`.contact.elliptic_placeholders`
+    K_m = K(m) and D_m = (K(m) - E(m))/m the placeholders of :func:`.elliptical.elliptic_placeholders`
     and E* a Symbol named ``E^*``.
     """
     s, c = symbols(), contact_symbols()
@@ -474,7 +474,7 @@ def yield_relations():
 
 
 def _with_carlson(expr, m_1):
-    """K_m -> R_F(0, m_1, 1), D_m -> R_D(0, m_1, 1)/3 (DLMF 19.25.1, as :func:`.contact.carlson_form`)."""
+    """K_m -> R_F(0, m_1, 1), D_m -> R_D(0, m_1, 1)/3 (DLMF 19.25.1, as :func:`.elliptical.carlson_form`)."""
     K_m, D_m = elliptic_placeholders()
     return expr.subs({K_m: carlson_rf(0, m_1, 1), D_m: carlson_rd(0, m_1, 1) / 3})
 

@@ -10,18 +10,18 @@ import textwrap
 import numpy as np
 import pytest
 import sympy as sp
-from ringchain.theory import _codegen, contact, longwave, ring, series, solitary
+from ringchain.theory import _codegen, contact, elliptical, gap, longwave, prestressed, ring, series, solitary
 from ringchain.theory._codegen import Derived
 
 ALL_DERIVED = [
     obj
-    for module in (contact, ring, series, longwave, solitary)
+    for module in (contact, elliptical, gap, ring, series, longwave, solitary, prestressed)
     for obj in vars(module).values()
     if isinstance(obj, Derived)
 ]
 
 # A physical sample point for every argument name a derivation uses (SI units). ``m`` is the
-# contact ellipse's squared eccentricity in contact.py and a ring mass (kg) in the wave modules;
+# contact ellipse's squared eccentricity in contact.py and elliptical.py and a ring mass (kg) in the wave modules;
 # 0.3 is admissible for both.
 SAMPLE = {
     "R": 0.02, "r": 0.0025, "theta": 1.2, "m": 0.3, "A": 50.0, "E": 193e9, "nu": 0.29,
@@ -32,7 +32,7 @@ SAMPLE = {
 }  # fmt: skip
 # Where a derivation needs other values: the exact torus gap at points over both tubes (x is a position
 # near the contact, not along the chain), the two contact points below theta_min.
-OVERRIDES = {"contact._gap": {"x": 5e-4}, "contact._patches": {"theta": 0.5}}
+OVERRIDES = {"gap._gap": {"x": 5e-4}, "gap._patches": {"theta": 0.5}}
 
 
 @pytest.mark.parametrize("derived", ALL_DERIVED, ids=lambda d: d.name)
@@ -66,7 +66,7 @@ def test_disk_cache_round_trip(tmp_path):
     """
     first = _run(code, tmp_path).split()
     assert first[1] == "True"  # cold: derived with SymPy ...
-    assert any(p.name.startswith("contact._stiffness_elliptical-") for p in tmp_path.iterdir())
+    assert any(p.name.startswith("elliptical._stiffness_elliptical-") for p in tmp_path.iterdir())
     second = _run(code, tmp_path).split()
     assert second[1] == "False"  # ... warm: loaded from the cache without SymPy
     assert first[0] == second[0]  # bit-identical

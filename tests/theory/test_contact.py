@@ -6,8 +6,7 @@ import pytest
 import sympy as sp
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from ringchain.theory import contact, contact_ellipse, hertz_stiffness, minimum_contact_angle
-from ringchain.theory.special import carlson_rd, carlson_rf
+from ringchain.theory import contact, contact_ellipse, elliptical, hertz_stiffness, minimum_contact_angle
 
 S = contact.symbols()
 R, r, E, nu, theta, m = (S[k] for k in ("R", "r", "E", "nu", "theta", "m"))
@@ -49,31 +48,6 @@ def test_circular_hertz_is_paper_eq_1():
     assert sp.simplify(contact.hertz_circular() - paper_K_c()) == 0
 
 
-def test_elliptical_hertz_reduces_to_circular_as_eccentricity_vanishes():
-    K_c, E_star = contact.hertz_elliptical()
-    A = S["A"]
-    R_e = sp.Symbol("R_e", positive=True)
-    circular_limit = sp.limit(K_c.subs(A, 1 / (2 * R_e)), m, 0)
-    assert sp.simplify(circular_limit - sp.Rational(4, 3) * E_star * sp.sqrt(R_e)) == 0
-
-
-def test_shape_ratio_is_one_for_a_circle():
-    assert sp.limit(contact.ellipse_shape_ratio(), m, 0) == 1
-
-
-@pytest.mark.parametrize("m_value", [0.0, 1e-6, 0.1, 0.5, 0.9, 0.999])
-def test_carlson_identities_against_mpmath(m_value):
-    with mpmath.workdps(30):
-        mv = mpmath.mpf(str(m_value))
-        K, Ei = sp.Float(mpmath.ellipk(mv), 30), sp.Float(mpmath.ellipe(mv), 30)
-    exact_m = sp.Rational(str(m_value))
-    rf = carlson_rf(0, 1 - m, 1).subs(m, exact_m).evalf(30)
-    rd = carlson_rd(0, 1 - m, 1).subs(m, exact_m).evalf(30)
-    # 25 digits: both sides are evaluated by mpmath at 30 digits.
-    assert abs(rf - K) < 1e-25
-    assert abs(exact_m * rd / 3 - (K - Ei)) < 1e-25
-
-
 @pytest.mark.parametrize("m_value", ["0", "1e-12", "0.2", "0.7", "0.999999", "0.99999999999999999999"])
 def test_carlson_forms_against_mpmath_closed_forms(m_value):
     # The shape ratio and the elliptical factor in Carlson's form (in m_1 = 1 - m), evaluated by
@@ -91,8 +65,8 @@ def test_carlson_forms_against_mpmath_closed_forms(m_value):
             curvature = mpmath.mpf(50)
             factor = _johnson_stiffness(mm, curvature, 1) / (mpmath.mpf(4) / 3 * mpmath.sqrt(1 / (2 * curvature)))
         exact_m_1 = 1 - sp.Rational(m_value)
-        derived_ratio = contact.carlson_form(contact.ellipse_shape_ratio()).subs(m_1, exact_m_1).evalf(30)
-        derived_factor = contact.carlson_form(contact.elliptical_factor()).subs(m_1, exact_m_1).evalf(30)
+        derived_ratio = elliptical.carlson_form(elliptical.ellipse_shape_ratio()).subs(m_1, exact_m_1).evalf(30)
+        derived_factor = elliptical.carlson_form(elliptical.elliptical_factor()).subs(m_1, exact_m_1).evalf(30)
     # 30-digit evaluation of both sides: agreement to 1e-25.
     assert abs(derived_ratio / sp.Float(ratio, 40) - 1) < 1e-25
     assert abs(derived_factor / sp.Float(factor, 40) - 1) < 1e-25
@@ -152,16 +126,12 @@ def test_numeric_circular_stiffness_is_papers_eq_1(aspect):
 
 
 def test_circular_limit_of_the_elliptical_solution_is_papers_eq_1():
-    K_c, E_star = contact.circular_limit()
+    K_c, E_star = elliptical.circular_limit()
     A90, _ = contact.relative_curvatures()
     K_c = K_c.subs(S["A"], A90.subs(theta, sp.pi / 2)).subs(E_star, contact.effective_modulus())
     # Squares: both sides are positive, and SymPy does not see sqrt(x) sqrt(1/x) = 1 by itself.
     assert sp.simplify(K_c**2 - paper_K_c() ** 2) == 0
     assert sp.simplify(K_c**2 - contact.hertz_circular() ** 2) == 0  # the sphere relations give the same
-
-
-def test_elliptical_factor_is_one_for_a_circle():
-    assert sp.limit(contact.elliptical_factor(), m, 0) == 1
 
 
 def test_minimum_angle_solves_a_equals_zero():

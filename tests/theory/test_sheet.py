@@ -9,7 +9,16 @@ rounding, no formula for a link's stiffness).
 import numpy as np
 import pytest
 import sympy as sp
-from ringchain.theory import Ring, SheetSpeeds, dispersion, linear, sheet, sheet_dispersion, sheet_sound_speeds
+from ringchain.theory import (
+    Ring,
+    SheetSpeeds,
+    dispersion,
+    linear,
+    sheet,
+    sheet_dispersion,
+    sheet_group_velocity,
+    sheet_sound_speeds,
+)
 
 S = sheet.symbols()
 q, theta, m, a, k, T = (S[name] for name in ("q", "theta", "m", "a", "k", "T"))
@@ -122,7 +131,14 @@ def test_square_with_slack_cross_links_is_the_1d_chain_symbolically():
 
 # --- the generated code ----------------------------------------------------------------------------------
 
-DERIVED = [sheet._square_matrix, sheet._triangular_matrix, sheet._square_tensor, sheet._triangular_tensor]
+DERIVED = [
+    sheet._square_matrix,
+    sheet._triangular_matrix,
+    sheet._square_tensor,
+    sheet._triangular_tensor,
+    sheet._square_gradient,
+    sheet._triangular_gradient,
+]
 SAMPLE = {"q_x": 31.0, "q_y": -17.0, "theta": 0.7, "m": 0.008, "a": 0.04, "a_x": 0.04, "a_y": 0.05}
 SAMPLE |= {"k_x": 2.1e4, "k_y": 3.3e4, "T_x": 2.0, "T_y": 5.0, "k_1": 2.1e4, "k_2": 1.7e4, "k_3": 3.3e4}
 SAMPLE |= {"T_1": 2.0, "T_2": 5.0, "T_3": 0.5}
@@ -301,6 +317,50 @@ def test_speeds_are_the_small_q_limit_of_the_dispersion(case):
     speeds = np.sort(np.stack(sheet_sound_speeds(angles, pattern=pattern, **parameters), axis=-1), axis=-1)
     # omega/q = c (1 - O((q a)^2/24)): 1e-11 here, 1e-9 leaves room for rounding in sin^2 of (q a) ~ 1e-5
     assert np.allclose(omega / wavenumber, speeds, rtol=1e-9, atol=0)
+
+
+# --- group velocity --------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_group_velocity_is_the_gradient_of_the_dispersion(case):
+    pattern, parameters = CASES[case]
+    rng = np.random.default_rng(7)
+    a_max = np.max(parameters["a"])
+    qx, qy = rng.uniform(-3.0, 3.0, (2, 40)) / a_max
+    velocity = sheet_group_velocity(qx, qy, pattern=pattern, **parameters)
+    h = 1e-6 / a_max
+    # Central differences of omega (an independent route: sheet_dispersion alone); their error is
+    # O((h a)^2) ~ 1e-12 of omega's scale plus rounding of omega over h, ~1e-16/1e-6: 1e-7 of the largest speed.
+    for axis, (dx, dy) in enumerate(((h, 0.0), (0.0, h))):
+        forward = sheet_dispersion(qx + dx, qy + dy, pattern=pattern, **parameters)
+        backward = sheet_dispersion(qx - dx, qy - dy, pattern=pattern, **parameters)
+        numeric = (forward - backward) / (2 * h)
+        # Points where the branches nearly meet have a kink there: keep those whose gap is wide.
+        omega = sheet_dispersion(qx, qy, pattern=pattern, **parameters)
+        apart = (omega[:, 1] - omega[:, 0]) > 1e-3 * omega[:, 1]
+        scale = np.abs(numeric).max()
+        assert np.allclose(velocity[apart, :, axis], numeric[apart], rtol=0, atol=1e-7 * scale)
+
+
+def test_group_velocity_of_long_square_waves_traces_the_wave_ellipse():
+    k, T, m, a = 2.1e4, 2.0, 0.008, 0.04
+    c_L, c_T = a * np.sqrt(k / m), np.sqrt(T * a / m)
+    psi = np.linspace(0.05, 0.7, 12)  # wavevector directions below the diagonal, where the branches meet
+    q = 1e-6 / a
+    velocity = sheet_group_velocity(q * np.cos(psi), q * np.sin(psi), pattern="square", k=k, T=T, m=m, a=a)
+    # The branch polarised along x has omega^2 = c_L^2 q_x^2 + c_T^2 q_y^2: its group velocity is
+    # (c_L^2 q_x, c_T^2 q_y)/omega, on the ellipse (v_x/c_L)^2 + (v_y/c_T)^2 = 1 (its wave surface).
+    # Below the diagonal it is the upper branch. Long-wave error (q a)^2 ~ 1e-12; rounding: 1e-9.
+    x_branch = velocity[:, 1]
+    assert np.allclose((x_branch[:, 0] / c_L) ** 2 + (x_branch[:, 1] / c_T) ** 2, 1.0, rtol=1e-9)
+    omega = np.hypot(c_L * np.cos(psi), c_T * np.sin(psi))
+    assert np.allclose(x_branch[:, 0], c_L**2 * np.cos(psi) / omega, rtol=1e-9)
+
+
+def test_group_velocity_refuses_a_zero_wavevector():
+    with pytest.raises(ValueError, match="must not be zero"):
+        sheet_group_velocity(0.0, 0.0, pattern="square", k=1.0, T=1.0, m=1.0, a=1.0)
 
 
 def test_square_speeds_along_axes_and_diagonal():

@@ -1,0 +1,896 @@
+r"""Compiled kernels of the engine: the right-hand sides of networks and of the ring-resolved chain, an
+adaptive Dormand-Prince 5(4) pair with dense output and velocity Verlet, whole time loops in Numba.
+
+The same models as :mod:`ringchain.numerics.engine.network` and :mod:`ringchain.numerics.layouts.ring_chain`, written as
+loops over plain arrays (no Python object in the time loop), and the same contract: what
+:func:`ringchain.numerics.simulate` calls with ``method="dopri5"`` or ``method="verlet"``.  The NumPy and
+SciPy paths stay as the independent reference the tests compare against.
+
+Models.  A model is packed once (:func:`pack_network`, :func:`pack_ring_chain`) into a :class:`Packed`
+tuple of arrays of fixed types, whatever its kind, so that every kernel compiles once per process (once
+ever, with the disk cache) and not once per chain:
+
+- a network: per link its two sites (``-1`` for the support), its law's kind and parameters (a row of
+  ``PARAMETERS`` numbers: K, n, gamma for :class:`~ringchain.numerics.laws.PowerLaw`; K, gamma for
+  :class:`~ringchain.numerics.laws.LinearSpring`; gamma for :class:`~ringchain.numerics.laws.Dashpot`; K, delta_y,
+  gamma, initial memory for :class:`~ringchain.numerics.laws.Thornton`; K, n, alpha for
+  :class:`~ringchain.numerics.laws.HuntCrossley`),
+  per site its inverse mass and the acceleration of gravity; in two or three dimensions the links' rest
+  vectors (site i to the far end, a periodic image or an anchor), their spans and prestretches;
+- the ring-resolved chain: one ring's coupling matrix -M^-1 K, the columns of M^-1 at its two contact
+  points, its rigid translation, and the Hertz contact.
+
+A stack of networks (:meth:`~ringchain.numerics.Network.stack`) gives per-member masses and parameters
+(a leading axis of length B; length 1 when every member shares them).
+
+Laws with memory.  A network with a :class:`~ringchain.numerics.laws.Thornton` link carries one memory per
+link (its largest approach, m) at the end of each run's state, [x, u, W if damped, memory if stateful].
+Its derivative is zero, so the Runge-Kutta stages carry it unchanged and a trial stage (or a rejected step)
+never writes it; the law reads max(memory, delta), so a stage beyond the memory is on the loading curve.
+After each accepted step the memory becomes the largest extension over the step, read from the cubic
+through the extensions and rates at both ends (:func:`_remember`: the peak of a step, not only its end,
+to fourth order); a sample records the memory its step started from (what the stages used).  Velocity
+Verlet updates it after each step from the new positions.  (Memory as an integrated state, dm/dt = the
+rate while loading, jumps whenever the approach crosses the memory: rejections at every loading.)
+
+The Runge-Kutta pair.  Dormand and Prince's 5(4) pair with its fourth-order continuous extension
+(Hairer, Norsett and Wanner, Solving ODEs I, Sec. II.5-6), first-same-as-last, step-size control
+0.9 err^(-1/5) within [0.2, 10].  The error is measured in the max norm over the components,
+|err_i| / (atol_i + rtol max(|y_i|, |y_new_i|)): a component whose derivative is exactly zero (a site
+at rest with no net force), or a run repeated in a batch, never changes the steps a run takes (an
+RMS norm over n components loosens the control by sqrt(n) when most of them are idle).  A member
+hanging at rest under gravity is not exactly idle: its rounding-level accelerations, against its own
+tiny tolerances, change a shared step slightly (``shared=True``: 601 steps instead of 596 measured).
+Each member of a batch takes its own steps, on a pool of threads through one kernel that releases the GIL
+(one compiled kernel for one run or many).  The samples are read from the continuous extension.
+
+Velocity Verlet.  The fixed-step scheme of :func:`ringchain.numerics.engine.integrate` (kick-drift-kick in
+leapfrog form, samples by cubic Hermite interpolation of the two ends of their step).
+
+Contacts opening and closing.  A contact's force (K delta^n while delta > 0, zero beyond) is not smooth
+where delta crosses zero; a step straddling that instant loses the pair's order, its error estimate no
+longer measures its error, and the error stops falling with the tolerance (on the paper's chain, 1.8e-3
+to 6.8e-4 of the peak from rtol 1e-6 to 1e-8).  So each step ends where a contact opens or closes
+(``locate``, the default): once a trial step passes the error test, each contact's extension is followed
+on the cubic through its values and rates at both ends, and where one changes sign inside, the step is
+retaken to end just past the first change (bisection on the cubic).  The error then falls as a
+fifth-order method's (benchmarks/bench_paper_recipe.py).  Thornton's contact is not located yet (its
+switch, the zero of the unloading curve, moved with the memory and the step underflowed in a collision).
+
+The disk cache.  Kernels are compiled on first use and cached on disk by Numba in the package's cache
+folder (``<ringchain cache>/numba``, :func:`ringchain.theory._codegen.cache_dir`), so a later process
+loads them.  Every kernel lives in this one module: Numba keys a cached kernel on its own file, and a
+change to a kernel in another module would not invalidate the cache of a kernel calling it.  Where
+the folder is disabled or not writable, the kernels are compiled in every process instead (about
+the cold compile time stated in benchmarks/bench_kernels.py); a line on stderr says so before a compile.
+No module-level value enters a kernel: Numba freezes globals as constants in the compiled code.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import tempfile
+import weakref
+from typing import NamedTuple
+
+import numba
+import numpy as np
+
+from ._kernel_calls import announce_compile, over_threads
+
+__all__ = [
+    "Packed",
+    "pack",
+    "pack_network",
+    "pack_ring_chain",
+    "dopri5",
+    "verlet",
+    "accelerations",
+    "CACHE",
+    "PARAMETERS",
+    "LAW_KINDS",
+    "STATUS",
+]
+
+#: Law parameters per link (a row of the packed parameter array).
+PARAMETERS = 4
+
+#: Kind code of each law class the kernels implement, by class name.
+LAW_KINDS = {"PowerLaw": 0, "LinearSpring": 1, "Dashpot": 2, "Thornton": 3, "HuntCrossley": 4}
+
+#: Exit codes of the integrators: 0 done; 1 too many steps; 2 a non-finite state; 3 the step underflowed.
+STATUS = {1: "too many steps", 2: "the state became non-finite", 3: "the step size fell below the time resolution"}
+
+
+def _cache_folder() -> str | None:
+    """The folder of compiled code, or None where the package's cache is disabled or not writable."""
+    from ringchain.theory._codegen import cache_dir
+
+    folder = cache_dir()
+    if folder is None:
+        return None
+    folder = folder / "numba"
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        with tempfile.NamedTemporaryFile(dir=folder):
+            pass
+    except OSError:
+        return None
+    return os.fspath(folder)
+
+
+#: Where compiled kernels are cached (None: compiled in every process).
+CACHE = _cache_folder()
+
+_previous_cache_dir = numba.config.CACHE_DIR
+if CACHE is not None:
+    numba.config.CACHE_DIR = CACHE  # read when each kernel below is decorated; restored at the end of the module
+
+
+def _jit(**options):
+    return numba.njit(cache=CACHE is not None, error_model="numpy", **options)
+
+
+class Packed(NamedTuple):
+    """A model as the kernels take it (see the module notes); build it with :func:`pack_network` or
+    :func:`pack_ring_chain`."""
+
+    ints: np.ndarray  # [kind (0 network, 1 rings), dim, n_coords, damped, n_sites, n_links, rings, dofs, fixed, path]
+    floats: np.ndarray  # [K_c, exponent] of the ring-resolved chain's contact
+    inv_mass: np.ndarray  # (Bm, n_coords)
+    gravity: np.ndarray  # (Bm, n_coords): gravity's acceleration per unit g; for rings, the rigid mode
+    li: np.ndarray  # (L,) int64
+    lj: np.ndarray  # (L,) int64, -1 for the support
+    kind: np.ndarray  # (L,) int64
+    par: np.ndarray  # (Bp, L, PARAMETERS)
+    rest_vectors: np.ndarray  # (L, dim): from site i to the link's far end at rest (Network.rest_vectors)
+    spans: np.ndarray  # (L,): their lengths (Network.spans)
+    prestretch: np.ndarray  # (L,): the links' extensions at rest (Network.prestretch)
+    coupling: np.ndarray  # (n, n)
+    inv_top: np.ndarray  # (n,)
+    inv_bottom: np.ndarray  # (n,)
+
+
+def _empty(*shape, dtype=float):
+    return np.zeros(shape, dtype=dtype)
+
+
+_PACKED: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
+def pack(model) -> Packed:
+    """The :class:`Packed` form of a network or a ring-resolved chain (the dynamics of a model), made once."""
+    if model not in _PACKED:
+        _PACKED[model] = pack_ring_chain(model) if hasattr(model, "ring") else pack_network(model)
+    return _PACKED[model]
+
+
+def pack_network(net) -> Packed:
+    """The :class:`Packed` form of a :class:`~ringchain.numerics.Network` (or of a stack of them)."""
+    L, S, d = net.n_links, net.n_sites, net.dim
+    batch = net.batch_shape
+    Bp = 1
+    for law, _ in net.groups:
+        if any(np.ndim(p) > 1 for p in law.params.values()):
+            Bp = batch[0]
+    kind = np.empty(L, dtype=np.int64)
+    par = np.zeros((Bp, L, PARAMETERS))
+    for law, index in net.groups:
+        name = type(law).__name__
+        if name not in LAW_KINDS:
+            raise ValueError(f"the compiled methods do not know the law {name}; use method='odeint'")
+        kind[index] = LAW_KINDS[name]
+        for column, value in enumerate(law.params.values()):
+            value = np.asarray(value, dtype=float)
+            par[:, index, column] = value if value.ndim < 2 else value.reshape(Bp, -1)
+    mass = np.atleast_2d(np.repeat(net.mass, d, axis=-1))
+    per_unit_g = np.zeros((*batch, S, d))  # gravity acts on the weight masses, along -axis (the last component)
+    per_unit_g[..., -1] = net.weight_mass / net.mass
+    gravity = np.atleast_2d(per_unit_g.reshape(*batch, S * d))
+    planar = net.positions is not None and d > 1
+    rest_vectors = np.asarray(net.rest_vectors, dtype=float) if planar else np.zeros((L, d))
+    spans = np.asarray(net.spans, dtype=float) if planar else np.zeros(L)
+    prestretch = np.asarray(net.prestretch, dtype=float) if planar else np.zeros(L)
+    # The fast path: a chain (Network.is_path) whose link k is the one of site k.
+    path = net.is_path and np.array_equal(net.i, np.arange(L))
+    ints = np.array([0, d, net.n_coords, int(net.damped), S, L, 0, 0, 0, int(path)], dtype=np.int64)
+    return Packed(ints, _empty(2), np.ascontiguousarray(1.0 / mass), np.ascontiguousarray(gravity, dtype=float),
+                  net.i.astype(np.int64), net.j.astype(np.int64), kind, par, np.ascontiguousarray(rest_vectors),
+                  np.ascontiguousarray(spans), np.ascontiguousarray(prestretch), _empty(0, 0), _empty(0),
+                  _empty(0))  # fmt: skip
+
+
+def pack_ring_chain(chain) -> Packed:
+    """The :class:`Packed` form of a :class:`~ringchain.numerics.RingChain`."""
+    ring, N, n = chain.ring, chain.n_rings, chain.ring.n_dof
+    coupling = -(ring.inverse_mass @ ring.stiffness).T
+    ints = np.array([1, 1, N * n, 0, 0, 0, N, n, int(chain.support == "fixed"), 0], dtype=np.int64)
+    return Packed(ints, np.array([chain.K_c, chain.n]), _empty(1, 0), np.atleast_2d(ring.rigid.astype(float)),
+                  _empty(0, dtype=np.int64), _empty(0, dtype=np.int64), _empty(0, dtype=np.int64),
+                  _empty(1, 0, PARAMETERS), _empty(0, 1), _empty(0), _empty(0),
+                  np.ascontiguousarray(coupling), np.ascontiguousarray(ring.inverse_mass[:, 1]),
+                  np.ascontiguousarray(ring.inverse_mass[:, 0]))  # fmt: skip
+
+
+# -- the laws --------------------------------------------------------------------------------------------------
+@_jit(inline="always")
+def _law(kind, p0, p1, p2, e, rate, memory):
+    """(force, elastic force) of one link: the :mod:`ringchain.numerics.laws` of kind ``kind``, parameters p0-p2."""
+    if kind == 0:  # PowerLaw: [K delta^n + gamma delta_dot]_+ where engaged (K, n, gamma)
+        if e <= 0.0:
+            return 0.0, 0.0
+        elastic = p0 * e * math.sqrt(e) if p1 == 1.5 else p0 * e**p1
+        force = elastic + p2 * rate
+        return (force if force > 0.0 else 0.0), elastic
+    if kind == 1:  # LinearSpring: K delta + gamma delta_dot (K, gamma)
+        elastic = p0 * e
+        return elastic + p1 * rate, elastic
+    if kind == 3:  # Thornton: the memory is the largest approach (K_c, delta_y, gamma)
+        return _thornton(p0, p1, p2, e, rate, memory)
+    if kind == 4:  # HuntCrossley: [K delta^n (1 + 3/2 alpha delta_dot)]_+ where engaged (K, n, alpha)
+        if e <= 0.0:
+            return 0.0, 0.0
+        elastic = p0 * e * math.sqrt(e) if p1 == 1.5 else p0 * e**p1
+        force = elastic * (1.0 + 1.5 * p2 * rate)
+        return (force if force > 0.0 else 0.0), elastic
+    return p0 * rate, 0.0  # Dashpot (gamma)
+
+
+@_jit()
+def _thornton(K, dy, gamma, e, rate, memory):
+    """(force, elastic force) of Thornton's contact (:class:`~ringchain.numerics.laws.Thornton`): with
+    dm = max(memory, delta) beyond delta_y, F_m = K sqrt(dy)(3 dm - dy)/2 and w = sqrt(dy)(3 dm - dy)/(2 sqrt(dm)),
+    F = F_m (u/w)^(3/2) for u = delta - dm + w > 0; the Hertz curve below delta_y."""
+    if e <= 0.0:
+        return 0.0, 0.0
+    dm = memory if memory > e else e
+    if dm <= dy:
+        elastic = K * e * math.sqrt(e)
+    else:
+        F_m = 0.5 * K * math.sqrt(dy) * (3.0 * dm - dy)
+        w = 0.5 * math.sqrt(dy) * (3.0 * dm - dy) / math.sqrt(dm)
+        u = e - dm + w
+        if u <= 0.0:
+            return 0.0, 0.0
+        elastic = F_m * (u / w) * math.sqrt(u / w)
+    force = elastic + gamma * rate
+    return (force if force > 0.0 else 0.0), elastic
+
+
+@_jit()
+def _extension(m, k, x, u):
+    """(extension, rate) of link k of a packed network at displacements x and velocities u (as the right-hand
+    side computes them)."""
+    i, j, d = m.li[k], m.lj[k], m.ints[1]
+    if d == 1:
+        far, far_u = (x[j], u[j]) if j >= 0 else (0.0, 0.0)
+        return far - x[i], far_u - u[i]
+    length2, stretch, rate = 0.0, 0.0, 0.0
+    for c in range(d):
+        w = (0.0 if j < 0 else x[j * d + c]) - x[i * d + c]
+        length2 += (m.rest_vectors[k, c] + w) ** 2
+        stretch += (2.0 * m.rest_vectors[k, c] + w) * w
+    length = math.sqrt(length2)
+    for c in range(d):
+        w = (0.0 if j < 0 else x[j * d + c]) - x[i * d + c]
+        rate += ((0.0 if j < 0 else u[j * d + c]) - u[i * d + c]) * (m.rest_vectors[k, c] + w) / length
+    return stretch / (length + m.spans[k]) + m.prestretch[k], rate
+
+
+@_jit()
+def _cubic(e0, s0, e1, s1, z):
+    """The cubic with values e0, e1 and slopes s0, s1 at 0 and 1, at z."""
+    z2 = z * z
+    z3 = z2 * z
+    return (2 * z3 - 3 * z2 + 1) * e0 + (z3 - 2 * z2 + z) * s0 + (-2 * z3 + 3 * z2) * e1 + (z3 - z2) * s1
+
+
+@_jit()
+def _cubic_peak(e0, s0, e1, s1):
+    """Largest value on [0, 1] of the cubic with values e0, e1 and slopes s0, s1 (per unit parameter) at its ends."""
+    a, b, c = 6.0 * (e0 - e1) + 3.0 * (s0 + s1), 6.0 * (e1 - e0) - 4.0 * s0 - 2.0 * s1, s0  # p'(s) = a s^2 + b s + c
+    peak = max(e0, e1)
+    disc = b * b - 4.0 * a * c
+    roots = (
+        (-c / b if b != 0.0 else -1.0, -1.0)
+        if a == 0.0
+        else (((-b + math.sqrt(disc)) / (2.0 * a), (-b - math.sqrt(disc)) / (2.0 * a)) if disc >= 0.0 else (-1.0, -1.0))
+    )
+    for z in roots:
+        if 0.0 < z < 1.0:
+            peak = max(peak, _cubic(e0, s0, e1, s1, z))
+    return peak
+
+
+@_jit()
+def _remember(m, members, y, y_new, h, N, n):
+    """After an accepted step from ``y`` to ``y_new`` (the group's states), each Thornton link's memory in ``y_new``
+    becomes the largest of its memory and the peak extension over the step (the module notes).  Returns whether a
+    memory now exceeds its link's extension at the end of the step."""
+    w = 2 * N + (1 if m.ints[3] else 0)
+    changed = False
+    for q in range(members.size):
+        o = q * n
+        for k in range(n - w):
+            if m.kind[k] == 3:
+                e0, r0 = _extension(m, k, y[o : o + N], y[o + N : o + 2 * N])
+                e1, r1 = _extension(m, k, y_new[o : o + N], y_new[o + N : o + 2 * N])
+                peak = _cubic_peak(e0, h * r0, e1, h * r1)
+                if peak > y_new[o + w + k]:
+                    changed = changed or peak > e1  # memory beyond the end's approach: the force at the end changes
+                    y_new[o + w + k] = peak
+    return changed
+
+
+# -- right-hand sides ----------------------------------------------------------------------------------------
+@_jit(inline="always")
+def _network_accelerations(m, b, g, x, u, out, memory):
+    """Accelerations of member ``b`` of a packed network under gravity ``g`` into ``out``; returns the power its
+    dashpots take out."""
+    d, n, damped = m.ints[1], m.ints[2], m.ints[3] != 0
+    bm = b * (m.inv_mass.shape[0] > 1)  # one row shared by every member, or one per member (integers only:
+    bp = b * (m.par.shape[0] > 1)  # an index may be unsigned, and b if ... else 0 would unify to a float)
+    par, li, lj, kind = m.par[bp], m.li, m.lj, m.kind
+    for c in range(n):
+        out[c] = 0.0
+    power = 0.0
+    L = li.size
+    path = m.ints[9] != 0  # a chain: link k joins site k to site k + 1, the last one perhaps to the support
+    for k in range(L):
+        if path:
+            i, j = k, (k + 1 if k + 1 < n else -1)
+        else:
+            i, j = li[k], lj[k]
+        length = 1.0
+        if d == 1:
+            if j >= 0:
+                e = x[j] - x[i]
+                rate = u[j] - u[i] if damped else 0.0
+            else:
+                e = -x[i]
+                rate = -u[i] if damped else 0.0
+        else:
+            # The extension as Network.extensions computes it: |b + w| - |b| = (2 b.w + w.w)/(|b + w| + |b|),
+            # from the rest vector b and the relative displacement w of the ends, free of the cancellation of
+            # two lengths of order |b|, plus the prestretch.
+            length2 = 0.0
+            stretch = 0.0
+            for c in range(d):
+                w = (0.0 if j < 0 else x[j * d + c]) - x[i * d + c]
+                length2 += (m.rest_vectors[k, c] + w) ** 2
+                stretch += (2.0 * m.rest_vectors[k, c] + w) * w
+            length = math.sqrt(length2)
+            e = stretch / (length + m.spans[k]) + m.prestretch[k]
+            rate = 0.0
+            if damped:
+                for c in range(d):
+                    w = (0.0 if j < 0 else x[j * d + c]) - x[i * d + c]
+                    du = (0.0 if j < 0 else u[j * d + c]) - u[i * d + c]
+                    rate += du * (m.rest_vectors[k, c] + w) / length
+        force, elastic = _law(kind[k], par[k, 0], par[k, 1], par[k, 2], e, rate, memory[k] if memory.size else 0.0)
+        if damped:
+            power += (force - elastic) * rate
+        if d == 1:
+            out[i] += force
+            if j >= 0:
+                out[j] -= force
+        else:
+            for c in range(d):
+                w = (0.0 if j < 0 else x[j * d + c]) - x[i * d + c]
+                component = force * (m.rest_vectors[k, c] + w) / length
+                out[i * d + c] += component
+                if j >= 0:
+                    out[j * d + c] -= component
+    inv_mass, gravity = m.inv_mass[bm], m.gravity[bm]
+    for c in range(n):
+        out[c] = out[c] * inv_mass[c] - g * gravity[c]
+    return power
+
+
+@_jit(inline="always")
+def _ring_accelerations(m, x, out):
+    """Accelerations of the ring-resolved chain without gravity (:meth:`~ringchain.numerics.RingChain.stepper`)."""
+    N, n, fixed = m.ints[6], m.ints[7], m.ints[8]
+    K_c, exponent = m.floats[0], m.floats[1]
+    for r in range(N):
+        for a in range(n):
+            total = 0.0
+            for c in range(n):
+                total += x[r * n + c] * m.coupling[c, a]
+            out[r * n + a] = total
+    for r in range(N):  # the contact above ring r: with ring r + 1, or the support
+        if r < N - 1:
+            e = x[(r + 1) * n] - x[r * n + 1]
+        elif fixed:
+            e = -x[r * n + 1]
+        else:
+            continue
+        force = 0.0
+        if e > 0.0:
+            force = K_c * e * math.sqrt(e) if exponent == 1.5 else K_c * e**exponent
+        for a in range(n):
+            out[r * n + a] += force * m.inv_top[a]  # pulled up at its top
+            if r < N - 1:
+                out[(r + 1) * n + a] -= force * m.inv_bottom[a]  # the ring above pulled down at its bottom
+
+
+@_jit(inline="always")
+def _accelerations(m, b, g, x, u, out, memory):
+    """Accelerations of member ``b`` of either kind of model (the packed kind says which); ``memory`` per link
+    (laws with memory) or empty."""
+    if m.ints[0] == 0:
+        return _network_accelerations(m, b, g, x, u, out, memory)
+    _ring_accelerations(m, x, out)
+    n, N = m.ints[7], m.ints[6]
+    rigid = m.gravity[0]
+    for r in range(N):
+        for a in range(n):
+            out[r * n + a] -= g * rigid[a]
+    return 0.0
+
+
+@_jit(inline="always")
+def _derivative(m, b, g, y, dy, N):
+    """dy/dt of the state y = [x (N), u (N), W (dissipated energy, if damped), memory (per link, if stateful)]."""
+    w = 2 * N + (1 if m.ints[3] else 0)
+    power = _accelerations(m, b, g, y[:N], y[N : 2 * N], dy[N : 2 * N], y[w:])
+    for c in range(N):
+        dy[c] = y[N + c]
+    if w > 2 * N:
+        dy[2 * N] = power
+    for c in range(w, y.size):
+        dy[c] = 0.0  # the memory changes on accepted steps only
+
+
+def accelerations(packed: Packed, x, u=None, g=9.80665, member=0, memory=None) -> np.ndarray:
+    """Accelerations of one state (m/s^2), for tests: the compiled right-hand side against the NumPy one
+    (``memory``: the largest approach of each link, m, for laws with memory; read, never written)."""
+    x = np.ascontiguousarray(x, dtype=float)
+    u = np.zeros_like(x) if u is None else np.ascontiguousarray(u, dtype=float)
+    memory = np.zeros(0) if memory is None else np.ascontiguousarray(memory, dtype=float)
+    out = np.empty_like(x)
+    _accelerations(packed, member, float(g), x, u, out, memory)
+    return out
+
+
+# -- contacts opening and closing --------------------------------------------------------------------------------
+@_jit()
+def _first_zero(e0, s0, e1, s1, start, end):
+    """The first change of sign in (start, end) of the cubic with values e0, e1 and slopes s0, s1 at 0 and 1
+    (found on its monotone pieces by bisection; the point just past it), or 2.0 if it keeps its sign there."""
+    a, b, c = 6.0 * (e0 - e1) + 3.0 * (s0 + s1), 6.0 * (e1 - e0) - 4.0 * s0 - 2.0 * s1, s0  # p'(z) = a z^2 + b z + c
+    cut1, cut2 = end, end  # the turning points inside (start, end), in order
+    if a != 0.0:
+        disc = b * b - 4.0 * a * c
+        if disc > 0.0:
+            r1, r2 = (-b - math.sqrt(disc)) / (2.0 * a), (-b + math.sqrt(disc)) / (2.0 * a)
+            cut1, cut2 = min(r1, r2), max(r1, r2)
+    elif b != 0.0:
+        cut1 = -c / b
+    lo = start
+    v_lo = _cubic(e0, s0, e1, s1, lo)
+    for piece in range(3):
+        hi = cut1 if piece == 0 else (cut2 if piece == 1 else end)
+        if hi <= lo:
+            continue
+        hi = min(hi, end)
+        v_hi = _cubic(e0, s0, e1, s1, hi)
+        if (v_lo > 0.0) != (v_hi > 0.0):
+            for _ in range(60):  # bisection on a monotone piece, to the last bits of z
+                mid = 0.5 * (lo + hi)
+                v_mid = _cubic(e0, s0, e1, s1, mid)
+                if (v_mid > 0.0) == (v_lo > 0.0):
+                    lo, v_lo = mid, v_mid
+                else:
+                    hi = mid
+                if hi - lo <= 1e-15:
+                    break
+            return hi
+        lo, v_lo = hi, v_hi
+    return 2.0
+
+
+@_jit()
+def _switches(m, members, y, N, n, out_value, out_rate):
+    """Each switch (value, rate) of a group's members at its state ``y``, one row per member: zero where a
+    contact's force stops being smooth (its extension, as :func:`_extension`); (1, 0) for a smooth law.
+    Written out: a call per link passing the packed model costs more."""
+    S, d = out_value.shape[1], m.ints[1]
+    for q in range(members.size):
+        o, v = q * n, q * n + N  # displacements and velocities of member q
+        for k in range(S):
+            e, rate = 1.0, 0.0
+            if m.ints[0] == 1:  # the ring-resolved chain: the contact above ring k, with ring k + 1 or the support
+                top, dofs = o + k * m.ints[7] + 1, m.ints[7]
+                if k < S - 1:
+                    e, rate = y[top + dofs - 1] - y[top], y[top + dofs - 1 + N] - y[top + N]
+                elif m.ints[8]:
+                    e, rate = -y[top], -y[top + N]
+            elif m.kind[k] == 0 or m.kind[k] == 4:  # a power law, Hunt-Crossley (not yet Thornton: see the notes)
+                i, j = m.li[k], m.lj[k]
+                if d == 1:
+                    e = (y[o + j] if j >= 0 else 0.0) - y[o + i]
+                    rate = (y[v + j] if j >= 0 else 0.0) - y[v + i]
+                else:
+                    length2, stretch, rate = 0.0, 0.0, 0.0
+                    for c in range(d):
+                        gap = (0.0 if j < 0 else y[o + j * d + c]) - y[o + i * d + c]
+                        length2 += (m.rest_vectors[k, c] + gap) ** 2
+                        stretch += (2.0 * m.rest_vectors[k, c] + gap) * gap
+                    length = math.sqrt(length2)
+                    for c in range(d):
+                        gap = (0.0 if j < 0 else y[o + j * d + c]) - y[o + i * d + c]
+                        du = (0.0 if j < 0 else y[v + j * d + c]) - y[v + i * d + c]
+                        rate += du * (m.rest_vectors[k, c] + gap) / length
+                    e = stretch / (length + m.spans[k]) + m.prestretch[k]
+            out_value[q, k], out_rate[q, k] = e, rate
+
+
+@_jit()
+def _first_switch(value0, rate0, value1, rate1, h, floor):
+    """Where in a step of length ``h`` a switch first changes sign (on the cubic through the values and rates at
+    its ends; within 1e-7 of an end: at that end; not within ``floor`` of zero), a fraction of it; 2.0: none."""
+    first = 2.0
+    for q in range(value0.shape[0]):
+        for k in range(value0.shape[1]):
+            e0, e1 = value0[q, k], value1[q, k]
+            s0, s1 = h * rate0[q, k], h * rate1[q, k]
+            slope = e1 - e0  # p(z) = (1 - z) e0 + z e1 + z (1 - z) ((1 - z)(s0 - slope) - z (s1 - slope)):
+            bend = 0.25 * max(abs(s0 - slope), abs(s1 - slope))
+            if (e0 > 0.0) == (e1 > 0.0) and min(abs(e0), abs(e1)) > bend:
+                continue  # it stays within max|s - slope|/4 of the chord, which keeps its sign: no zero
+            if max(abs(e0), abs(e1)) + bend <= floor:
+                continue  # it stays within the displacements' tolerance of zero (rounding at rest): no matter
+            first = min(first, _first_zero(e0, s0, e1, s1, 1e-7, 1.0 - 1e-7))
+    return first
+
+
+# -- Dormand-Prince 5(4) -----------------------------------------------------------------------------------------
+@_jit()
+def _error_norm(err, y, y_new, atol, rtol):
+    worst = 0.0
+    for c in range(err.size):
+        scale = atol[c] + rtol * max(abs(y[c]), abs(y_new[c]))
+        ratio = abs(err[c]) / scale
+        if not ratio <= worst:  # NaN too
+            worst = ratio
+    return worst
+
+
+@_jit()
+def _group_derivative(m, members, g, y, dy, N, n):
+    """dy/dt of a group of members stepped together: their states one after the other in ``y``."""
+    if members.size == 1:
+        _derivative(m, members[0], g, y, dy, N)
+        return
+    for q in range(members.size):
+        _derivative(m, members[q], g, y[q * n : (q + 1) * n], dy[q * n : (q + 1) * n], N)
+
+
+@_jit()
+def _tableau():
+    """Dormand and Prince's coefficients a_sr of stage s from stage r, the last row the fifth-order weights."""
+    a = np.zeros((7, 6))
+    a[1, 0] = 0.2
+    a[2, 0], a[2, 1] = 3.0 / 40.0, 9.0 / 40.0
+    a[3, 0], a[3, 1], a[3, 2] = 44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0
+    a[4, 0], a[4, 1], a[4, 2], a[4, 3] = 19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0
+    a[5, 0], a[5, 1], a[5, 2], a[5, 3], a[5, 4] = (9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0, 49.0 / 176.0,
+                                                   -5103.0 / 18656.0)  # fmt: skip
+    a[6, 0], a[6, 2], a[6, 3], a[6, 4], a[6, 5] = (35.0 / 384.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0,
+                                                   11.0 / 84.0)  # fmt: skip
+    return a
+
+
+@_jit()
+def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, out_m, locate):
+    """The runs ``members`` stepped together (one step size for the group; one member: its own steps).
+
+    ``y0`` and ``atol`` are (G, n), the states of the group's members; ``out_x``, ``out_u`` (B, T, K) and ``out_w``
+    (B, T) are filled at rows ``members``, ``out_m`` (B, T, links) with the memory of laws that have one.
+    ``locate``: steps end where a contact opens or closes (the module notes).  Returns (status, evaluations,
+    steps, rejections, steps cut at a contact, final states (G, n)).
+    """
+    G, n = y0.shape
+    size = G * n
+    y = y0.copy().reshape(size)
+    tolerance = atol.reshape(size)
+    stages = np.empty((7, size))
+    k1, k2, k3, k4, k5, k6, k7 = stages[0], stages[1], stages[2], stages[3], stages[4], stages[5], stages[6]
+    y_stage, y_new, err = np.empty(size), np.empty(size), np.empty(size)
+    tableau = _tableau()
+    T = t_eval.size
+    t_end = t_eval[T - 1]
+    t = 0.0
+    j = 0
+    damped = m.ints[3] != 0
+    w = 2 * N + (1 if damped else 0)
+    K = keep.size
+    while j < T and t_eval[j] <= 0.0:  # samples at the start
+        for q in range(G):
+            b, o = members[q], q * n
+            for c in range(K):
+                out_x[b, j, c], out_u[b, j, c] = y[o + keep[c]], y[o + N + keep[c]]
+            out_w[b, j] = y[o + 2 * N] if damped else 0.0
+            for c in range(n - w):
+                out_m[b, j, c] = y[o + w + c]
+        j += 1
+    _group_derivative(m, members, g, y, k1, N, n)
+    evaluations = 1
+    if j == T:
+        return 0, evaluations, 0, 0, 0, y.reshape(G, n)
+    S = 0 if not locate else (m.li.size if m.ints[0] == 0 else (m.ints[6] if m.ints[0] == 1 else 0))
+    value0, rate0, value1, rate1 = np.empty((G, S)), np.empty((G, S)), np.empty((G, S)), np.empty((G, S))
+    if S:
+        _switches(m, members, y, N, n, value0, rate0)
+    floor = tolerance[:N].min()  # a switch within the displacements' absolute tolerance of zero is not located
+    cuts = 0
+    h_after = 0.0  # the step a cut step's first trial proposed for after it (0: the last trial was not cut)
+    # Initial step (Hairer's HINIT): the first-derivative estimate, then a second-order correction.
+    d0, d1 = 0.0, 0.0
+    for c in range(size):
+        scale = tolerance[c] + rtol * abs(y[c])
+        d0 = max(d0, abs(y[c]) / scale)
+        d1 = max(d1, abs(k1[c]) / scale)
+    h = 1e-6 * t_end if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
+    h = min(h, t_end)
+    for c in range(size):
+        y_stage[c] = y[c] + h * k1[c]
+    _group_derivative(m, members, g, y_stage, k2, N, n)
+    evaluations += 1
+    d2 = 0.0
+    for c in range(size):
+        scale = tolerance[c] + rtol * abs(y[c])
+        d2 = max(d2, abs(k2[c] - k1[c]) / scale / h)
+    h1 = max(1e-6 * h, 1e-3 * h) if max(d1, d2) <= 1e-15 else (0.01 / max(d1, d2)) ** 0.2
+    h = min(100.0 * h, h1, t_end)
+    steps, rejections = 0, 0
+    rejected_last = False
+    while t < t_end:
+        if steps + rejections >= max_steps:
+            return 1, evaluations, steps, rejections, cuts, y.reshape(G, n)
+        if t + h > t_end:
+            h = t_end - t
+        if h <= 1e-14 * max(abs(t), t_end):
+            return 3, evaluations, steps, rejections, cuts, y.reshape(G, n)
+        for s in range(1, 7):  # the stages after the first; the last one at the new state (first same as last)
+            target = y_new if s == 6 else y_stage
+            for c in range(size):
+                total = 0.0
+                for r in range(s):
+                    total += tableau[s, r] * stages[r, c]
+                target[c] = y[c] + h * total
+            _group_derivative(m, members, g, target, stages[s], N, n)
+        evaluations += 6
+        for c in range(size):
+            err[c] = h * (71.0 / 57600.0 * k1[c] - 71.0 / 16695.0 * k3[c] + 71.0 / 1920.0 * k4[c]
+                          - 17253.0 / 339200.0 * k5[c] + 22.0 / 525.0 * k6[c] - 1.0 / 40.0 * k7[c])  # fmt: skip
+        error = _error_norm(err, y, y_new, tolerance, rtol)
+        if not math.isfinite(error):
+            h *= 0.2
+            rejections += 1
+            rejected_last = True
+            continue
+        factor = 0.9 * error**-0.2 if error > 0.0 else 10.0
+        if error <= 1.0 and S:
+            _switches(m, members, y_new, N, n, value1, rate1)
+            z = _first_switch(value0, rate0, value1, rate1, h, floor)
+            if z < (0.99 if h_after > 0.0 else 1.0):  # a contact opens or closes inside: end the step there
+                if h_after == 0.0:
+                    h_after = h * min(1.0, max(0.2, factor))
+                h *= z
+                cuts += 1
+                continue
+        if error <= 1.0:
+            steps += 1
+            t_new = t + h
+            # Samples in (t, t + h]: the continuous extension of the pair (Hairer's contd5).
+            while j < T and t_eval[j] <= t_new * (1.0 + 1e-15):
+                theta = (t_eval[j] - t) / h
+                theta1 = 1.0 - theta
+                for q in range(G):
+                    b, o = members[q], q * n
+                    for c in range(2 * K + (1 if damped else 0)):
+                        if c < K:
+                            r = o + keep[c]
+                        elif c < 2 * K:
+                            r = o + N + keep[c - K]
+                        else:
+                            r = o + 2 * N
+                        dy = y_new[r] - y[r]
+                        bspl = h * k1[r] - dy
+                        r4 = dy - h * k7[r] - bspl
+                        r5 = h * (-12715105075.0 / 11282082432.0 * k1[r] + 87487479700.0 / 32700410799.0 * k3[r]
+                                  - 10690763975.0 / 1880347072.0 * k4[r] + 701980252875.0 / 199316789632.0 * k5[r]
+                                  - 1453857185.0 / 822651844.0 * k6[r] + 69997945.0 / 29380423.0 * k7[r])  # fmt: skip
+                        value = y[r] + theta * (dy + theta1 * (bspl + theta * (r4 + theta1 * r5)))
+                        if c < K:
+                            out_x[b, j, c] = value
+                        elif c < 2 * K:
+                            out_u[b, j, c - K] = value
+                        else:
+                            out_w[b, j] = value
+                    for c in range(n - w):
+                        out_m[b, j, c] = y[o + w + c]  # the memory the step started from (what its stages used)
+                j += 1
+            if n > w and _remember(m, members, y, y_new, h, N, n):  # a peak inside the step: the new memory
+                _group_derivative(m, members, g, y_new, k7, N, n)  # changes the force at y_new (first same as last)
+                evaluations += 1
+            for c in range(size):
+                y[c] = y_new[c]
+                k1[c] = k7[c]  # first same as last
+            t = t_new
+            if rejected_last:
+                factor = min(factor, 1.0)
+            rejected_last = False
+            h *= min(10.0, max(0.2, factor))
+            if h_after > 0.0:  # a step cut at a contact: the next one as its first trial proposed
+                h = max(h, h_after)
+                h_after = 0.0
+            if S:
+                if n > w:  # a new memory moves the zero of Thornton's unloading curve
+                    _switches(m, members, y, N, n, value0, rate0)
+                else:
+                    value0[:, :] = value1
+                    rate0[:, :] = rate1
+            for c in range(size):
+                if not math.isfinite(y[c]):
+                    return 2, evaluations, steps, rejections, cuts, y.reshape(G, n)
+        else:
+            rejections += 1
+            rejected_last = True
+            h *= max(0.2, factor)
+    return 0, evaluations, steps, rejections, cuts, y.reshape(G, n)
+
+
+@_jit(nogil=True)
+def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, status, stats, final,
+                 out_m, first, last, shared, locate):  # fmt: skip
+    """Runs ``first`` to ``last`` (excluded), each with its own steps, or all of them with one step size
+    (``shared``); without the GIL, so that threads can take disjoint ranges of runs."""
+    if shared:
+        members = np.arange(first, last)
+        code, evaluations, steps, rejections, cuts, y = _dopri5_group(
+            m, members, g, y0[first:last], t_eval, rtol, atol[first:last], keep, N, out_x, out_u, out_w, max_steps,
+            out_m, locate,
+        )  # fmt: skip
+        for q in range(members.size):
+            b = first + q
+            status[b], stats[b, 0], stats[b, 1], stats[b, 2], stats[b, 3] = code, evaluations, steps, rejections, cuts
+            final[b] = y[q]
+        return
+    for b in range(first, last):
+        code, evaluations, steps, rejections, cuts, y = _dopri5_group(
+            m, np.array([b]), g, y0[b : b + 1], t_eval, rtol, atol[b : b + 1], keep, N, out_x, out_u, out_w, max_steps,
+            out_m, locate,
+        )  # fmt: skip
+        status[b], stats[b, 0], stats[b, 1], stats[b, 2], stats[b, 3] = code, evaluations, steps, rejections, cuts
+        final[b] = y[0]
+
+
+def dopri5(
+    packed: Packed, y0, t_eval, rtol, atol, keep, g, *, max_steps=10_000_000, parallel=None, shared=False, locate=True
+):
+    """Integrate B runs (rows of ``y0``, each [x, u, W if damped, memory per link if stateful]) over ``t_eval``
+    with the 5(4) pair.
+
+    Returns x and u of the coordinates ``keep`` (B, T, K), W (B, T), the memory (B, T, links; links 0 without
+    memory), the final states (B, n), the exit status of each run (0 done, :data:`STATUS` otherwise) and its
+    counts (evaluations, accepted and rejected steps, trial steps cut where a contact opens or closes), shape
+    (B, 4).  ``atol`` has one row per run.  Each run takes its own steps, on a pool of threads when
+    ``parallel`` (default: more than one run); ``shared``: the runs take one step size, the error measured
+    over all of them (forward differences between runs then share their steps).  ``locate``: each step ends
+    where a contact opens or closes (the module notes); False steps over them, as a plain pair does.
+    """
+    y0 = np.ascontiguousarray(y0, dtype=float)
+    B = y0.shape[0]
+    T, K = t_eval.size, keep.size
+    N = int(packed.ints[2])
+    out_x, out_u, out_w = np.empty((B, T, K)), np.empty((B, T, K)), np.zeros((B, T))
+    out_m = np.zeros((B, T, y0.shape[1] - 2 * N - int(packed.ints[3] != 0)))
+    status, stats, final = np.zeros(B, dtype=np.int64), np.zeros((B, 4), dtype=np.int64), np.empty_like(y0)
+    args = (packed, float(g), y0, np.ascontiguousarray(t_eval, dtype=float), float(rtol),
+            np.ascontiguousarray(atol, dtype=float), np.ascontiguousarray(keep, dtype=np.int64), N, out_x, out_u, out_w,
+            int(max_steps), status, stats, final, out_m)  # fmt: skip
+    announce_compile(_dopri5_runs, "dopri5", CACHE)
+    if shared:
+        _dopri5_runs(*args, 0, B, True, bool(locate))
+    else:
+        over_threads(lambda *a: _dopri5_runs(*a, False, bool(locate)), B, B > 1 if parallel is None else parallel,
+                      *args)  # fmt: skip
+    return out_x, out_u, out_w, out_m, final, status, stats
+
+
+# -- velocity Verlet -----------------------------------------------------------------------------------------------
+@_jit()
+def _verlet_member(m, b, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, memory, out_m):
+    N = x0.size
+    x, u_half = x0.copy(), np.empty(N)
+    a = np.empty(N)
+    x_prev, u_prev = np.empty(keep.size), np.empty(keep.size)
+    _accelerations(m, b, g, x, u0, a, memory)
+    half = 0.5 * dt
+    for c in range(N):
+        u_half[c] = u0[c] + half * a[c]
+    T = t_eval.size
+    j = 0
+    while j < T and t_eval[j] / dt - 1e-9 <= 0.0:  # samples at the start (step "-1")
+        for c in range(keep.size):
+            out_x[j, c], out_u[j, c] = x[keep[c]], u0[keep[c]]
+        out_m[j] = memory
+        j += 1
+    for k in range(n_steps):
+        sampling = j < T and math.ceil(t_eval[j] / dt - 1e-9) - 1 == k
+        if sampling:
+            for c in range(keep.size):
+                x_prev[c] = x[keep[c]]
+                u_prev[c] = u_half[keep[c]] - half * a[keep[c]]
+        for c in range(N):
+            x[c] += dt * u_half[c]
+        _accelerations(m, b, g, x, u_half, a, memory)  # undamped: the velocities are not read
+        while j < T and math.ceil(t_eval[j] / dt - 1e-9) - 1 == k:
+            s = t_eval[j] / dt - k
+            h00, h10, h01, h11 = 2 * s**3 - 3 * s**2 + 1, s**3 - 2 * s**2 + s, -2 * s**3 + 3 * s**2, s**3 - s**2
+            d00, d10, d01, d11 = 6 * s**2 - 6 * s, 3 * s**2 - 4 * s + 1, -6 * s**2 + 6 * s, 3 * s**2 - 2 * s
+            for c in range(keep.size):
+                q = keep[c]
+                u_now = u_half[q] + half * a[q]
+                out_x[j, c] = h00 * x_prev[c] + h10 * dt * u_prev[c] + h01 * x[q] + h11 * dt * u_now
+                out_u[j, c] = (d00 * x_prev[c] + d01 * x[q]) / dt + d10 * u_prev[c] + d11 * u_now
+            out_m[j] = memory
+            j += 1
+        for link in range(memory.size):  # the memory after the step, from the new positions
+            if m.kind[link] == 3:
+                e, _ = _extension(m, link, x, u_half)
+                memory[link] = max(memory[link], e)
+        for c in range(N):
+            u_half[c] += dt * a[c]
+        if not math.isfinite(x[0] + u_half[0]):
+            return 2, x, u_half
+    u = np.empty(N)
+    for c in range(N):
+        u[c] = u_half[c] - half * a[c]
+    for c in range(N):
+        if not (math.isfinite(x[c]) and math.isfinite(u[c])):
+            return 2, x, u
+    return 0, x, u
+
+
+@_jit(nogil=True)
+def _verlet_runs(m, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, status, final_x, final_u, memory, out_m, first,
+                 last):  # fmt: skip
+    """Runs ``first`` to ``last`` (excluded), one after the other, without the GIL."""
+    for b in range(first, last):
+        code, x, u = _verlet_member(m, b, g, x0[b], u0[b], t_eval, n_steps, dt, keep, out_x[b], out_u[b], memory[b],
+                                    out_m[b])  # fmt: skip
+        status[b] = code
+        final_x[b], final_u[b] = x, u
+
+
+def verlet(packed: Packed, x0, u0, t_eval, t_end, dt, keep, g, *, parallel=None, memory=None):
+    """Velocity Verlet over ``t_eval`` (steps of ``t_end``/ceil(t_end/dt)): x and u of ``keep`` (B, T, K), the
+    final x and u (B, n), the exit status of each run and the step taken; with ``memory`` (B, links: laws with
+    memory) also the memory at the samples (B, T, links) and at the end (B, links)."""
+    x0 = np.ascontiguousarray(x0, dtype=float)
+    u0 = np.ascontiguousarray(u0, dtype=float)
+    B = x0.shape[0]
+    n_steps = max(1, math.ceil(t_end / dt))
+    dt = t_end / n_steps
+    T, K = t_eval.size, keep.size
+    out_x, out_u = np.empty((B, T, K)), np.empty((B, T, K))
+    status, final_x, final_u = np.zeros(B, dtype=np.int64), np.empty_like(x0), np.empty_like(u0)
+    stateful = memory is not None
+    memory = np.array(memory if stateful else np.zeros((B, 0)), dtype=float)  # a copy: the kernel updates it
+    out_m = np.zeros((B, T, memory.shape[1]))
+    announce_compile(_verlet_runs, "verlet", CACHE)
+    over_threads(_verlet_runs, B, B > 1 if parallel is None else parallel, packed, float(g), x0, u0,
+                  np.ascontiguousarray(t_eval, dtype=float), int(n_steps), float(dt),
+                  np.ascontiguousarray(keep, dtype=np.int64), out_x, out_u, status, final_x, final_u, memory,
+                  out_m)  # fmt: skip
+    if stateful:
+        return out_x, out_u, final_x, final_u, status, dt, n_steps, out_m, memory
+    return out_x, out_u, final_x, final_u, status, dt, n_steps
+
+
+numba.config.CACHE_DIR = _previous_cache_dir
