@@ -33,6 +33,8 @@ import socket
 import sys
 from pathlib import Path
 
+from ._kernel_calls import load_factor
+
 __all__ = [
     "InlineExecutor",
     "default_executor",
@@ -42,7 +44,16 @@ __all__ = [
     "check_dask_scheduler",
     "DASK_TIMEOUT",
     "DASK_PORT",
+    "POOL_START_SECONDS",
 ]
+
+#: Seconds a pool of local worker processes costs on a quiet machine before its first task ends: each "spawn"
+#: worker imports NumPy, SciPy, Numba and ringchain and loads the compiled kernels, about what a warm
+#: ``ringchain simulate`` takes in a fresh process (1.3-1.7 s on a quiet two-core machine), plus starting the
+#: processes.  benchmarks/bench_pool_start.py measures it (53.7 s for two workers with the load average at 17.6
+#: on two cores); :func:`run_tasks` scales it by the load per core (``_kernel_calls.load_factor``) and, given no
+#: executor, runs the job in the calling process when a pool would save less.
+POOL_START_SECONDS = 2.5
 
 #: Seconds :func:`dask_client` waits for a Dask scheduler to accept the connection and greet.
 DASK_TIMEOUT = 5.0
@@ -170,6 +181,7 @@ def run_tasks(
     sizes=None,
     name: str = "sweep",
     unit: str = "task",
+    seconds: float | None = None,
 ) -> list:
     """``function(*task, **options)`` for each task, run through ``executor``; the results in task order.
 
@@ -192,6 +204,10 @@ def run_tasks(
         What each task counts for on the bar (default 1 each).
     name, unit : str, optional
         The job's name (the bar's label, messages) and the bar's unit.
+    seconds : float, optional
+        The job's work in this process, s (an estimate).  Given no executor and no ``max_workers``, the job
+        runs in the calling process when a pool of the CPUs would save less than :data:`POOL_START_SECONDS`
+        (the kernels of a batch use every core from one process anyway); one line on stderr says which.
 
     Returns
     -------
@@ -209,6 +225,13 @@ def run_tasks(
     tasks = list(tasks)
     sizes = [1] * len(tasks) if sizes is None else list(sizes)
     own = executor is None
+    if own and max_workers is None and seconds is not None and len(tasks) > 0:
+        workers = max(1, min(os.cpu_count() or 1, len(tasks)))
+        saved, cost = seconds * (1.0 - 1.0 / workers), POOL_START_SECONDS * load_factor()
+        max_workers = 0 if saved < cost else workers
+        where = "in this process" if max_workers == 0 else f"on {workers} worker processes"
+        print(f"{name}: {sum(sizes)} {unit}s {where} (about {seconds:.1f} s of work; a pool of {workers} would save "
+              f"about {saved:.1f} s and costs about {cost:.1f} s to start)", file=sys.stderr)  # fmt: skip
     if own:
         executor = default_executor(len(tasks), max_workers, f"{name}()")
     results: list = [None] * len(tasks)

@@ -93,9 +93,9 @@ __all__ = [
     "EnergyWatch",
 ]
 
-#: Default integrator: the compiled Dormand-Prince 5(4) pair, the fastest method that keeps the accuracy
-#: of the earlier default (LSODA at rtol 1e-9): sensor forces of the paper's chain within 1.3e-5 of their
-#: peak against a tight reference (1.1e-5 for LSODA), 5-11x faster (benchmarks/bench_kernels.py).
+#: Default integrator: the compiled Dormand-Prince 5(4) pair, its steps ending where contacts open or close:
+#: sensor forces of the paper's chain within 2.8e-7 of their peak against an event-located tight reference
+#: (8.8e-6 for odeint at rtol 1e-9, 18x slower in the same run; benchmarks/bench_paper_recipe.py).
 DEFAULT_METHOD = "dopri5"
 
 #: Default relative tolerance of each adaptive method; the absolute tolerances are this times the
@@ -115,8 +115,9 @@ VERLET_STEPS_PER_PERIOD = 60
 #: The adaptive methods: "dopri5" (Dormand-Prince 5(4), compiled, max-norm error control, each run of a
 #: batch with its own steps: :mod:`ringchain.numerics.engine.kernels`), "odeint" (LSODA stepped in Fortran) and
 #: the :func:`scipy.integrate.solve_ivp` methods, the independent reference.  LSODA (Adams, switching to BDF
-#: with a banded Jacobian if the chain turns stiff) suits the chain; the explicit Runge-Kutta methods lose
-#: their order at the kink of the contact law at delta = 0, which costs the higher orders most.
+#: with a banded Jacobian if the chain turns stiff) suits the chain; SciPy's explicit Runge-Kutta methods lose
+#: their order at the kink of the contact law at delta = 0, which costs the higher orders most ("dopri5" ends
+#: its steps there and keeps its order: :mod:`ringchain.numerics.engine.kernels`).
 ADAPTIVE_METHODS = ("dopri5", "odeint", "LSODA", "DOP853", "RK45", "RK23")
 
 #: The compiled methods (:mod:`ringchain.numerics.engine.kernels`): their whole time loop runs in Numba.
@@ -315,7 +316,8 @@ def _compiled(method, dyn, x0, u0, scales, t_eval, t_end, rtol, atol, dt, g, kee
     watch(t_end, final[:, :N], final[:, N : 2 * N], final[:, 2 * N] if dyn.damped else 0.0,
           final[:, first:] if memory is not None else None)  # fmt: skip
     return xs, us, w, {"method": method, "rtol": rtol, "nfev": int(counts[:, 0].sum()),
-                       "steps": counts[:, 1].tolist(), "rejected": counts[:, 2].tolist()}, \
+                       "steps": counts[:, 1].tolist(), "rejected": counts[:, 2].tolist(),
+                       "cut": counts[:, 3].tolist()}, \
         (ms if memory is not None else None)  # fmt: skip
 
 

@@ -30,9 +30,8 @@ never writes it; the law reads max(memory, delta), so a stage beyond the memory 
 After each accepted step the memory becomes the largest extension over the step, read from the cubic
 through the extensions and rates at both ends (:func:`_remember`: the peak of a step, not only its end,
 to fourth order); a sample records the memory its step started from (what the stages used).  Velocity
-Verlet updates it after each step from the new positions.  Memory as an integrated state (dm/dt = the
-rate while loading) was the other choice: its right-hand side jumps whenever the approach crosses the
-memory, which the step control pays for with rejections at every loading; and it drifts off the approach.
+Verlet updates it after each step from the new positions.  (Memory as an integrated state, dm/dt = the
+rate while loading, jumps whenever the approach crosses the memory: rejections at every loading.)
 
 The Runge-Kutta pair.  Dormand and Prince's 5(4) pair with its fourth-order continuous extension
 (Hairer, Norsett and Wanner, Solving ODEs I, Sec. II.5-6), first-same-as-last, step-size control
@@ -42,20 +41,29 @@ at rest with no net force), or a run repeated in a batch, never changes the step
 RMS norm over n components loosens the control by sqrt(n) when most of them are idle).  A member
 hanging at rest under gravity is not exactly idle: its rounding-level accelerations, against its own
 tiny tolerances, change a shared step slightly (``shared=True``: 601 steps instead of 596 measured).
-Each member of a batch takes its own steps; the members run in parallel over the cores (``prange``).
-The samples are read from the continuous extension.
+Each member of a batch takes its own steps, on a pool of threads through one kernel that releases the GIL
+(one compiled kernel for one run or many).  The samples are read from the continuous extension.
 
 Velocity Verlet.  The fixed-step scheme of :func:`ringchain.numerics.engine.integrate` (kick-drift-kick in
-leapfrog form, samples by cubic Hermite interpolation of the two ends of their step), one member per
-thread.
+leapfrog form, samples by cubic Hermite interpolation of the two ends of their step).
+
+Contacts opening and closing.  A contact's force (K delta^n while delta > 0, zero beyond) is not smooth
+where delta crosses zero; a step straddling that instant loses the pair's order, its error estimate no
+longer measures its error, and the error stops falling with the tolerance (on the paper's chain, 1.8e-3
+to 6.8e-4 of the peak from rtol 1e-6 to 1e-8).  So each step ends where a contact opens or closes
+(``locate``, the default): once a trial step passes the error test, each contact's extension is followed
+on the cubic through its values and rates at both ends, and where one changes sign inside, the step is
+retaken to end just past the first change (bisection on the cubic).  The error then falls as a
+fifth-order method's (benchmarks/bench_paper_recipe.py).  Thornton's contact is not located yet (its
+switch, the zero of the unloading curve, moved with the memory and the step underflowed in a collision).
 
 The disk cache.  Kernels are compiled on first use and cached on disk by Numba in the package's cache
 folder (``<ringchain cache>/numba``, :func:`ringchain.theory._codegen.cache_dir`), so a later process
 loads them.  Every kernel lives in this one module: Numba keys a cached kernel on its own file, and a
 change to a kernel in another module would not invalidate the cache of a kernel calling it.  Where
 the folder is disabled or not writable, the kernels are compiled in every process instead (about
-the cold compile time stated in benchmarks/bench_kernels.py).  No module-level value enters a kernel:
-Numba freezes globals as constants in the compiled code.
+the cold compile time stated in benchmarks/bench_kernels.py); a line on stderr says so before a compile.
+No module-level value enters a kernel: Numba freezes globals as constants in the compiled code.
 """
 
 from __future__ import annotations
@@ -65,7 +73,8 @@ import weakref
 
 import numba
 import numpy as np
-from numba import prange
+
+from ._kernel_calls import announce_compile, over_threads
 
 from . import rings_step
 from ._compiled import CACHE, Packed
@@ -231,6 +240,14 @@ def _extension(m, k, x, u):
 
 
 @_jit()
+def _cubic(e0, s0, e1, s1, z):
+    """The cubic with values e0, e1 and slopes s0, s1 at 0 and 1, at z."""
+    z2 = z * z
+    z3 = z2 * z
+    return (2 * z3 - 3 * z2 + 1) * e0 + (z3 - 2 * z2 + z) * s0 + (-2 * z3 + 3 * z2) * e1 + (z3 - z2) * s1
+
+
+@_jit()
 def _cubic_peak(e0, s0, e1, s1):
     """Largest value on [0, 1] of the cubic with values e0, e1 and slopes s0, s1 (per unit parameter) at its ends."""
     a, b, c = 6.0 * (e0 - e1) + 3.0 * (s0 + s1), 6.0 * (e1 - e0) - 4.0 * s0 - 2.0 * s1, s0  # p'(s) = a s^2 + b s + c
@@ -243,13 +260,7 @@ def _cubic_peak(e0, s0, e1, s1):
     )
     for z in roots:
         if 0.0 < z < 1.0:
-            value = (
-                (2 * z**3 - 3 * z**2 + 1) * e0
-                + (z**3 - 2 * z**2 + z) * s0
-                + (-2 * z**3 + 3 * z**2) * e1
-                + (z**3 - z**2) * s1
-            )
-            peak = max(peak, value)
+            peak = max(peak, _cubic(e0, s0, e1, s1, z))
     return peak
 
 
@@ -280,47 +291,30 @@ def _network_accelerations(m, b, g, x, u, out, memory):
     dashpots take out."""
     d, n, damped = m.ints[1], m.ints[2], m.ints[3] != 0
     bm = b * (m.inv_mass.shape[0] > 1)  # one row shared by every member, or one per member (integers only:
-    bp = b * (m.par.shape[0] > 1)  # a prange index is unsigned, and b if ... else 0 would unify to a float)
+    bp = b * (m.par.shape[0] > 1)  # an index may be unsigned, and b if ... else 0 would unify to a float)
     par, li, lj, kind = m.par[bp], m.li, m.lj, m.kind
     for c in range(n):
         out[c] = 0.0
     power = 0.0
     L = li.size
-    if m.ints[9]:  # a path (every chain): link k joins site k to site k + 1, the last one perhaps to the support
-        for k in range(L):
-            if k + 1 < n:
-                e = x[k + 1] - x[k]
-                rate = u[k + 1] - u[k] if damped else 0.0
-            else:
-                e = -x[k]
-                rate = -u[k] if damped else 0.0
-            force, elastic = _law(kind[k], par[k, 0], par[k, 1], par[k, 2], e, rate, memory[k] if memory.size else 0.0)
-            if damped:
-                power += (force - elastic) * rate
-            out[k] += force
-            if k + 1 < n:
-                out[k + 1] -= force
-    elif d == 1:
-        for k in range(L):
+    path = m.ints[9] != 0  # a chain: link k joins site k to site k + 1, the last one perhaps to the support
+    for k in range(L):
+        if path:
+            i, j = k, (k + 1 if k + 1 < n else -1)
+        else:
             i, j = li[k], lj[k]
+        length = 1.0
+        if d == 1:
             if j >= 0:
                 e = x[j] - x[i]
                 rate = u[j] - u[i] if damped else 0.0
             else:
                 e = -x[i]
                 rate = -u[i] if damped else 0.0
-            force, elastic = _law(kind[k], par[k, 0], par[k, 1], par[k, 2], e, rate, memory[k] if memory.size else 0.0)
-            if damped:
-                power += (force - elastic) * rate
-            out[i] += force
-            if j >= 0:
-                out[j] -= force
-    else:
-        # The extension as Network.extensions computes it: |b + w| - |b| = (2 b.w + w.w)/(|b + w| + |b|),
-        # from the rest vector b and the relative displacement w of the ends, free of the cancellation of
-        # two lengths of order |b|, plus the prestretch.
-        for k in range(L):
-            i, j = li[k], lj[k]
+        else:
+            # The extension as Network.extensions computes it: |b + w| - |b| = (2 b.w + w.w)/(|b + w| + |b|),
+            # from the rest vector b and the relative displacement w of the ends, free of the cancellation of
+            # two lengths of order |b|, plus the prestretch.
             length2 = 0.0
             stretch = 0.0
             for c in range(d):
@@ -335,9 +329,14 @@ def _network_accelerations(m, b, g, x, u, out, memory):
                     w = (0.0 if j < 0 else x[j * d + c]) - x[i * d + c]
                     du = (0.0 if j < 0 else u[j * d + c]) - u[i * d + c]
                     rate += du * (m.rest_vectors[k, c] + w) / length
-            force, elastic = _law(kind[k], par[k, 0], par[k, 1], par[k, 2], e, rate, memory[k] if memory.size else 0.0)
-            if damped:
-                power += (force - elastic) * rate
+        force, elastic = _law(kind[k], par[k, 0], par[k, 1], par[k, 2], e, rate, memory[k] if memory.size else 0.0)
+        if damped:
+            power += (force - elastic) * rate
+        if d == 1:
+            out[i] += force
+            if j >= 0:
+                out[j] -= force
+        else:
             for c in range(d):
                 w = (0.0 if j < 0 else x[j * d + c]) - x[i * d + c]
                 component = force * (m.rest_vectors[k, c] + w) / length
@@ -419,6 +418,98 @@ def accelerations(packed: Packed, x, u=None, g=9.80665, member=0, memory=None) -
     return out
 
 
+# -- contacts opening and closing --------------------------------------------------------------------------------
+@_jit()
+def _first_zero(e0, s0, e1, s1, start, end):
+    """The first change of sign in (start, end) of the cubic with values e0, e1 and slopes s0, s1 at 0 and 1
+    (found on its monotone pieces by bisection; the point just past it), or 2.0 if it keeps its sign there."""
+    a, b, c = 6.0 * (e0 - e1) + 3.0 * (s0 + s1), 6.0 * (e1 - e0) - 4.0 * s0 - 2.0 * s1, s0  # p'(z) = a z^2 + b z + c
+    cut1, cut2 = end, end  # the turning points inside (start, end), in order
+    if a != 0.0:
+        disc = b * b - 4.0 * a * c
+        if disc > 0.0:
+            r1, r2 = (-b - math.sqrt(disc)) / (2.0 * a), (-b + math.sqrt(disc)) / (2.0 * a)
+            cut1, cut2 = min(r1, r2), max(r1, r2)
+    elif b != 0.0:
+        cut1 = -c / b
+    lo = start
+    v_lo = _cubic(e0, s0, e1, s1, lo)
+    for piece in range(3):
+        hi = cut1 if piece == 0 else (cut2 if piece == 1 else end)
+        if hi <= lo:
+            continue
+        hi = min(hi, end)
+        v_hi = _cubic(e0, s0, e1, s1, hi)
+        if (v_lo > 0.0) != (v_hi > 0.0):
+            for _ in range(60):  # bisection on a monotone piece, to the last bits of z
+                mid = 0.5 * (lo + hi)
+                v_mid = _cubic(e0, s0, e1, s1, mid)
+                if (v_mid > 0.0) == (v_lo > 0.0):
+                    lo, v_lo = mid, v_mid
+                else:
+                    hi = mid
+                if hi - lo <= 1e-15:
+                    break
+            return hi
+        lo, v_lo = hi, v_hi
+    return 2.0
+
+
+@_jit()
+def _switches(m, members, y, N, n, out_value, out_rate):
+    """Each switch (value, rate) of a group's members at its state ``y``, one row per member: zero where a
+    contact's force stops being smooth (its extension, as :func:`_extension`); (1, 0) for a smooth law.
+    Written out: a call per link passing the packed model costs more."""
+    S, d = out_value.shape[1], m.ints[1]
+    for q in range(members.size):
+        o, v = q * n, q * n + N  # displacements and velocities of member q
+        for k in range(S):
+            e, rate = 1.0, 0.0
+            if m.ints[0] == 1:  # the ring-resolved chain: the contact above ring k, with ring k + 1 or the support
+                top, dofs = o + k * m.ints[7] + 1, m.ints[7]
+                if k < S - 1:
+                    e, rate = y[top + dofs - 1] - y[top], y[top + dofs - 1 + N] - y[top + N]
+                elif m.ints[8]:
+                    e, rate = -y[top], -y[top + N]
+            elif m.kind[k] == 0 or m.kind[k] == 4:  # a power law, Hunt-Crossley (not yet Thornton: see the notes)
+                i, j = m.li[k], m.lj[k]
+                if d == 1:
+                    e = (y[o + j] if j >= 0 else 0.0) - y[o + i]
+                    rate = (y[v + j] if j >= 0 else 0.0) - y[v + i]
+                else:
+                    length2, stretch, rate = 0.0, 0.0, 0.0
+                    for c in range(d):
+                        gap = (0.0 if j < 0 else y[o + j * d + c]) - y[o + i * d + c]
+                        length2 += (m.rest_vectors[k, c] + gap) ** 2
+                        stretch += (2.0 * m.rest_vectors[k, c] + gap) * gap
+                    length = math.sqrt(length2)
+                    for c in range(d):
+                        gap = (0.0 if j < 0 else y[o + j * d + c]) - y[o + i * d + c]
+                        du = (0.0 if j < 0 else y[v + j * d + c]) - y[v + i * d + c]
+                        rate += du * (m.rest_vectors[k, c] + gap) / length
+                    e = stretch / (length + m.spans[k]) + m.prestretch[k]
+            out_value[q, k], out_rate[q, k] = e, rate
+
+
+@_jit()
+def _first_switch(value0, rate0, value1, rate1, h, floor):
+    """Where in a step of length ``h`` a switch first changes sign (on the cubic through the values and rates at
+    its ends; within 1e-7 of an end: at that end; not within ``floor`` of zero), a fraction of it; 2.0: none."""
+    first = 2.0
+    for q in range(value0.shape[0]):
+        for k in range(value0.shape[1]):
+            e0, e1 = value0[q, k], value1[q, k]
+            s0, s1 = h * rate0[q, k], h * rate1[q, k]
+            slope = e1 - e0  # p(z) = (1 - z) e0 + z e1 + z (1 - z) ((1 - z)(s0 - slope) - z (s1 - slope)):
+            bend = 0.25 * max(abs(s0 - slope), abs(s1 - slope))
+            if (e0 > 0.0) == (e1 > 0.0) and min(abs(e0), abs(e1)) > bend:
+                continue  # it stays within max|s - slope|/4 of the chord, which keeps its sign: no zero
+            if max(abs(e0), abs(e1)) + bend <= floor:
+                continue  # it stays within the displacements' tolerance of zero (rounding at rest): no matter
+            first = min(first, _first_zero(e0, s0, e1, s1, 1e-7, 1.0 - 1e-7))
+    return first
+
+
 # -- Dormand-Prince 5(4) -----------------------------------------------------------------------------------------
 @_jit()
 def _error_norm(err, y, y_new, atol, rtol):
@@ -442,12 +533,28 @@ def _group_derivative(m, members, g, y, dy, N, n):
 
 
 @_jit()
-def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, out_m):
+def _tableau():
+    """Dormand and Prince's coefficients a_sr of stage s from stage r, the last row the fifth-order weights."""
+    a = np.zeros((7, 6))
+    a[1, 0] = 0.2
+    a[2, 0], a[2, 1] = 3.0 / 40.0, 9.0 / 40.0
+    a[3, 0], a[3, 1], a[3, 2] = 44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0
+    a[4, 0], a[4, 1], a[4, 2], a[4, 3] = 19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0
+    a[5, 0], a[5, 1], a[5, 2], a[5, 3], a[5, 4] = (9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0, 49.0 / 176.0,
+                                                   -5103.0 / 18656.0)  # fmt: skip
+    a[6, 0], a[6, 2], a[6, 3], a[6, 4], a[6, 5] = (35.0 / 384.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0,
+                                                   11.0 / 84.0)  # fmt: skip
+    return a
+
+
+@_jit()
+def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, out_m, locate):
     """The runs ``members`` stepped together (one step size for the group; one member: its own steps).
 
     ``y0`` and ``atol`` are (G, n), the states of the group's members; ``out_x``, ``out_u`` (B, T, K) and ``out_w``
     (B, T) are filled at rows ``members``, ``out_m`` (B, T, links) with the memory of laws that have one.
-    Returns (status, evaluations, steps, rejections, final states (G, n)).
+    ``locate``: steps end where a contact opens or closes (the module notes).  Returns (status, evaluations,
+    steps, rejections, steps cut at a contact, final states (G, n)).
     """
     G, n = y0.shape
     size = G * n
@@ -456,6 +563,7 @@ def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, 
     stages = np.empty((7, size))
     k1, k2, k3, k4, k5, k6, k7 = stages[0], stages[1], stages[2], stages[3], stages[4], stages[5], stages[6]
     y_stage, y_new, err = np.empty(size), np.empty(size), np.empty(size)
+    tableau = _tableau()
     T = t_eval.size
     t_end = t_eval[T - 1]
     t = 0.0
@@ -475,7 +583,14 @@ def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, 
     _group_derivative(m, members, g, y, k1, N, n)
     evaluations = 1
     if j == T:
-        return 0, evaluations, 0, 0, y.reshape(G, n)
+        return 0, evaluations, 0, 0, 0, y.reshape(G, n)
+    S = 0 if not locate else (m.li.size if m.ints[0] == 0 else (m.ints[6] if m.ints[0] == 1 else 0))
+    value0, rate0, value1, rate1 = np.empty((G, S)), np.empty((G, S)), np.empty((G, S)), np.empty((G, S))
+    if S:
+        _switches(m, members, y, N, n, value0, rate0)
+    floor = tolerance[:N].min()  # a switch within the displacements' absolute tolerance of zero is not located
+    cuts = 0
+    h_after = 0.0  # the step a cut step's first trial proposed for after it (0: the last trial was not cut)
     # Initial step (Hairer's HINIT): the first-derivative estimate, then a second-order correction.
     d0, d1 = 0.0, 0.0
     for c in range(size):
@@ -498,32 +613,19 @@ def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, 
     rejected_last = False
     while t < t_end:
         if steps + rejections >= max_steps:
-            return 1, evaluations, steps, rejections, y.reshape(G, n)
+            return 1, evaluations, steps, rejections, cuts, y.reshape(G, n)
         if t + h > t_end:
             h = t_end - t
         if h <= 1e-14 * max(abs(t), t_end):
-            return 3, evaluations, steps, rejections, y.reshape(G, n)
-        for c in range(size):
-            y_stage[c] = y[c] + h * (0.2 * k1[c])
-        _group_derivative(m, members, g, y_stage, k2, N, n)
-        for c in range(size):
-            y_stage[c] = y[c] + h * (3.0 / 40.0 * k1[c] + 9.0 / 40.0 * k2[c])
-        _group_derivative(m, members, g, y_stage, k3, N, n)
-        for c in range(size):
-            y_stage[c] = y[c] + h * (44.0 / 45.0 * k1[c] - 56.0 / 15.0 * k2[c] + 32.0 / 9.0 * k3[c])
-        _group_derivative(m, members, g, y_stage, k4, N, n)
-        for c in range(size):
-            y_stage[c] = y[c] + h * (19372.0 / 6561.0 * k1[c] - 25360.0 / 2187.0 * k2[c] + 64448.0 / 6561.0 * k3[c]
-                                     - 212.0 / 729.0 * k4[c])  # fmt: skip
-        _group_derivative(m, members, g, y_stage, k5, N, n)
-        for c in range(size):
-            y_stage[c] = y[c] + h * (9017.0 / 3168.0 * k1[c] - 355.0 / 33.0 * k2[c] + 46732.0 / 5247.0 * k3[c]
-                                     + 49.0 / 176.0 * k4[c] - 5103.0 / 18656.0 * k5[c])  # fmt: skip
-        _group_derivative(m, members, g, y_stage, k6, N, n)
-        for c in range(size):
-            y_new[c] = y[c] + h * (35.0 / 384.0 * k1[c] + 500.0 / 1113.0 * k3[c] + 125.0 / 192.0 * k4[c]
-                                   - 2187.0 / 6784.0 * k5[c] + 11.0 / 84.0 * k6[c])  # fmt: skip
-        _group_derivative(m, members, g, y_new, k7, N, n)
+            return 3, evaluations, steps, rejections, cuts, y.reshape(G, n)
+        for s in range(1, 7):  # the stages after the first; the last one at the new state (first same as last)
+            target = y_new if s == 6 else y_stage
+            for c in range(size):
+                total = 0.0
+                for r in range(s):
+                    total += tableau[s, r] * stages[r, c]
+                target[c] = y[c] + h * total
+            _group_derivative(m, members, g, target, stages[s], N, n)
         evaluations += 6
         for c in range(size):
             err[c] = h * (71.0 / 57600.0 * k1[c] - 71.0 / 16695.0 * k3[c] + 71.0 / 1920.0 * k4[c]
@@ -535,6 +637,15 @@ def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, 
             rejected_last = True
             continue
         factor = 0.9 * error**-0.2 if error > 0.0 else 10.0
+        if error <= 1.0 and S:
+            _switches(m, members, y_new, N, n, value1, rate1)
+            z = _first_switch(value0, rate0, value1, rate1, h, floor)
+            if z < (0.99 if h_after > 0.0 else 1.0):  # a contact opens or closes inside: end the step there
+                if h_after == 0.0:
+                    h_after = h * min(1.0, max(0.2, factor))
+                h *= z
+                cuts += 1
+                continue
         if error <= 1.0:
             steps += 1
             t_new = t + h
@@ -580,61 +691,63 @@ def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, 
                 factor = min(factor, 1.0)
             rejected_last = False
             h *= min(10.0, max(0.2, factor))
+            if h_after > 0.0:  # a step cut at a contact: the next one as its first trial proposed
+                h = max(h, h_after)
+                h_after = 0.0
+            if S:
+                if n > w:  # a new memory moves the zero of Thornton's unloading curve
+                    _switches(m, members, y, N, n, value0, rate0)
+                else:
+                    value0[:, :] = value1
+                    rate0[:, :] = rate1
             for c in range(size):
                 if not math.isfinite(y[c]):
-                    return 2, evaluations, steps, rejections, y.reshape(G, n)
+                    return 2, evaluations, steps, rejections, cuts, y.reshape(G, n)
         else:
             rejections += 1
             rejected_last = True
             h *= max(0.2, factor)
-    return 0, evaluations, steps, rejections, y.reshape(G, n)
+    return 0, evaluations, steps, rejections, cuts, y.reshape(G, n)
 
 
-@_jit()
-def _dopri5_shared(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, status, stats, final,
-                   out_m):  # fmt: skip
-    members = np.arange(y0.shape[0])
-    code, evaluations, steps, rejections, y = _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x,
-                                                            out_u, out_w, max_steps, out_m)  # fmt: skip
-    for b in range(y0.shape[0]):
-        status[b], stats[b, 0], stats[b, 1], stats[b, 2] = code, evaluations, steps, rejections
-        final[b] = y[b]
-
-
-@_jit()
-def _dopri5_serial(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, status, stats, final,
-                   out_m):  # fmt: skip
-    for b in range(y0.shape[0]):
-        code, evaluations, steps, rejections, y = _dopri5_group(
-            m, np.array([b]), g, y0[b : b + 1], t_eval, rtol, atol[b : b + 1], keep, N, out_x, out_u, out_w, max_steps,
-            out_m,
+@_jit(nogil=True)
+def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, status, stats, final,
+                 out_m, first, last, shared, locate):  # fmt: skip
+    """Runs ``first`` to ``last`` (excluded), each with its own steps, or all of them with one step size
+    (``shared``); without the GIL, so that threads can take disjoint ranges of runs."""
+    if shared:
+        members = np.arange(first, last)
+        code, evaluations, steps, rejections, cuts, y = _dopri5_group(
+            m, members, g, y0[first:last], t_eval, rtol, atol[first:last], keep, N, out_x, out_u, out_w, max_steps,
+            out_m, locate,
         )  # fmt: skip
-        status[b], stats[b, 0], stats[b, 1], stats[b, 2] = code, evaluations, steps, rejections
+        for q in range(members.size):
+            b = first + q
+            status[b], stats[b, 0], stats[b, 1], stats[b, 2], stats[b, 3] = code, evaluations, steps, rejections, cuts
+            final[b] = y[q]
+        return
+    for b in range(first, last):
+        code, evaluations, steps, rejections, cuts, y = _dopri5_group(
+            m, np.array([b]), g, y0[b : b + 1], t_eval, rtol, atol[b : b + 1], keep, N, out_x, out_u, out_w, max_steps,
+            out_m, locate,
+        )  # fmt: skip
+        status[b], stats[b, 0], stats[b, 1], stats[b, 2], stats[b, 3] = code, evaluations, steps, rejections, cuts
         final[b] = y[0]
 
 
-@_jit(parallel=True)
-def _dopri5_parallel(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, status, stats, final,
-                     out_m):  # fmt: skip
-    for b in prange(y0.shape[0]):
-        code, evaluations, steps, rejections, y = _dopri5_group(
-            m, np.array([b]), g, y0[b : b + 1], t_eval, rtol, atol[b : b + 1], keep, N, out_x, out_u, out_w, max_steps,
-            out_m,
-        )  # fmt: skip
-        status[b], stats[b, 0], stats[b, 1], stats[b, 2] = code, evaluations, steps, rejections
-        final[b] = y[0]
-
-
-def dopri5(packed: Packed, y0, t_eval, rtol, atol, keep, g, *, max_steps=10_000_000, parallel=None, shared=False):
+def dopri5(
+    packed: Packed, y0, t_eval, rtol, atol, keep, g, *, max_steps=10_000_000, parallel=None, shared=False, locate=True
+):
     """Integrate B runs (rows of ``y0``, each [x, u, W if damped, memory per link if stateful]) over ``t_eval``
     with the 5(4) pair.
 
     Returns x and u of the coordinates ``keep`` (B, T, K), W (B, T), the memory (B, T, links; links 0 without
-    memory), the final states (B, n), the exit
-    status of each run (0 done, :data:`STATUS` otherwise) and its counts (evaluations, accepted and
-    rejected steps), shape (B, 3).  ``atol`` has one row per run.  Each run takes its own steps, on Numba's
-    threads when ``parallel`` (default: more than one run); ``shared``: the runs take one step size, the
-    error measured over all of them (forward differences between runs then share their steps).
+    memory), the final states (B, n), the exit status of each run (0 done, :data:`STATUS` otherwise) and its
+    counts (evaluations, accepted and rejected steps, trial steps cut where a contact opens or closes), shape
+    (B, 4).  ``atol`` has one row per run.  Each run takes its own steps, on a pool of threads when
+    ``parallel`` (default: more than one run); ``shared``: the runs take one step size, the error measured
+    over all of them (forward differences between runs then share their steps).  ``locate``: each step ends
+    where a contact opens or closes (the module notes); False steps over them, as a plain pair does.
     """
     y0 = np.ascontiguousarray(y0, dtype=float)
     B = y0.shape[0]
@@ -642,14 +755,16 @@ def dopri5(packed: Packed, y0, t_eval, rtol, atol, keep, g, *, max_steps=10_000_
     N = int(packed.ints[2])
     out_x, out_u, out_w = np.empty((B, T, K)), np.empty((B, T, K)), np.zeros((B, T))
     out_m = np.zeros((B, T, y0.shape[1] - 2 * N - int(packed.ints[3] != 0)))
-    status, stats, final = np.zeros(B, dtype=np.int64), np.zeros((B, 3), dtype=np.int64), np.empty_like(y0)
+    status, stats, final = np.zeros(B, dtype=np.int64), np.zeros((B, 4), dtype=np.int64), np.empty_like(y0)
+    args = (packed, float(g), y0, np.ascontiguousarray(t_eval, dtype=float), float(rtol),
+            np.ascontiguousarray(atol, dtype=float), np.ascontiguousarray(keep, dtype=np.int64), N, out_x, out_u, out_w,
+            int(max_steps), status, stats, final, out_m)  # fmt: skip
+    announce_compile(_dopri5_runs, "dopri5", CACHE)
     if shared:
-        kernel = _dopri5_shared
+        _dopri5_runs(*args, 0, B, True, bool(locate))
     else:
-        kernel = _dopri5_parallel if (B > 1 if parallel is None else parallel) else _dopri5_serial
-    kernel(packed, float(g), y0, np.ascontiguousarray(t_eval, dtype=float), float(rtol),
-           np.ascontiguousarray(atol, dtype=float), np.ascontiguousarray(keep, dtype=np.int64), N, out_x, out_u, out_w,
-           int(max_steps), status, stats, final, out_m)  # fmt: skip
+        over_threads(lambda *a: _dopri5_runs(*a, False, bool(locate)), B, B > 1 if parallel is None else parallel,
+                      *args)  # fmt: skip
     return out_x, out_u, out_w, out_m, final, status, stats
 
 
@@ -708,18 +823,11 @@ def _verlet_member(m, b, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, mem
     return 0, x, u
 
 
-@_jit()
-def _verlet_serial(m, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, status, final_x, final_u, memory, out_m):
-    for b in range(x0.shape[0]):
-        code, x, u = _verlet_member(m, b, g, x0[b], u0[b], t_eval, n_steps, dt, keep, out_x[b], out_u[b], memory[b],
-                                    out_m[b])  # fmt: skip
-        status[b] = code
-        final_x[b], final_u[b] = x, u
-
-
-@_jit(parallel=True)
-def _verlet_parallel(m, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, status, final_x, final_u, memory, out_m):
-    for b in prange(x0.shape[0]):
+@_jit(nogil=True)
+def _verlet_runs(m, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, status, final_x, final_u, memory, out_m, first,
+                 last):  # fmt: skip
+    """Runs ``first`` to ``last`` (excluded), one after the other, without the GIL."""
+    for b in range(first, last):
         code, x, u = _verlet_member(m, b, g, x0[b], u0[b], t_eval, n_steps, dt, keep, out_x[b], out_u[b], memory[b],
                                     out_m[b])  # fmt: skip
         status[b] = code
@@ -743,10 +851,11 @@ def verlet(packed: Packed, x0, u0, t_eval, t_end, dt, keep, g, *, parallel=None,
     stateful = memory is not None
     memory = np.array(memory if stateful else np.zeros((B, 0)), dtype=float)  # a copy: the kernel updates it
     out_m = np.zeros((B, T, memory.shape[1]))
-    kernel = _verlet_parallel if (B > 1 if parallel is None else parallel) else _verlet_serial
-    kernel(packed, float(g), x0, u0, np.ascontiguousarray(t_eval, dtype=float), int(n_steps), float(dt),
-           np.ascontiguousarray(keep, dtype=np.int64), out_x, out_u, status, final_x, final_u, memory,
-           out_m)  # fmt: skip
+    announce_compile(_verlet_runs, "verlet", CACHE)
+    over_threads(_verlet_runs, B, B > 1 if parallel is None else parallel, packed, float(g), x0, u0,
+                  np.ascontiguousarray(t_eval, dtype=float), int(n_steps), float(dt),
+                  np.ascontiguousarray(keep, dtype=np.int64), out_x, out_u, status, final_x, final_u, memory,
+                  out_m)  # fmt: skip
     if stateful:
         return out_x, out_u, final_x, final_u, status, dt, n_steps, out_m, memory
     return out_x, out_u, final_x, final_u, status, dt, n_steps

@@ -531,10 +531,10 @@ def sweep(
         groups.setdefault(point.chain_key, []).append(i)
     tasks = [idx[k : k + batch_size] for idx in groups.values() for k in range(0, len(idx), batch_size)]
     options = {"t_end": t_end, "n_samples": n_samples, "method": method, "max_seconds": max_seconds, **solver}
-    _check_work([[points[i] for i in task] for task in tasks], options)
+    seconds = _check_work([[points[i] for i in task] for task in tasks], options)
     results = run_tasks(run_points, [([points[i] for i in task],) for task in tasks], executor, options=options,
                         max_workers=max_workers, progress=progress, sizes=[len(task) for task in tasks], name="sweep",
-                        unit="point")  # fmt: skip
+                        unit="point", seconds=seconds)  # fmt: skip
     rows: list[dict | None] = [None] * len(points)
     for task, result in zip(tasks, results, strict=True):
         for i, row in zip(task, result, strict=True):
@@ -542,11 +542,12 @@ def sweep(
     return rows
 
 
-def _check_work(tasks, options) -> None:
-    """Estimate every task before any starts; refuse the sweep if one would take longer than max_seconds."""
+def _check_work(tasks, options) -> float | None:
+    """Estimate every task before any starts; refuse the sweep if one would take longer than max_seconds.
+    Returns the estimated work of all tasks, s (None when not estimated: no max_seconds)."""
     limit = options["max_seconds"]
     if limit is None:
-        return
+        return None
     limit = float(v.positive("max_seconds", limit, "s"))
     worst, total = None, 0.0
     for points in tasks:
@@ -563,6 +564,7 @@ def _check_work(tasks, options) -> None:
             f"{estimate.describe()}; all {len(tasks)} tasks about {format_duration(total)}; more than max_seconds = "
             f"{limit:g} s. Give a shorter t_end or a larger dt, drop the point, or raise max_seconds"
         )
+    return total if worst is not None else None
 
 
 def write_csv(rows: Iterable[dict], file=None) -> str | None:

@@ -1,0 +1,92 @@
+"""How the compiled kernels are called: on a pool of threads, and with a word on stderr before a long compile.
+
+Plain Python beside :mod:`ringchain.numerics.engine.kernels` (no kernel lives here: Numba keys a cached kernel on
+its own module's file).
+
+- :func:`over_threads` calls a kernel that releases the GIL over ranges of runs on a pool of threads (one
+  compiled kernel serves one run or many: no parallel variant to compile).
+- :func:`announce_compile` prints one line on stderr before a kernel is compiled rather than loaded from
+  the disk cache: ``ringchain: compiling the integrator for this machine, once: about N s; cached in ...``.
+  N is the compile time of that kernel measured on a quiet two-core machine (:data:`COMPILE_SECONDS`),
+  scaled by the load average per core when the machine is busier.
+"""
+
+from __future__ import annotations
+
+import itertools
+import os
+import sys
+
+import numpy as np
+
+#: Seconds to compile each kernel family for the paper's chain on a quiet two-core machine (CPU time of
+#: the cold part of benchmarks/bench_kernels.py, imports excluded); the notice scales them by the load.
+COMPILE_SECONDS = {"dopri5": 20.0, "verlet": 12.0}
+
+_announced: set = set()
+
+
+def threads() -> int:
+    """Threads the kernels may use: Numba's setting (the cores, or ``NUMBA_NUM_THREADS``)."""
+    import numba
+
+    return max(1, int(numba.config.NUMBA_NUM_THREADS))
+
+
+def over_threads(kernel, B, parallel, *args):
+    """Call ``kernel(*args, first, last)`` over the runs 0 to B: in ranges on a pool of threads when
+    ``parallel`` (the kernel releases the GIL; a few ranges per thread, so that a slow run does not hold
+    the others), else at once."""
+    count = min(threads(), B) if parallel else 1
+    if count <= 1:
+        kernel(*args, 0, B)
+        return
+    from concurrent.futures import ThreadPoolExecutor
+
+    edges = np.linspace(0, B, min(B, 4 * count) + 1).round().astype(int)
+    ranges = [(int(a), int(b)) for a, b in itertools.pairwise(edges) if b > a]
+    with ThreadPoolExecutor(count) as pool:
+        for done in [pool.submit(kernel, *args, a, b) for a, b in ranges]:
+            done.result()
+
+
+def will_compile(dispatcher) -> bool:
+    """Whether calling a Numba ``dispatcher`` compiles it: nothing compiled in this process and no fresh
+    entry in its disk cache (a cache written by another version of the kernels' module is stale)."""
+    if dispatcher.signatures:
+        return False
+    cache = getattr(dispatcher, "_cache", None)
+    try:
+        return not cache._cache_file._load_index()
+    except (AttributeError, OSError, EOFError, ValueError):  # no disk cache, or one Numba cannot read
+        return True
+
+
+def load_factor() -> float:
+    """How much slower than a quiet machine this one is now: the load average per core, at least 1."""
+    try:
+        load = os.getloadavg()[0] / (os.cpu_count() or 1)
+    except OSError:  # no load average on this platform
+        load = 1.0
+    return max(1.0, load)
+
+
+def compile_estimate(family: str) -> float:
+    """Seconds a compile of ``family`` ("dopri5", "verlet") takes on this machine now: the quiet figure
+    times :func:`load_factor`."""
+    return COMPILE_SECONDS[family] * load_factor()
+
+
+def compiled() -> int:
+    """How many kernel families this process has compiled (not loaded from the disk cache) so far."""
+    return len(_announced)
+
+
+def announce_compile(dispatcher, family: str, folder) -> None:
+    """One line on stderr when ``dispatcher`` is about to be compiled (once per family and process)."""
+    if family in _announced or not will_compile(dispatcher):
+        return
+    _announced.add(family)
+    where = f"cached in {folder}" if folder else "not cached: the cache folder is disabled or not writable"
+    print(f"ringchain: compiling the integrator for this machine, once: about {compile_estimate(family):.0f} s; "
+          f"{where}", file=sys.stderr, flush=True)  # fmt: skip
