@@ -2,7 +2,7 @@
 
 The kernels (:mod:`.kernels`, :mod:`.rings_step`, :mod:`.rings_kernels`) call one another, so they must agree on
 one cache folder, keyed on all their sources (:data:`KERNEL_MODULES`), and on the one tuple a model is packed
-into (:class:`Packed`); they live here so that no kernel module imports another in a circle.
+into (:class:`Packed`; :class:`PackedRingChain` and :class:`PackedRings` for the other two kinds); they live here so that no kernel module imports another in a circle.
 """
 
 from __future__ import annotations
@@ -13,7 +13,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-__all__ = ["CACHE", "KERNEL_MODULES", "Packed"]
+__all__ = ["CACHE", "KERNEL_MODULES", "Packed", "PackedRingChain", "PackedRings"]
 
 #: The modules whose compiled kernels call one another (the disk cache is keyed on all their sources).
 KERNEL_MODULES = ("_compiled.py", "kernels.py", "rings_step.py", "rings_kernels.py")
@@ -75,3 +75,14 @@ class Packed(NamedTuple):
     coupling: np.ndarray  # (n, n)
     inv_top: np.ndarray  # (n,)
     inv_bottom: np.ndarray  # (n,)
+
+
+# The integrators are compiled once per packed type and take the right-hand side by it (kernels._derivative), so
+# that a chain's run never compiles the ring-resolved chain or the rigid rings, nor theirs the links' laws.  Numba
+# keys its disk cache on the type: each is compiled once.  The two types below have the fields of Packed.
+
+#: A ring-resolved chain packed for the kernels (kind 1): the fields of :class:`Packed`, under a type of its own.
+PackedRingChain = NamedTuple("PackedRingChain", list(Packed.__annotations__.items()))
+
+#: Rigid rings in space packed for the kernels (kind 2): the fields of :class:`Packed`, under a type of its own.
+PackedRings = NamedTuple("PackedRings", list(Packed.__annotations__.items()))

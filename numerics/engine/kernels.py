@@ -73,14 +73,17 @@ import weakref
 
 import numba
 import numpy as np
+from numba.extending import overload
 
 from ._kernel_calls import announce_compile, over_threads
 
 from . import rings_step
-from ._compiled import CACHE, Packed
+from ._compiled import CACHE, Packed, PackedRingChain, PackedRings
 
 __all__ = [
     "Packed",
+    "PackedRingChain",
+    "PackedRings",
     "pack",
     "pack_network",
     "pack_ring_chain",
@@ -110,6 +113,14 @@ if CACHE is not None:
 
 def _jit(**options):
     return numba.njit(cache=CACHE is not None, error_model="numpy", **options)
+
+
+@_jit()
+def _copy(source, target):
+    """target[:] = source, written out (a slice assignment compiles a check of shapes that formats its message:
+    seconds of the cold compile)."""
+    for c in range(source.size):
+        target[c] = source[c]
 
 
 def _empty(*shape, dtype=float):
@@ -162,12 +173,12 @@ def pack_network(net) -> Packed:
                   _empty(0))  # fmt: skip
 
 
-def pack_ring_chain(chain) -> Packed:
-    """The :class:`Packed` form of a :class:`~ringchain.numerics.RingChain`."""
+def pack_ring_chain(chain) -> PackedRingChain:
+    """The :class:`PackedRingChain` form of a :class:`~ringchain.numerics.RingChain`."""
     ring, N, n = chain.ring, chain.n_rings, chain.ring.n_dof
     coupling = -(ring.inverse_mass @ ring.stiffness).T
     ints = np.array([1, 1, N * n, 0, 0, 0, N, n, int(chain.support == "fixed"), 0], dtype=np.int64)
-    return Packed(ints, np.array([chain.K_c, chain.n]), _empty(1, 0), np.atleast_2d(ring.rigid.astype(float)),
+    return PackedRingChain(ints, np.array([chain.K_c, chain.n]), _empty(1, 0), np.atleast_2d(ring.rigid.astype(float)),
                   _empty(0, dtype=np.int64), _empty(0, dtype=np.int64), _empty(0, dtype=np.int64),
                   _empty(1, 0, PARAMETERS), _empty(0, 1), _empty(0), _empty(0),
                   np.ascontiguousarray(coupling), np.ascontiguousarray(ring.inverse_mass[:, 1]),
@@ -175,7 +186,7 @@ def pack_ring_chain(chain) -> Packed:
 
 
 # -- the laws --------------------------------------------------------------------------------------------------
-@_jit(inline="always")
+@_jit()
 def _law(kind, p0, p1, p2, e, rate, memory):
     """(force, elastic force) of one link: the :mod:`ringchain.numerics.laws` of kind ``kind``, parameters p0-p2."""
     if kind == 0:  # PowerLaw: [K delta^n + gamma delta_dot]_+ where engaged (K, n, gamma)
@@ -285,7 +296,6 @@ def _remember(m, members, y, y_new, h, N, n):
 
 
 # -- right-hand sides ----------------------------------------------------------------------------------------
-@_jit(inline="always")
 def _network_accelerations(m, b, g, x, u, out, memory):
     """Accelerations of member ``b`` of a packed network under gravity ``g`` into ``out``; returns the power its
     dashpots take out."""
@@ -349,9 +359,9 @@ def _network_accelerations(m, b, g, x, u, out, memory):
     return power
 
 
-@_jit(inline="always")
-def _ring_accelerations(m, x, out):
-    """Accelerations of the ring-resolved chain without gravity (:meth:`~ringchain.numerics.RingChain.stepper`)."""
+def _ring_chain_accelerations(m, b, g, x, u, out, memory):
+    """Accelerations of the ring-resolved chain under gravity ``g`` (:meth:`~ringchain.numerics.RingChain.stepper`);
+    no dashpot (returns 0.0)."""
     N, n, fixed = m.ints[6], m.ints[7], m.ints[8]
     K_c, exponent = m.floats[0], m.floats[1]
     for r in range(N):
@@ -374,16 +384,6 @@ def _ring_accelerations(m, x, out):
             out[r * n + a] += force * m.inv_top[a]  # pulled up at its top
             if r < N - 1:
                 out[(r + 1) * n + a] -= force * m.inv_bottom[a]  # the ring above pulled down at its bottom
-
-
-@_jit(inline="always")
-def _accelerations(m, b, g, x, u, out, memory):
-    """Accelerations of member ``b`` of either kind of model (the packed kind says which); ``memory`` per link
-    (laws with memory) or empty."""
-    if m.ints[0] == 0:
-        return _network_accelerations(m, b, g, x, u, out, memory)
-    _ring_accelerations(m, x, out)
-    n, N = m.ints[7], m.ints[6]
     rigid = m.gravity[0]
     for r in range(N):
         for a in range(n):
@@ -391,20 +391,72 @@ def _accelerations(m, b, g, x, u, out, memory):
     return 0.0
 
 
-@_jit(inline="always")
-def _derivative(m, b, g, y, dy, N):
-    """dy/dt of the state y = [x (N), u (N), W (dissipated energy, if damped), memory (per link, if stateful)]."""
-    if m.ints[0] == 2:  # rigid rings in space (their own kernels)
-        rings_step.rings_derivative(m, b, g, y, dy, N)
-        return
+def _accelerations(m, b, g, x, u, out, memory):
+    """Accelerations of member ``b`` of a network or of the ring-resolved chain into ``out``; returns the power its
+    dashpots take out.  ``memory`` per link (laws with memory) or empty.  Compiled: chosen by the packed type."""
+
+
+def _group_derivative(m, members, g, y, dy, N, n):
+    """dy/dt of the runs ``members`` stepped together, their states of length n one after the other in ``y``
+    (compiled: chosen by the packed type)."""
+
+
+def _after_step(m, y, G, n):
+    """What a model does to the G states of length n in ``y`` after an accepted step (compiled: by type)."""
+
+
+def _network_group_derivative(m, members, g, y, dy, N, n):
+    """dy/dt of each state [x (N), u (N), W (dissipated energy, if damped), memory (per link, if stateful)]."""
     w = 2 * N + (1 if m.ints[3] else 0)
-    power = _accelerations(m, b, g, y[:N], y[N : 2 * N], dy[N : 2 * N], y[w:])
-    for c in range(N):
-        dy[c] = y[N + c]
-    if w > 2 * N:
-        dy[2 * N] = power
-    for c in range(w, y.size):
-        dy[c] = 0.0  # the memory changes on accepted steps only
+    for q in range(members.size):
+        o = q * n
+        power = _accelerations(m, members[q], g, y[o : o + N], y[o + N : o + 2 * N], dy[o + N : o + 2 * N],
+                               y[o + w : o + n])  # fmt: skip
+        for c in range(N):
+            dy[o + c] = y[o + N + c]
+        if w > 2 * N:
+            dy[o + 2 * N] = power
+        for c in range(o + w, o + n):
+            dy[c] = 0.0  # the memory changes on accepted steps only
+
+
+def _rings_group_derivative(m, members, g, y, dy, N, n):
+    for q in range(members.size):
+        rings_step.rings_derivative(m, members[q], g, y[q * n : (q + 1) * n], dy[q * n : (q + 1) * n], N)
+
+
+def _nothing_after_step(m, y, G, n):
+    return 0
+
+
+def _packed_type(m):
+    return getattr(m, "instance_class", None)
+
+
+# The right-hand side is chosen when a kernel is compiled, by the packed model's type (Packed, PackedRingChain,
+# PackedRings), not by its kind code at run time: a chain's integrator holds neither the ring-resolved chain nor
+# the rigid rings (they were most of its compile), and theirs none of the links' laws.  The chosen function is
+# compiled into the kernel's own call tree, which is kept shallow: Numba optimises and generates machine code
+# again for every compiled function at every level of calls above it (measured: the cold compile of the paper's
+# chain, 67 s with every kind in one kernel and inlined in Numba's IR, 24 s by type, fewer levels less).
+@overload(_accelerations, jit_options=dict(error_model="numpy"))
+def _overload_accelerations(m, b, g, x, u, out, memory):
+    return _ring_chain_accelerations if _packed_type(m) is PackedRingChain else _network_accelerations
+
+
+@overload(_group_derivative, jit_options=dict(error_model="numpy"))
+def _overload_group_derivative(m, members, g, y, dy, N, n):
+    return _rings_group_derivative if _packed_type(m) is PackedRings else _network_group_derivative
+
+
+@overload(_after_step, jit_options=dict(error_model="numpy"))
+def _overload_after_step(m, y, G, n):
+    return rings_step.normalise.py_func if _packed_type(m) is PackedRings else _nothing_after_step
+
+
+@_jit()
+def _accelerations_of(m, b, g, x, u, out, memory):
+    return _accelerations(m, b, g, x, u, out, memory)
 
 
 def accelerations(packed: Packed, x, u=None, g=9.80665, member=0, memory=None) -> np.ndarray:
@@ -414,7 +466,7 @@ def accelerations(packed: Packed, x, u=None, g=9.80665, member=0, memory=None) -
     u = np.zeros_like(x) if u is None else np.ascontiguousarray(u, dtype=float)
     memory = np.zeros(0) if memory is None else np.ascontiguousarray(memory, dtype=float)
     out = np.empty_like(x)
-    _accelerations(packed, member, float(g), x, u, out, memory)
+    _accelerations_of(packed, member, float(g), x, u, out, memory)
     return out
 
 
@@ -523,16 +575,6 @@ def _error_norm(err, y, y_new, atol, rtol):
 
 
 @_jit()
-def _group_derivative(m, members, g, y, dy, N, n):
-    """dy/dt of a group of members stepped together: their states one after the other in ``y``."""
-    if members.size == 1:
-        _derivative(m, members[0], g, y, dy, N)
-        return
-    for q in range(members.size):
-        _derivative(m, members[q], g, y[q * n : (q + 1) * n], dy[q * n : (q + 1) * n], N)
-
-
-@_jit()
 def _tableau():
     """Dormand and Prince's coefficients a_sr of stage s from stage r, the last row the fifth-order weights."""
     a = np.zeros((7, 6))
@@ -548,191 +590,189 @@ def _tableau():
 
 
 @_jit()
-def _dopri5_group(m, members, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, out_m, locate):
-    """The runs ``members`` stepped together (one step size for the group; one member: its own steps).
-
-    ``y0`` and ``atol`` are (G, n), the states of the group's members; ``out_x``, ``out_u`` (B, T, K) and ``out_w``
-    (B, T) are filled at rows ``members``, ``out_m`` (B, T, links) with the memory of laws that have one.
-    ``locate``: steps end where a contact opens or closes (the module notes).  Returns (status, evaluations,
-    steps, rejections, steps cut at a contact, final states (G, n)).
-    """
-    G, n = y0.shape
-    size = G * n
-    y = y0.copy().reshape(size)
-    tolerance = atol.reshape(size)
-    stages = np.empty((7, size))
-    k1, k2, k3, k4, k5, k6, k7 = stages[0], stages[1], stages[2], stages[3], stages[4], stages[5], stages[6]
-    y_stage, y_new, err = np.empty(size), np.empty(size), np.empty(size)
-    tableau = _tableau()
-    T = t_eval.size
-    t_end = t_eval[T - 1]
-    t = 0.0
-    j = 0
-    damped = m.ints[3] != 0
-    w = 2 * N + (1 if damped else 0)
-    K = keep.size
-    while j < T and t_eval[j] <= 0.0:  # samples at the start
-        for q in range(G):
-            b, o = members[q], q * n
-            for c in range(K):
-                out_x[b, j, c], out_u[b, j, c] = y[o + keep[c]], y[o + N + keep[c]]
-            out_w[b, j] = y[o + 2 * N] if damped else 0.0
-            for c in range(n - w):
-                out_m[b, j, c] = y[o + w + c]
-        j += 1
-    _group_derivative(m, members, g, y, k1, N, n)
-    evaluations = 1
-    if j == T:
-        return 0, evaluations, 0, 0, 0, y.reshape(G, n)
-    S = 0 if not locate else (m.li.size if m.ints[0] == 0 else (m.ints[6] if m.ints[0] == 1 else 0))
-    value0, rate0, value1, rate1 = np.empty((G, S)), np.empty((G, S)), np.empty((G, S)), np.empty((G, S))
-    if S:
-        _switches(m, members, y, N, n, value0, rate0)
-    floor = tolerance[:N].min()  # a switch within the displacements' absolute tolerance of zero is not located
-    cuts = 0
-    h_after = 0.0  # the step a cut step's first trial proposed for after it (0: the last trial was not cut)
-    # Initial step (Hairer's HINIT): the first-derivative estimate, then a second-order correction.
-    d0, d1 = 0.0, 0.0
-    for c in range(size):
-        scale = tolerance[c] + rtol * abs(y[c])
-        d0 = max(d0, abs(y[c]) / scale)
-        d1 = max(d1, abs(k1[c]) / scale)
-    h = 1e-6 * t_end if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
-    h = min(h, t_end)
-    for c in range(size):
-        y_stage[c] = y[c] + h * k1[c]
-    _group_derivative(m, members, g, y_stage, k2, N, n)
-    evaluations += 1
-    d2 = 0.0
-    for c in range(size):
-        scale = tolerance[c] + rtol * abs(y[c])
-        d2 = max(d2, abs(k2[c] - k1[c]) / scale / h)
-    h1 = max(1e-6 * h, 1e-3 * h) if max(d1, d2) <= 1e-15 else (0.01 / max(d1, d2)) ** 0.2
-    h = min(100.0 * h, h1, t_end)
-    steps, rejections = 0, 0
-    rejected_last = False
-    while t < t_end:
-        if steps + rejections >= max_steps:
-            return 1, evaluations, steps, rejections, cuts, y.reshape(G, n)
-        if t + h > t_end:
-            h = t_end - t
-        if h <= 1e-14 * max(abs(t), t_end):
-            return 3, evaluations, steps, rejections, cuts, y.reshape(G, n)
-        for s in range(1, 7):  # the stages after the first; the last one at the new state (first same as last)
-            target = y_new if s == 6 else y_stage
-            for c in range(size):
-                total = 0.0
-                for r in range(s):
-                    total += tableau[s, r] * stages[r, c]
-                target[c] = y[c] + h * total
-            _group_derivative(m, members, g, target, stages[s], N, n)
-        evaluations += 6
-        for c in range(size):
-            err[c] = h * (71.0 / 57600.0 * k1[c] - 71.0 / 16695.0 * k3[c] + 71.0 / 1920.0 * k4[c]
-                          - 17253.0 / 339200.0 * k5[c] + 22.0 / 525.0 * k6[c] - 1.0 / 40.0 * k7[c])  # fmt: skip
-        error = _error_norm(err, y, y_new, tolerance, rtol)
-        if not math.isfinite(error):
-            h *= 0.2
-            rejections += 1
-            rejected_last = True
-            continue
-        factor = 0.9 * error**-0.2 if error > 0.0 else 10.0
-        if error <= 1.0 and S:
-            _switches(m, members, y_new, N, n, value1, rate1)
-            z = _first_switch(value0, rate0, value1, rate1, h, floor)
-            if z < (0.99 if h_after > 0.0 else 1.0):  # a contact opens or closes inside: end the step there
-                if h_after == 0.0:
-                    h_after = h * min(1.0, max(0.2, factor))
-                h *= z
-                cuts += 1
-                continue
-        if error <= 1.0:
-            steps += 1
-            t_new = t + h
-            # Samples in (t, t + h]: the continuous extension of the pair (Hairer's contd5).
-            while j < T and t_eval[j] <= t_new * (1.0 + 1e-15):
-                theta = (t_eval[j] - t) / h
-                theta1 = 1.0 - theta
-                for q in range(G):
-                    b, o = members[q], q * n
-                    for c in range(2 * K + (1 if damped else 0)):
-                        if c < K:
-                            r = o + keep[c]
-                        elif c < 2 * K:
-                            r = o + N + keep[c - K]
-                        else:
-                            r = o + 2 * N
-                        dy = y_new[r] - y[r]
-                        bspl = h * k1[r] - dy
-                        r4 = dy - h * k7[r] - bspl
-                        r5 = h * (-12715105075.0 / 11282082432.0 * k1[r] + 87487479700.0 / 32700410799.0 * k3[r]
-                                  - 10690763975.0 / 1880347072.0 * k4[r] + 701980252875.0 / 199316789632.0 * k5[r]
-                                  - 1453857185.0 / 822651844.0 * k6[r] + 69997945.0 / 29380423.0 * k7[r])  # fmt: skip
-                        value = y[r] + theta * (dy + theta1 * (bspl + theta * (r4 + theta1 * r5)))
-                        if c < K:
-                            out_x[b, j, c] = value
-                        elif c < 2 * K:
-                            out_u[b, j, c - K] = value
-                        else:
-                            out_w[b, j] = value
-                    for c in range(n - w):
-                        out_m[b, j, c] = y[o + w + c]  # the memory the step started from (what its stages used)
-                j += 1
-            if n > w and _remember(m, members, y, y_new, h, N, n):  # a peak inside the step: the new memory
-                _group_derivative(m, members, g, y_new, k7, N, n)  # changes the force at y_new (first same as last)
-                evaluations += 1
-            if m.ints[0] == 2:  # rigid rings: unit quaternions after each accepted step
-                rings_step.normalise(m, y_new, G, n)
-            for c in range(size):
-                y[c] = y_new[c]
-                k1[c] = k7[c]  # first same as last
-            t = t_new
-            if rejected_last:
-                factor = min(factor, 1.0)
-            rejected_last = False
-            h *= min(10.0, max(0.2, factor))
-            if h_after > 0.0:  # a step cut at a contact: the next one as its first trial proposed
-                h = max(h, h_after)
-                h_after = 0.0
-            if S:
-                if n > w:  # a new memory moves the zero of Thornton's unloading curve
-                    _switches(m, members, y, N, n, value0, rate0)
-                else:
-                    value0[:, :] = value1
-                    rate0[:, :] = rate1
-            for c in range(size):
-                if not math.isfinite(y[c]):
-                    return 2, evaluations, steps, rejections, cuts, y.reshape(G, n)
-        else:
-            rejections += 1
-            rejected_last = True
-            h *= max(0.2, factor)
-    return 0, evaluations, steps, rejections, cuts, y.reshape(G, n)
+def _finite(y):
+    for c in range(y.size):
+        if not math.isfinite(y[c]):
+            return False
+    return True
 
 
 @_jit(nogil=True)
 def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, status, stats, final,
                  out_m, first, last, shared, locate):  # fmt: skip
-    """Runs ``first`` to ``last`` (excluded), each with its own steps, or all of them with one step size
-    (``shared``); without the GIL, so that threads can take disjoint ranges of runs."""
-    if shared:
-        members = np.arange(first, last)
-        code, evaluations, steps, rejections, cuts, y = _dopri5_group(
-            m, members, g, y0[first:last], t_eval, rtol, atol[first:last], keep, N, out_x, out_u, out_w, max_steps,
-            out_m, locate,
-        )  # fmt: skip
-        for q in range(members.size):
-            b = first + q
+    """Runs ``first`` to ``last`` (excluded) of the states ``y0`` (B, n), each with its own steps, or all of them
+    with one step size, the error measured over all of them (``shared``); without the GIL, so that threads can
+    take disjoint ranges of runs.
+
+    ``atol`` is (B, n); ``out_x``, ``out_u`` (B, T, K) and ``out_w`` (B, T) are filled at the runs' rows, ``out_m``
+    (B, T, links) with the memory of laws that have one; ``status`` (B,), ``stats`` (B, 4: evaluations, steps,
+    rejections, steps cut at a contact) and ``final`` (B, n) too.  ``locate``: steps end where a contact opens
+    or closes (the module notes).  (One kernel, no call level between it and the right-hand side: see
+    _group_derivative.)
+    """
+    group = max(1, last - first) if shared else 1
+    for start in range(first, last, group):
+        members = np.arange(start, min(start + group, last))
+        G, n = members.size, y0.shape[1]
+        size = G * n
+        y = y0[start : start + G].copy().reshape(size)
+        tolerance = atol[start : start + G].copy().reshape(size)
+        stages = np.empty((7, size))
+        k1, k2, k3, k4, k5, k6, k7 = stages[0], stages[1], stages[2], stages[3], stages[4], stages[5], stages[6]
+        y_stage, y_new, err = np.empty(size), np.empty(size), np.empty(size)
+        tableau = _tableau()
+        T = t_eval.size
+        t_end = t_eval[T - 1]
+        t = 0.0
+        j = 0
+        damped = m.ints[3] != 0
+        w = 2 * N + (1 if damped else 0)
+        K = keep.size
+        while j < T and t_eval[j] <= 0.0:  # samples at the start
+            for q in range(G):
+                b, o = members[q], q * n
+                for c in range(K):
+                    out_x[b, j, c], out_u[b, j, c] = y[o + keep[c]], y[o + N + keep[c]]
+                out_w[b, j] = y[o + 2 * N] if damped else 0.0
+                for c in range(n - w):
+                    out_m[b, j, c] = y[o + w + c]
+            j += 1
+        _group_derivative(m, members, g, y, k1, N, n)
+        evaluations = 1
+        code, steps, rejections, cuts = 0, 0, 0, 0
+        if j == T:
+            t = t_end  # every sample at the start: no step to take
+        S = 0 if not locate else (m.li.size if m.ints[0] == 0 else (m.ints[6] if m.ints[0] == 1 else 0))
+        value0, rate0, value1, rate1 = np.empty((G, S)), np.empty((G, S)), np.empty((G, S)), np.empty((G, S))
+        if S:
+            _switches(m, members, y, N, n, value0, rate0)
+        floor = tolerance[0]  # a switch within the displacements' absolute tolerance of zero is not located
+        for c in range(N):
+            floor = min(floor, tolerance[c])
+        cuts = 0
+        h_after = 0.0  # the step a cut step's first trial proposed for after it (0: the last trial was not cut)
+        h = 0.0
+        if j < T:
+            # Initial step (Hairer's HINIT): the first-derivative estimate, then a second-order correction.
+            d0, d1 = 0.0, 0.0
+            for c in range(size):
+                scale = tolerance[c] + rtol * abs(y[c])
+                d0 = max(d0, abs(y[c]) / scale)
+                d1 = max(d1, abs(k1[c]) / scale)
+            h = 1e-6 * t_end if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
+            h = min(h, t_end)
+            for c in range(size):
+                y_stage[c] = y[c] + h * k1[c]
+            _group_derivative(m, members, g, y_stage, k2, N, n)
+            evaluations += 1
+            d2 = 0.0
+            for c in range(size):
+                scale = tolerance[c] + rtol * abs(y[c])
+                d2 = max(d2, abs(k2[c] - k1[c]) / scale / h)
+            h1 = max(1e-6 * h, 1e-3 * h) if max(d1, d2) <= 1e-15 else (0.01 / max(d1, d2)) ** 0.2
+            h = min(100.0 * h, h1, t_end)
+        rejected_last = False
+        while t < t_end:
+            if steps + rejections >= max_steps:
+                code = 1
+                break
+            if t + h > t_end:
+                h = t_end - t
+            if h <= 1e-14 * max(abs(t), t_end):
+                code = 3
+                break
+            for s in range(1, 7):  # the stages after the first; the last one at the new state (first same as last)
+                target = y_new if s == 6 else y_stage
+                for c in range(size):
+                    total = 0.0
+                    for r in range(s):
+                        total += tableau[s, r] * stages[r, c]
+                    target[c] = y[c] + h * total
+                _group_derivative(m, members, g, target, stages[s], N, n)
+            evaluations += 6
+            for c in range(size):
+                err[c] = h * (71.0 / 57600.0 * k1[c] - 71.0 / 16695.0 * k3[c] + 71.0 / 1920.0 * k4[c]
+                              - 17253.0 / 339200.0 * k5[c] + 22.0 / 525.0 * k6[c] - 1.0 / 40.0 * k7[c])  # fmt: skip
+            error = _error_norm(err, y, y_new, tolerance, rtol)
+            if not math.isfinite(error):
+                h *= 0.2
+                rejections += 1
+                rejected_last = True
+                continue
+            factor = 0.9 * error**-0.2 if error > 0.0 else 10.0
+            if error <= 1.0 and S:
+                _switches(m, members, y_new, N, n, value1, rate1)
+                z = _first_switch(value0, rate0, value1, rate1, h, floor)
+                if z < (0.99 if h_after > 0.0 else 1.0):  # a contact opens or closes inside: end the step there
+                    if h_after == 0.0:
+                        h_after = h * min(1.0, max(0.2, factor))
+                    h *= z
+                    cuts += 1
+                    continue
+            if error <= 1.0:
+                steps += 1
+                t_new = t + h
+                # Samples in (t, t + h]: the continuous extension of the pair (Hairer's contd5).
+                while j < T and t_eval[j] <= t_new * (1.0 + 1e-15):
+                    theta = (t_eval[j] - t) / h
+                    theta1 = 1.0 - theta
+                    for q in range(G):
+                        b, o = members[q], q * n
+                        for c in range(2 * K + (1 if damped else 0)):
+                            if c < K:
+                                r = o + keep[c]
+                            elif c < 2 * K:
+                                r = o + N + keep[c - K]
+                            else:
+                                r = o + 2 * N
+                            dy = y_new[r] - y[r]
+                            bspl = h * k1[r] - dy
+                            r4 = dy - h * k7[r] - bspl
+                            r5 = h * (-12715105075.0 / 11282082432.0 * k1[r] + 87487479700.0 / 32700410799.0 * k3[r]
+                                      - 10690763975.0 / 1880347072.0 * k4[r] + 701980252875.0 / 199316789632.0 * k5[r]
+                                      - 1453857185.0 / 822651844.0 * k6[r] + 69997945.0 / 29380423.0 * k7[r])  # fmt: skip
+                            value = y[r] + theta * (dy + theta1 * (bspl + theta * (r4 + theta1 * r5)))
+                            if c < K:
+                                out_x[b, j, c] = value
+                            elif c < 2 * K:
+                                out_u[b, j, c - K] = value
+                            else:
+                                out_w[b, j] = value
+                        for c in range(n - w):
+                            out_m[b, j, c] = y[o + w + c]  # the memory the step started from (what its stages used)
+                    j += 1
+                if n > w and _remember(m, members, y, y_new, h, N, n):  # a peak inside the step: the new memory
+                    _group_derivative(m, members, g, y_new, k7, N, n)  # changes the force at y_new (first same as last)
+                    evaluations += 1
+                _after_step(m, y_new, G, n)
+                for c in range(size):
+                    y[c] = y_new[c]
+                    k1[c] = k7[c]  # first same as last
+                t = t_new
+                if rejected_last:
+                    factor = min(factor, 1.0)
+                rejected_last = False
+                h *= min(10.0, max(0.2, factor))
+                if h_after > 0.0:  # a step cut at a contact: the next one as its first trial proposed
+                    h = max(h, h_after)
+                    h_after = 0.0
+                if S:
+                    if n > w:  # a new memory moves the zero of Thornton's unloading curve
+                        _switches(m, members, y, N, n, value0, rate0)
+                    else:
+                        _copy(value1.reshape(value1.size), value0.reshape(value0.size))
+                        _copy(rate1.reshape(rate1.size), rate0.reshape(rate0.size))
+                if not _finite(y):
+                    code = 2
+                    break
+            else:
+                rejections += 1
+                rejected_last = True
+                h *= max(0.2, factor)
+        for q in range(G):
+            b = start + q
             status[b], stats[b, 0], stats[b, 1], stats[b, 2], stats[b, 3] = code, evaluations, steps, rejections, cuts
-            final[b] = y[q]
-        return
-    for b in range(first, last):
-        code, evaluations, steps, rejections, cuts, y = _dopri5_group(
-            m, np.array([b]), g, y0[b : b + 1], t_eval, rtol, atol[b : b + 1], keep, N, out_x, out_u, out_w, max_steps,
-            out_m, locate,
-        )  # fmt: skip
-        status[b], stats[b, 0], stats[b, 1], stats[b, 2], stats[b, 3] = code, evaluations, steps, rejections, cuts
-        final[b] = y[0]
+            _copy(y[q * n : (q + 1) * n], final[b])
 
 
 def dopri5(
@@ -784,7 +824,7 @@ def _verlet_member(m, b, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, mem
     while j < T and t_eval[j] / dt - 1e-9 <= 0.0:  # samples at the start (step "-1")
         for c in range(keep.size):
             out_x[j, c], out_u[j, c] = x[keep[c]], u0[keep[c]]
-        out_m[j] = memory
+        _copy(memory, out_m[j])
         j += 1
     for k in range(n_steps):
         sampling = j < T and math.ceil(t_eval[j] / dt - 1e-9) - 1 == k
@@ -804,7 +844,7 @@ def _verlet_member(m, b, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, mem
                 u_now = u_half[q] + half * a[q]
                 out_x[j, c] = h00 * x_prev[c] + h10 * dt * u_prev[c] + h01 * x[q] + h11 * dt * u_now
                 out_u[j, c] = (d00 * x_prev[c] + d01 * x[q]) / dt + d10 * u_prev[c] + d11 * u_now
-            out_m[j] = memory
+            _copy(memory, out_m[j])
             j += 1
         for link in range(memory.size):  # the memory after the step, from the new positions
             if m.kind[link] == 3:
@@ -831,7 +871,8 @@ def _verlet_runs(m, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, status, 
         code, x, u = _verlet_member(m, b, g, x0[b], u0[b], t_eval, n_steps, dt, keep, out_x[b], out_u[b], memory[b],
                                     out_m[b])  # fmt: skip
         status[b] = code
-        final_x[b], final_u[b] = x, u
+        _copy(x, final_x[b])
+        _copy(u, final_u[b])
 
 
 def verlet(packed: Packed, x0, u0, t_eval, t_end, dt, keep, g, *, parallel=None, memory=None):

@@ -382,7 +382,7 @@ class RingsDynamics:
     def _packed(self):
         from ringchain.theory import contact_modulus_pair, elliptical_factor_grid
 
-        from ..engine.kernels import PARAMETERS, Packed
+        from ..engine.kernels import PARAMETERS, PackedRings
         from ..engine.rings_kernels import MAX_CONTACTS
 
         model = self.model
@@ -410,12 +410,12 @@ class RingsDynamics:
             nu = np.array([ring.material.nu for ring in model.rings])
             i, j = model.pairs.T
             moduli = np.asarray(contact_modulus_pair(E[i], nu[i], E[j], nu[j]), dtype=float)
-        return Packed(ints, np.array([model.slip_speed, step]), np.zeros((1, 7 * n)), gravity.reshape(1, -1),
+        return PackedRings(ints, np.array([model.slip_speed, step]), np.zeros((1, 7 * n)), gravity.reshape(1, -1),
                       model.pairs[:, 0].copy(), model.pairs[:, 1].copy(), kind, par, warm, moduli, np.zeros(L),
                       np.ascontiguousarray(bodies), table, np.zeros(n))  # fmt: skip
 
     def packed(self):
-        """The :class:`~ringchain.numerics.engine.kernels.Packed` form (kind 2) of the rings, made once per run."""
+        """The :class:`~ringchain.numerics.engine.kernels.PackedRings` form (kind 2) of the rings, made once per run."""
         return self._packed
 
     def state(self, centres, orientations) -> np.ndarray:
