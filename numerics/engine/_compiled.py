@@ -2,7 +2,8 @@
 
 The kernels (:mod:`.kernels`, :mod:`.rings_step`, :mod:`.rings_kernels`) call one another, so they must agree on
 one cache folder, keyed on all their sources (:data:`KERNEL_MODULES`), and on the one tuple a model is packed
-into (:class:`Packed`; :class:`PackedRingChain` and :class:`PackedRings` for the other two kinds); they live here so that no kernel module imports another in a circle.
+into (:class:`Packed`; :class:`PackedRingChain` and :class:`PackedRings` for the other two kinds); they live
+here so that no kernel module imports another in a circle.
 """
 
 from __future__ import annotations

@@ -508,6 +508,7 @@ def ensemble(ring, n_rings, count, *, spread, seed, model="dual-spring", m_eff_r
     run = dict(model=model, m_eff_ratio=m_eff_ratio, speed=speed, dropped=dropped, t_end=t_end, traces=traces,
                n_samples=n_samples, chain_options=chain_options, gravity=gravity, g=g,
                max_energy_drift=energy_limit, **solver)  # fmt: skip
+
     # The ordered chain first, in this process: it checks the solver's options before any worker starts.
     # Its time, per member, gives the members' work (timed again if it compiled the kernels): the job runs here
     # when a pool would save less than it costs to start (run_tasks).
