@@ -29,6 +29,16 @@ cache shared by a group, 0o600 under 077), and never modified in place.
 
 :func:`cache_info` and :func:`clear_cache` (``ringchain cache info`` and
 ``ringchain cache clear``) report on and empty the cache.
+
+Shipped entries.  The package carries the entries of its own source in ``theory/_shipped/``
+(written by ``python -m ringchain.theory._codegen``, one per derivation, named
+``<derivation>-<key of the theory sources alone>.py``, the same checksummed format).  Where the disk cache
+has no valid entry, a shipped one is read if its checksum holds under this installation's full key (the
+theory sources and the SymPy and NumPy versions): a fresh checkout then derives nothing that its own
+version has already derived (the derivations take some 13 s of a cold ``ringchain paper``).  A shipped
+entry written from other sources or versions fails the checksum and the derivation runs, as for a damaged
+cache entry.  They are a cache, not a transcription: ``tests/theory/test_shipped.py`` derives every one
+again and compares the generated source.  With the disk cache disabled nothing is read from them either.
 """
 
 from __future__ import annotations
@@ -47,9 +57,16 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-__all__ = ["Derived", "derived", "cache_dir", "source_key", "sp", "CacheInfo", "cache_info", "clear_cache"]
+__all__ = ["Derived", "derived", "cache_dir", "source_key", "sp", "CacheInfo", "cache_info", "clear_cache",
+           "theory_key", "shipped_path", "ship"]
 
 _PACKAGE_DIR = Path(__file__).resolve().parent
+
+#: Entries shipped with the package (module notes).
+SHIPPED_DIR = _PACKAGE_DIR / "_shipped"
+
+#: Every derivation made by :func:`derived` or :class:`Derived`, by name (the shipped entries are theirs).
+REGISTRY: dict[str, Derived] = {}
 _FUNC_NAME = "_lambdifygenerated"
 
 #: First bytes of a cache entry; the SHA-256 checksum of the entry follows on the same line.
@@ -85,13 +102,24 @@ def _versions() -> tuple[tuple[str, str], ...]:
     return tuple(versions)
 
 
-@functools.cache
-def source_key() -> str:
-    """Hash of every ``.py`` file of the theory package plus the SymPy/NumPy versions."""
+def _sources_digest():
     digest = hashlib.sha256()
     for path in sorted(_PACKAGE_DIR.glob("*.py")):
         digest.update(path.name.encode())
         digest.update(path.read_bytes())
+    return digest
+
+
+@functools.cache
+def theory_key() -> str:
+    """Hash of every ``.py`` file of the theory package (the names of the shipped entries)."""
+    return _sources_digest().hexdigest()[:20]
+
+
+@functools.cache
+def source_key() -> str:
+    """Hash of every ``.py`` file of the theory package plus the SymPy/NumPy versions."""
+    digest = _sources_digest()
     for _, version in _versions():
         digest.update(version.encode())
     return digest.hexdigest()[:20]
@@ -134,13 +162,19 @@ def generate_source(args, expr) -> str:
     """NumPy source of ``expr`` as a function of ``args``, made by :func:`sympy.lambdify`.
 
     The printer writes fully qualified names (``numpy.sqrt``), so the source runs in a
-    namespace holding only the modules it names.
+    namespace holding only the modules it names.  Arguments whose names are not Python names
+    (``\\ell``) become SymPy dummies, numbered by a counter of the process; they are renumbered in
+    order of appearance, so that one derivation always generates the same source.
     """
     from sympy.printing.numpy import NumPyPrinter
 
     printer = NumPyPrinter({"fully_qualified_modules": True, "allow_unknown_functions": False})
     func = sp.lambdify(args, expr, modules="numpy", printer=printer, cse=True, docstring_limit=0)
-    return inspect.getsource(func)
+    source = inspect.getsource(func)
+    dummies = dict.fromkeys(re.findall(r"\b_Dummy_\d+\b", source))
+    for number, dummy in enumerate(dummies):
+        source = re.sub(rf"\b{dummy}\b", f"_dummy_{number}", source)
+    return source
 
 
 class Derived:
@@ -156,6 +190,8 @@ class Derived:
         self.__doc__ = build.__doc__
         self._func: Callable | None = None
         self._lock = threading.Lock()
+        if name is None:  # the package's own derivations (named ones are probes and tests)
+            REGISTRY.setdefault(self.name, self)
 
     def __repr__(self) -> str:
         return f"<Derived {self.name}>"
@@ -192,6 +228,8 @@ class Derived:
     def _load(self) -> Callable:
         path = self.cache_path
         text = None if path is None else _read_entry(path, self.name)
+        if text is None and path is not None and REGISTRY.get(self.name) is self:
+            text = _read_entry(shipped_path(self.name), self.name)
         if text is not None:
             try:
                 return _compile(text, self.name)
@@ -210,6 +248,29 @@ class Derived:
 
     def __call__(self, *args):
         return self.func(*args)
+
+
+def shipped_path(name: str) -> Path:
+    """Where the package ships the entry of derivation ``name`` for its current theory sources."""
+    return SHIPPED_DIR / f"{name}-{theory_key()}.py"
+
+
+def ship() -> list[Path]:
+    """Derive every derivation of the package and write its entry to :data:`SHIPPED_DIR`, removing the
+    entries of other sources; returns the paths written.  Run after changing ``theory/``:
+    ``python -m ringchain.theory._codegen``."""
+    import ringchain.theory  # noqa: F401  (every derivation module, so that REGISTRY is complete)
+
+    written = []
+    for name in sorted(REGISTRY):
+        args, expr = REGISTRY[name].expression()
+        path = shipped_path(name)
+        _write_atomic(path, _entry(name, args, expr, generate_source(args, expr)))
+        written.append(path)
+    for path, _ in _cache_files(SHIPPED_DIR):
+        if path not in written:
+            path.unlink()
+    return written
 
 
 def derived(build: Callable) -> Derived:
@@ -390,3 +451,10 @@ def clear_cache() -> tuple[int, int]:
         removed += 1
         size += nbytes
     return removed, size
+
+
+if __name__ == "__main__":  # python -m ringchain.theory._codegen: refresh the shipped entries
+    from ringchain.theory import _codegen as _package_module  # the package's module, not this __main__ copy
+
+    for written in _package_module.ship():
+        print(written.relative_to(_PACKAGE_DIR.parent))

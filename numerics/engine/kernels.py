@@ -741,70 +741,64 @@ def dopri5(
 
 
 # -- velocity Verlet -----------------------------------------------------------------------------------------------
-@_jit()
-def _verlet_member(m, b, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, memory, out_m):
-    N = x0.size
-    x, u_half = x0.copy(), np.empty(N)
-    a = np.empty(N)
-    x_prev, u_prev = np.empty(keep.size), np.empty(keep.size)
-    _accelerations(m, b, g, x, u0, a, memory)
-    half = 0.5 * dt
-    for c in range(N):
-        u_half[c] = u0[c] + half * a[c]
-    T = t_eval.size
-    j = 0
-    while j < T and t_eval[j] / dt - 1e-9 <= 0.0:  # samples at the start (step "-1")
-        for c in range(keep.size):
-            out_x[j, c], out_u[j, c] = x[keep[c]], u0[keep[c]]
-        _copy(memory, out_m[j])
-        j += 1
-    for k in range(n_steps):
-        sampling = j < T and math.ceil(t_eval[j] / dt - 1e-9) - 1 == k
-        if sampling:
-            for c in range(keep.size):
-                x_prev[c] = x[keep[c]]
-                u_prev[c] = u_half[keep[c]] - half * a[keep[c]]
-        for c in range(N):
-            x[c] += dt * u_half[c]
-        _accelerations(m, b, g, x, u_half, a, memory)  # undamped: the velocities are not read
-        while j < T and math.ceil(t_eval[j] / dt - 1e-9) - 1 == k:
-            s = t_eval[j] / dt - k
-            h00, h10, h01, h11 = 2 * s**3 - 3 * s**2 + 1, s**3 - 2 * s**2 + s, -2 * s**3 + 3 * s**2, s**3 - s**2
-            d00, d10, d01, d11 = 6 * s**2 - 6 * s, 3 * s**2 - 4 * s + 1, -6 * s**2 + 6 * s, 3 * s**2 - 2 * s
-            for c in range(keep.size):
-                q = keep[c]
-                u_now = u_half[q] + half * a[q]
-                out_x[j, c] = h00 * x_prev[c] + h10 * dt * u_prev[c] + h01 * x[q] + h11 * dt * u_now
-                out_u[j, c] = (d00 * x_prev[c] + d01 * x[q]) / dt + d10 * u_prev[c] + d11 * u_now
-            _copy(memory, out_m[j])
-            j += 1
-        for link in range(memory.size):  # the memory after the step, from the new positions
-            if m.kind[link] == 3:
-                e, _ = _extension(m, link, x, u_half)
-                memory[link] = max(memory[link], e)
-        for c in range(N):
-            u_half[c] += dt * a[c]
-        if not math.isfinite(x[0] + u_half[0]):
-            return 2, x, u_half
-    u = np.empty(N)
-    for c in range(N):
-        u[c] = u_half[c] - half * a[c]
-    for c in range(N):
-        if not (math.isfinite(x[c]) and math.isfinite(u[c])):
-            return 2, x, u
-    return 0, x, u
-
-
 @_jit(nogil=True)
 def _verlet_runs(m, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, status, final_x, final_u, memory, out_m, first,
                  last):  # fmt: skip
-    """Runs ``first`` to ``last`` (excluded), one after the other, without the GIL."""
+    """Runs ``first`` to ``last`` (excluded), one after the other, without the GIL (one kernel, as dopri5's)."""
+    N = x0.shape[1]
+    half = 0.5 * dt
+    T = t_eval.size
     for b in range(first, last):
-        code, x, u = _verlet_member(m, b, g, x0[b], u0[b], t_eval, n_steps, dt, keep, out_x[b], out_u[b], memory[b],
-                                    out_m[b])  # fmt: skip
+        x, u_half, a = x0[b].copy(), np.empty(N), np.empty(N)
+        u0b, xs, us, mem, ms = u0[b], out_x[b], out_u[b], memory[b], out_m[b]
+        x_prev, u_prev = np.empty(keep.size), np.empty(keep.size)
+        _accelerations(m, b, g, x, u0b, a, mem)
+        for c in range(N):
+            u_half[c] = u0b[c] + half * a[c]
+        j = 0
+        while j < T and t_eval[j] / dt - 1e-9 <= 0.0:  # samples at the start (step "-1")
+            for c in range(keep.size):
+                xs[j, c], us[j, c] = x[keep[c]], u0b[keep[c]]
+            _copy(mem, ms[j])
+            j += 1
+        code = 0
+        for k in range(n_steps):
+            sampling = j < T and math.ceil(t_eval[j] / dt - 1e-9) - 1 == k
+            if sampling:
+                for c in range(keep.size):
+                    x_prev[c] = x[keep[c]]
+                    u_prev[c] = u_half[keep[c]] - half * a[keep[c]]
+            for c in range(N):
+                x[c] += dt * u_half[c]
+            _accelerations(m, b, g, x, u_half, a, mem)  # undamped: the velocities are not read
+            while j < T and math.ceil(t_eval[j] / dt - 1e-9) - 1 == k:
+                s = t_eval[j] / dt - k
+                h00, h10, h01, h11 = 2 * s**3 - 3 * s**2 + 1, s**3 - 2 * s**2 + s, -2 * s**3 + 3 * s**2, s**3 - s**2
+                d00, d10, d01, d11 = 6 * s**2 - 6 * s, 3 * s**2 - 4 * s + 1, -6 * s**2 + 6 * s, 3 * s**2 - 2 * s
+                for c in range(keep.size):
+                    q = keep[c]
+                    u_now = u_half[q] + half * a[q]
+                    xs[j, c] = h00 * x_prev[c] + h10 * dt * u_prev[c] + h01 * x[q] + h11 * dt * u_now
+                    us[j, c] = (d00 * x_prev[c] + d01 * x[q]) / dt + d10 * u_prev[c] + d11 * u_now
+                _copy(mem, ms[j])
+                j += 1
+            for link in range(mem.size):  # the memory after the step, from the new positions
+                if m.kind[link] == 3:
+                    e, _ = _extension(m, link, x, u_half)
+                    mem[link] = max(mem[link], e)
+            for c in range(N):
+                u_half[c] += dt * a[c]
+            if not math.isfinite(x[0] + u_half[0]):
+                code = 2
+                break
+        if code == 0:  # the velocities at the end, in step with the positions
+            for c in range(N):
+                u_half[c] -= half * a[c]
+            if not _finite(x) or not _finite(u_half):
+                code = 2
         status[b] = code
         _copy(x, final_x[b])
-        _copy(u, final_u[b])
+        _copy(u_half, final_u[b])
 
 
 def verlet(packed: Packed, x0, u0, t_eval, t_end, dt, keep, g, *, parallel=None, memory=None):
