@@ -57,8 +57,19 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-__all__ = ["Derived", "derived", "cache_dir", "source_key", "sp", "CacheInfo", "cache_info", "clear_cache",
-           "theory_key", "shipped_path", "ship"]
+__all__ = [
+    "Derived",
+    "derived",
+    "cache_dir",
+    "source_key",
+    "sp",
+    "CacheInfo",
+    "cache_info",
+    "clear_cache",
+    "theory_key",
+    "shipped_path",
+    "ship",
+]
 
 _PACKAGE_DIR = Path(__file__).resolve().parent
 

@@ -7,7 +7,6 @@ each is derived again here and compared byte for byte with what the generator wr
 from __future__ import annotations
 
 import pytest
-
 import ringchain.theory  # noqa: F401  (every derivation registered)
 from ringchain.theory import _codegen
 
