@@ -21,7 +21,7 @@ import numpy as np
 
 #: Seconds to compile each kernel family for the paper's chain on a quiet two-core machine (CPU time of
 #: the cold part of benchmarks/bench_kernels.py, imports excluded); the notice scales them by the load.
-COMPILE_SECONDS = {"dopri5": 20.0, "verlet": 12.0}
+COMPILE_SECONDS = {"dopri5": 16.0, "verlet": 8.0}
 
 _announced: set = set()
 
@@ -50,16 +50,23 @@ def over_threads(kernel, B, parallel, *args):
             done.result()
 
 
-def will_compile(dispatcher) -> bool:
-    """Whether calling a Numba ``dispatcher`` compiles it: nothing compiled in this process and no fresh
-    entry in its disk cache (a cache written by another version of the kernels' module is stale)."""
-    if dispatcher.signatures:
+def will_compile(dispatcher, args=None) -> bool:
+    """Whether calling a Numba ``dispatcher`` with ``args`` compiles it: no version for their types compiled in
+    this process and none in its disk cache (a cache written by another version of the kernels' module is
+    stale).  Without ``args``: whether it has no version at all."""
+    import numba
+
+    signature = None if args is None else tuple(numba.typeof(a) for a in args)
+    if signature is None and dispatcher.signatures:
+        return False
+    if signature is not None and signature in dispatcher.overloads:
         return False
     cache = getattr(dispatcher, "_cache", None)
     try:
-        return not cache._cache_file._load_index()
+        index = cache._cache_file._load_index()
     except (AttributeError, OSError, EOFError, ValueError):  # no disk cache, or one Numba cannot read
         return True
+    return not index if signature is None else not any(key[0] == signature for key in index)
 
 
 def load_factor() -> float:
@@ -78,15 +85,18 @@ def compile_estimate(family: str) -> float:
 
 
 def compiled() -> int:
-    """How many kernel families this process has compiled (not loaded from the disk cache) so far."""
+    """How many kernels this process has compiled (not loaded from the disk cache) so far, one per family
+    (``"dopri5"``, ``"verlet"``) and kind of model."""
     return len(_announced)
 
 
-def announce_compile(dispatcher, family: str, folder) -> None:
-    """One line on stderr when ``dispatcher`` is about to be compiled (once per family and process)."""
-    if family in _announced or not will_compile(dispatcher):
+def announce_compile(dispatcher, family: str, folder, args=None) -> None:
+    """One line on stderr when ``dispatcher`` is about to be compiled for ``args`` (once per family, kind of
+    model and process: each packed type is compiled on its own)."""
+    key = (family, type(args[0]).__name__ if args else None)
+    if key in _announced or not will_compile(dispatcher, args):
         return
-    _announced.add(family)
+    _announced.add(key)
     where = f"cached in {folder}" if folder else "not cached: the cache folder is disabled or not writable"
     print(f"ringchain: compiling the integrator for this machine, once: about {compile_estimate(family):.0f} s; "
           f"{where}", file=sys.stderr, flush=True)  # fmt: skip

@@ -731,7 +731,7 @@ def dopri5(
     args = (packed, float(g), y0, np.ascontiguousarray(t_eval, dtype=float), float(rtol),
             np.ascontiguousarray(atol, dtype=float), np.ascontiguousarray(keep, dtype=np.int64), N, out_x, out_u, out_w,
             int(max_steps), status, stats, final, out_m)  # fmt: skip
-    announce_compile(_dopri5_runs, "dopri5", CACHE)
+    announce_compile(_dopri5_runs, "dopri5", CACHE, (*args, 0, B, bool(shared), bool(locate)))
     if shared:
         _dopri5_runs(*args, 0, B, True, bool(locate))
     else:
@@ -818,11 +818,25 @@ def verlet(packed: Packed, x0, u0, t_eval, t_end, dt, keep, g, *, parallel=None,
     stateful = memory is not None
     memory = np.array(memory if stateful else np.zeros((B, 0)), dtype=float)  # a copy: the kernel updates it
     out_m = np.zeros((B, T, memory.shape[1]))
-    announce_compile(_verlet_runs, "verlet", CACHE)
-    over_threads(_verlet_runs, B, B > 1 if parallel is None else parallel, packed, float(g), x0, u0,
-                  np.ascontiguousarray(t_eval, dtype=float), int(n_steps), float(dt),
-                  np.ascontiguousarray(keep, dtype=np.int64), out_x, out_u, status, final_x, final_u, memory,
-                  out_m)  # fmt: skip
+    args = (
+        packed,
+        float(g),
+        x0,
+        u0,
+        np.ascontiguousarray(t_eval, dtype=float),
+        int(n_steps),
+        float(dt),
+        np.ascontiguousarray(keep, dtype=np.int64),
+        out_x,
+        out_u,
+        status,
+        final_x,
+        final_u,
+        memory,
+        out_m,
+    )
+    announce_compile(_verlet_runs, "verlet", CACHE, (*args, 0, B))
+    over_threads(_verlet_runs, B, B > 1 if parallel is None else parallel, *args)
     if stateful:
         return out_x, out_u, final_x, final_u, status, dt, n_steps, out_m, memory
     return out_x, out_u, final_x, final_u, status, dt, n_steps

@@ -386,3 +386,21 @@ def test_an_unwritable_cache_folder_still_runs(tmp_path):
     np.testing.assert_array_equal(np.load(tmp_path / "x.npy"), here.x)
     if folder.is_dir():
         assert not any(folder.iterdir())  # nothing was written there
+
+
+def test_a_compile_is_foreseen_per_kind_of_argument():
+    # Each packed type compiles its own integrator: the notice must foresee a compile for a type not seen yet
+    # even when the kernel already has a version for another one.
+    import numba
+
+    from ringchain.numerics.engine._kernel_calls import will_compile
+
+    @numba.njit
+    def twice(x):
+        return 2 * x
+
+    assert will_compile(twice, (np.zeros(2),))
+    twice(np.zeros(2))
+    assert not will_compile(twice, (np.zeros(2),))
+    assert will_compile(twice, (np.zeros(2, dtype=np.int64),))  # another type: a new compile
+    assert not will_compile(twice)  # without arguments: whether any version exists
