@@ -392,7 +392,6 @@ def test_a_compile_is_foreseen_per_kind_of_argument():
     # Each packed type compiles its own integrator: the notice must foresee a compile for a type not seen yet
     # even when the kernel already has a version for another one.
     import numba
-
     from ringchain.numerics.engine._kernel_calls import will_compile
 
     @numba.njit
