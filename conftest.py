@@ -1,7 +1,9 @@
 """Test session setup shared by tests/ and the doctests of the package.
 
 The generated-code cache (and Numba's compiled kernels) is pointed at a fresh directory, so every test
-session runs each derivation from the current source instead of trusting a cache from earlier.
+session compiles the kernels and reads the generated code from the current source instead of trusting a cache
+from earlier: a derivation's code comes from the package's shipped entries (theory/_shipped), which
+tests/theory/test_shipped.py derives again and compares byte for byte, or is derived afresh.
 """
 
 import os
