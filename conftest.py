@@ -53,6 +53,18 @@ def _alias_package_folders() -> None:
 _alias_package_folders()
 
 
+@pytest.fixture(autouse=True)
+def _compile_notices(monkeypatch):
+    """The kernels' compile notice goes to a list, not to stderr: whether a test compiles a kernel depends on
+    which tests its worker ran before, and tests read stderr for their own output.  The notice itself is
+    tested in a fresh process (tests/numerics/engine/test_kernels.py)."""
+    from ringchain.numerics.engine import _kernel_calls
+
+    notices: list[str] = []
+    monkeypatch.setattr(_kernel_calls, "notify", notices.append)
+    return notices
+
+
 #: The background build of the book (tests/book/building.py) and its process, kept for pytest_unconfigure.
 _BOOK_BUILD = pytest.StashKey[tuple]()
 

@@ -98,5 +98,10 @@ def announce_compile(dispatcher, family: str, folder, args=None) -> None:
         return
     _announced.add(key)
     where = f"cached in {folder}" if folder else "not cached: the cache folder is disabled or not writable"
-    print(f"ringchain: compiling the integrator for this machine, once: about {compile_estimate(family):.0f} s; "
-          f"{where}", file=sys.stderr, flush=True)  # fmt: skip
+    notify(f"ringchain: compiling the integrator for this machine, once: about {compile_estimate(family):.0f} s; "
+           f"{where}")  # fmt: skip
+
+
+def notify(line: str) -> None:
+    """Print ``line`` on stderr at once (the compile notice's one way out)."""
+    print(line, file=sys.stderr, flush=True)
