@@ -581,6 +581,11 @@ def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max
             floor = min(floor, tolerance[c])
         cuts = 0
         h_after = 0.0  # the step a cut step's first trial proposed for after it (0: the last trial was not cut)
+        # Guards (without them a sheet struck at a point underflowed its step): at most 3 cuts of one step, and a
+        # step that starts where the last one was cut steps over a switch in its first 1 % (the same contact
+        # grazing back across zero: cut after cut at the start, the steps shrank to nothing).
+        tries = 0
+        after_cut = False
         h = 0.0
         if j < T:
             # Initial step (Hairer's HINIT): the first-derivative estimate, then a second-order correction.
@@ -633,11 +638,12 @@ def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max
             if error <= 1.0 and S:
                 _switches(m, members, y_new, N, n, value1, rate1)
                 z = _first_switch(value0, rate0, value1, rate1, h, floor)
-                if z < (0.99 if h_after > 0.0 else 1.0):  # a contact opens or closes inside: end the step there
+                if (0.01 if after_cut else 0.0) < z < (0.99 if h_after > 0.0 else 1.0) and tries < 3:
                     if h_after == 0.0:
                         h_after = h * min(1.0, max(0.2, factor))
                     h *= z
                     cuts += 1
+                    tries += 1
                     continue
             if error <= 1.0:
                 steps += 1
@@ -685,6 +691,8 @@ def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max
                     factor = min(factor, 1.0)
                 rejected_last = False
                 h *= min(10.0, max(0.2, factor))
+                tries = 0
+                after_cut = h_after > 0.0
                 if h_after > 0.0:  # a step cut at a contact: the next one as its first trial proposed
                     h = max(h, h_after)
                     h_after = 0.0

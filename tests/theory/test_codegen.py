@@ -64,12 +64,36 @@ def test_disk_cache_round_trip(tmp_path):
         from ringchain.theory import hertz_stiffness
         print(repr(float(hertz_stiffness(22.5e-3, 2.5e-3, 193e9, 0.29, 1.3))), 'sympy' in sys.modules)
     """
+    # Cold: the package's shipped entry where it was written under this SymPy and NumPy (theory/_shipped,
+    # tests/theory/test_shipped.py), else derived with SymPy and stored ...
+    name = "elliptical._stiffness_elliptical"
+    shipped = _codegen._read_entry(_codegen.shipped_path(name), name) is not None
     first = _run(code, tmp_path).split()
-    assert first[1] == "True"  # cold: derived with SymPy ...
-    assert any(p.name.startswith("elliptical._stiffness_elliptical-") for p in tmp_path.iterdir())
+    assert first[1] == str(not shipped)
+    assert any(p.name.startswith(f"{name}-") for p in tmp_path.iterdir()) != shipped
     second = _run(code, tmp_path).split()
-    assert second[1] == "False"  # ... warm: loaded from the cache without SymPy
+    assert second[1] == "False"  # ... warm: loaded without SymPy
     assert first[0] == second[0]  # bit-identical
+
+
+def test_a_derivation_is_stored_and_read_back_without_sympy(tmp_path):
+    # The disk cache's own round trip, whatever is shipped: a derivation the package does not ship.
+    code = """
+        import sympy as sp
+        from ringchain.theory import _codegen
+        x = sp.Symbol("x")
+        print(repr(float(_codegen.Derived(lambda: ((x,), sp.sqrt(x) / 3), name="probe.root")(2.0))))
+    """
+    first = _run(code, tmp_path).split()
+    assert any(p.name.startswith("probe.root-") for p in tmp_path.iterdir())
+    warm = """
+        import sys
+        from ringchain.theory import _codegen
+        print(repr(float(_codegen.Derived(lambda: 1 / 0, name="probe.root")(2.0))), 'sympy' in sys.modules)
+    """
+    second = _run(warm, tmp_path).split()  # a derivation that would fail: the value comes from the disk
+    assert second == [first[0], "False"]
+    assert float(first[0]) == pytest.approx(2.0**0.5 / 3, rel=1e-15)  # sqrt(2)/3 to rounding
 
 
 def _square(name="probe"):
