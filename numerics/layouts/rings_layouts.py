@@ -179,8 +179,11 @@ def tilted_chain_layout(n_rings: int, ring: Ring, *, tilt: float, offset: float,
     from ..contact.tori import torus_contacts
 
     ring = _check_ring(ring)
-    tilt = float(v.in_range("tilt", tilt, 0.0, 0.2, closed_low=True))
-    offset = float(v.in_range("offset", offset, 0.0, ring.r, closed_low=True))
+    tilt, offset = float(v.as_float("tilt", tilt)), float(v.as_float("offset", offset))
+    if not 0.0 <= tilt <= 0.2:
+        raise ValueError(f"tilt must lie in [0, 0.2] rad, got {tilt:g} rad")
+    if not 0.0 <= offset <= ring.r:
+        raise ValueError(f"offset must lie in [0, r] = [0, {ring.r:g}] m, got {offset:g} m")
     centres, orientations, links = chain_layout(n_rings, ring)
     rng = np.random.default_rng(v.integer("seed", seed))
     n = len(centres)

@@ -122,9 +122,11 @@ def test_a_tilted_chain_struck_along_its_axis_turns_and_friction_turns_it_less()
         sim = simulate(rings, t[-1], impact_velocity=0.5, gravity=False, t_eval=t, rtol=1e-9)
         energy = sim.energy()
         impact = energy.total[0]
-        # The budget with the friction loss closes to 1e-6 of the impact energy (the Hertz law's drift, measured
-        # 2e-7 in test_rings_dynamics, and the integration at rtol 1e-9).
-        assert np.ptp(energy.total) <= 1e-6 * impact
+        # The budget with the friction loss closes to 1e-5 of the impact energy: the Hertz law takes K_c from the
+        # curvatures at each contact, which change with the pose, so its force is not exactly the gradient of its
+        # energy (test_rings_dynamics); tilted rings slide over more curvature than rattling ones, measured 1.5e-6
+        # here and 4e-6 on the chapter's 16 rings, the integration at rtol 1e-9 adding less than 1e-8.
+        assert np.ptp(energy.total) <= 1e-5 * impact
         rotation[mu] = energy.rotational[-1] / impact
     assert rotation[0.0] > 1e-2  # per cent of the energy, where the perfect chain has none to round-off (1e-29)
     assert rotation[0.3] < rotation[0.0]
