@@ -13,6 +13,8 @@ Layouts
     The paper's chain in 3D: centres on the z axis, ring 0 at the bottom (the struck end), a = 2(R - r)
     apart (neighbours just touching, Eq. (8)'s spacing), each ring's plane turned 90 degrees about z from
     its neighbour's (the paper's contact angle).
+:func:`tilted_chain_layout`
+    The same chain with each ring tilted and shifted a little at random (seeded), neighbours just touching.
 :func:`mail_layout`
     European 4-in-1 chain mail in the vertical xz plane (geometry in :func:`mail_geometry`).
 :func:`pam_layout`
@@ -33,6 +35,7 @@ from ringchain.theory import _validate as v
 
 __all__ = [
     "chain_layout",
+    "tilted_chain_layout",
     "mail_layout",
     "mail_geometry",
     "pam_layout",
@@ -141,6 +144,62 @@ def chain_layout(n_rings: int, ring: Ring, *, spacing: float | None = None):
     odd = quaternion_product(quaternion_about([0.0, 0.0, 1.0], np.pi / 2), even)
     orientations = np.where((np.arange(n) % 2 == 0)[:, None], even, odd)
     links = np.stack([np.arange(n - 1), np.arange(1, n)], axis=1)
+    return centres, orientations, links
+
+
+def tilted_chain_layout(n_rings: int, ring: Ring, *, tilt: float, offset: float, seed: int):
+    """The chain of :func:`chain_layout` with each ring tilted and shifted a little at random, neighbours just touching.
+
+    Each ring turns by an angle drawn uniformly from [-tilt, tilt] about an axis drawn uniformly on the
+    sphere, and its centre moves across the chain (x and y) by amounts drawn uniformly from [-offset,
+    offset]; then, from ring 1 up, each ring moves along z until its tube just touches the ring below (the
+    tube gap of the pair, the least distance of their centre circles less 2r, is zero to 1e-13 m), so that a
+    chain struck along its axis starts with no force and no slack, as the straight chain does.
+
+    Parameters
+    ----------
+    n_rings : int
+        Number of rings, at least 2.
+    ring : ringchain.theory.Ring
+        The rings' geometry (R, r in m).
+    tilt : float
+        Largest tilt, rad, in [0, 0.2] (the rings stay linked with their neighbours only).
+    offset : float
+        Largest sideways offset of a centre, m, in [0, r].
+    seed : int
+        Seed of :func:`numpy.random.default_rng`.
+
+    Returns
+    -------
+    centres, orientations, links
+        As :func:`chain_layout`; with ``tilt = offset = 0`` its straight chain.
+    """
+    from scipy.optimize import brentq
+
+    from ..contact.tori import torus_contacts
+
+    ring = _check_ring(ring)
+    tilt, offset = float(v.as_float("tilt", tilt)), float(v.as_float("offset", offset))
+    if not 0.0 <= tilt <= 0.2:
+        raise ValueError(f"tilt must lie in [0, 0.2] rad, got {tilt:g} rad")
+    if not 0.0 <= offset <= ring.r:
+        raise ValueError(f"offset must lie in [0, r] = [0, {ring.r:g}] m, got {offset:g} m")
+    centres, orientations, links = chain_layout(n_rings, ring)
+    rng = np.random.default_rng(v.integer("seed", seed))
+    n = len(centres)
+    axes = rng.standard_normal((n, 3))
+    orientations = quaternion_product(quaternion_about(axes, tilt * rng.uniform(-1.0, 1.0, n)), orientations)
+    centres[:, :2] += offset * rng.uniform(-1.0, 1.0, (n, 2))
+    for k in range(1, n):
+
+        def gap(z, k=k):
+            centre = np.array([centres[k, 0], centres[k, 1], z])
+            return torus_contacts(centres[k - 1], orientations[k - 1], ring, centre, orientations[k], ring,
+                                  margin=np.inf).gap.min()  # fmt: skip
+
+        below = centres[k - 1, 2]
+        centres[k, 2] = brentq(gap, below + 0.8 * ring.spacing, below + 1.2 * ring.spacing, xtol=1e-13)
+    check_links(centres, orientations, ring, links)
     return centres, orientations, links
 
 
