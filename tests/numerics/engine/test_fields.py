@@ -45,15 +45,15 @@ def grid(law, periodic):
     for dr, dc in ((0, 1), (1, 0)):
         r2, c2 = r + dr, c + dc
         inside = (r2 < n) & (c2 < n)
-        i.append(np.arange(n * n)), anchor.append(positions + [dc * a, dr * a])
+        i.append(np.arange(n * n)), anchor.append(positions + np.array([dc * a, dr * a]))
         j.append(np.where(inside, (r2 % n) * n + c2 % n, (r2 % n) * n + c2 % n if periodic else ANCHOR))
         shift.append(np.where(inside[:, None] | (not periodic), 0.0, [dc * n * a, dr * n * a]))
     i, j, anchor, shift = (np.concatenate(p) for p in (i, j, anchor, shift))
     half = i.size // 2
     parts = [slice(0, half), slice(half, None)]
     other = laws.PowerLaw(4.9e6, 1.11, 0.01)
-    sets = [Links(i[s], j[s], p, anchor=anchor[s], shift=shift[s], prestretch=2e-6) for s, p in zip(parts, (law, other),
-                                                                                                  strict=True)]  # fmt: skip
+    sets = [Links(i[s], j[s], p, anchor=anchor[s], shift=shift[s], prestretch=2e-6)
+            for s, p in zip(parts, (law, other), strict=True)]  # fmt: skip
     return Network(np.full(n * n, 3e-3), sets, weight_mass=np.full(n * n, 8e-3), dim=2, positions=positions)
 
 
