@@ -20,7 +20,7 @@ kinetic energy sum m u^2/2 and the work of gravity g sum m_g (z - z_0) from the 
 
 Samples are split over a pool of threads (the kernels release the GIL).  Kernels are small and few (one
 per idea), compiled on first use and cached on disk with the engine's other kernels
-(:data:`~ringchain.numerics.engine._compiled.CACHE`); none calls a kernel of another module.
+(:func:`~ringchain.numerics.engine._compiled.jit`); none calls a kernel of another module.
 """
 
 from __future__ import annotations
@@ -28,10 +28,9 @@ from __future__ import annotations
 import math
 from typing import NamedTuple
 
-import numba
 import numpy as np
 
-from ._compiled import CACHE
+from ._compiled import jit
 from ._kernel_calls import over_threads
 from .packing import LAW_KINDS, pack
 
@@ -40,16 +39,8 @@ __all__ = ["Fields", "compiles", "fields"]
 #: Samples x links below which the kernels run on the calling thread (a pool costs more than it saves).
 _THREADED_WORK = 200_000
 
-_previous_cache_dir = numba.config.CACHE_DIR
-if CACHE is not None:
-    numba.config.CACHE_DIR = CACHE  # read when each kernel below is decorated; restored at the end of the module
 
-
-def _jit(**options):
-    return numba.njit(cache=CACHE is not None, error_model="numpy", **options)
-
-
-@_jit()
+@jit()
 def _law(kind, p0, p1, p2, e, rate, memory):
     """(force, elastic energy) of one link of law ``kind`` (parameters p0-p2) at extension ``e`` and its rate;
     the energy of kind 3 (Thornton) is left to NumPy (0 here)."""
@@ -74,7 +65,7 @@ def _law(kind, p0, p1, p2, e, rate, memory):
     return max(force, 0.0), elastic * e / (p1 + 1.0)
 
 
-@_jit(nogil=True)
+@jit(nogil=True)
 def _links(m, bp, x, u, memory, links, ci, cj, damped, force, stored, first, last):
     """Forces of ``links`` into ``force`` (T, n; width 0: none) and the elastic energy of every link, summed
     as contact (kinds 0, 3, 4) and bending (1, 2), into ``stored`` (T, 2; rows 0: none), samples first to last.
@@ -112,7 +103,7 @@ def _links(m, bp, x, u, memory, links, ci, cj, damped, force, stored, first, las
                 stored[t, 1 if m.kind[k] == 1 or m.kind[k] == 2 else 0] += energy
 
 
-@_jit(nogil=True)
+@jit(nogil=True)
 def _motion(x, u, mass, weight, d, out, first, last):
     """Kinetic energy sum m u^2/2 and gravity's sum m_g (z - z_0) per unit g into ``out`` (T, 2), samples first to
     last; ``mass`` per coordinate, ``weight`` per site, z the last component."""
@@ -221,6 +212,3 @@ def fields(network, x, u=None, links=None, sites=None, memory=None, g=0.0, energ
             stored[:, 0] += np.sum(law.energy(e, memory=memory[:, index]), axis=-1)
             plastic = plastic + np.sum(law.plastic_work(e, memory=memory[:, index]), axis=-1)
     return Fields(force, stored[:, 0], stored[:, 1], motion[:, 0], g * motion[:, 1], plastic)
-
-
-numba.config.CACHE_DIR = _previous_cache_dir

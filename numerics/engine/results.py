@@ -9,7 +9,9 @@ r"""What a run returns: times, states, and the forces and energies derived from 
   ``contact_force``, ``sensor_force`` and the sensor helpers of :mod:`~ringchain.numerics.signals`.
 
 A result holds the states of every site, or of the sites a run was asked to record (the
-sensors' rings of a long chain); forces are computed from the recorded states when asked for.
+sensors' rings of a long chain); forces are computed from the recorded states when asked for:
+for a network in two or three dimensions (a sheet) the link forces and the energies in one
+compiled pass over the samples (:mod:`.fields`), for a chain by the network's NumPy slices.
 The chain's views go through the chain's own index maps (``contact_links``,
 ``sensor_links``...), so this module knows nothing of how a chain is laid out.
 """
