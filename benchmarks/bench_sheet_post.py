@@ -7,7 +7,8 @@ shared; the load average is printed before and after):
 
 - ``run``: :func:`ringchain.numerics.simulate` alone (the integration, warm kernels);
 - ``link_force``, ``energy``: the run's link forces and energy budget, each on a fresh result, and ``both`` on
-  one fresh result (what the command does: one compiled pass gives both, :mod:`ringchain.numerics.engine.fields`);
+  one fresh result (what the command does: one compiled pass gives both, :mod:`ringchain.numerics.engine.fields`),
+  and ``both, NumPy``: the same by the NumPy reference (the path before the compiled fields), in the same process;
 - ``file``: :meth:`~ringchain.numerics.SheetSimulation.to_netcdf` with the forces and energies already made;
 - ``command``: ``ringchain sheet --size 100x100 --pretension 2 --m-eff-ratio 0.37 --impact-velocity 0.5
   --t-end 2e-3 --out FILE`` in this process (building the sheet, the run, forces, energies, the file).
@@ -20,10 +21,15 @@ Measured (2-core machine shared with three other sessions; the load average stat
 - before (the fields in NumPy), load average 2.0-4.1: run 20.2 s, link_force 0.75 s, energy 0.73 s, file
   1.15 s: the rest 2.62 s = 0.13x the run (total 1.13x); the command 21.9 s.  (The run took 5.5 s when the issue
   was filed; the integrator now ends a step at every contact that opens or closes, 20200 links here.)
-- after (compiled fields), load average 4.9-5.2: run 25.7 s, link_force 0.39 s, energy 0.38 s (each computes
-  both in one pass), file 0.92 s: the rest at most 1.69 s = 0.07x the run (total 1.07x); the command 28.7 s.
-  Cold compile of the fields (``--compile``): 5.7 s wall at load 4.9 (2.6 s of processor time), 39 ms to load
-  them from the disk cache in a new process.
+- after (compiled fields), load average 4.7-8.2 (the run also slower): run 35.9 s, link_force 0.67 s, energy
+  0.54 s, both 0.60 s, file 1.18 s: the rest 1.78 s = 0.05x the run (total 1.05x); the command 33.9 s.
+  Again at load 8.1-8.6: run 40.2 s, both 0.69 s against 4.59 s by NumPy in the same process (6.7x), file
+  1.36 s: the rest 2.05 s = 0.05x (total 1.05x); the command 45.2 s.  On a machine at load 4 (processor time,
+  forces and energies of recorded states without a run): 55-66 ns per link and sample, 0.23 s here, and the
+  file 0.50 s of processor time (0.28 s of it fixed: its 32 variables), so that a run of 5.5 s would have
+  about 1.0 s after it (1.2x).
+- Cold compile of the fields (``--compile``): 5.4-5.7 s wall at load 4.7-4.9 (2.6 s of processor time);
+  39 ms to load them from the disk cache in a new process.
 
 Run: ``python benchmarks/bench_sheet_post.py [--size 100] [--repeat 3] [--compile]``.
 """
@@ -118,6 +124,7 @@ def main() -> None:
         times["link_force"] = best(args.repeat, lambda: run_copy(result), lambda r: r.link_force)
         times["energy"] = best(args.repeat, lambda: run_copy(result), lambda r: r.energy())
         times["both"] = best(args.repeat, lambda: run_copy(result), lambda r: (r.link_force, r.energy()))
+        times["both, NumPy"] = best(args.repeat, lambda: result, numpy_fields)
         result.link_force, result.energy()
         path = Path(folder) / "run.nc"
         times["file"] = best(args.repeat, lambda: result, lambda r: r.to_netcdf(path))
@@ -127,11 +134,18 @@ def main() -> None:
         times["command"] = best(args.repeat, lambda: None, lambda _: quiet(ringchain, options))
     rest = times["both"] + times["file"]
     for name, seconds in times.items():
-        print(f"{name:>10}: {seconds:6.2f} s")
+        print(f"{name:>12}: {seconds:6.2f} s")
     print(f"the rest (link_force and energy of one run, file) {rest:.2f} s = {rest / times['run']:.2f}x the run; total "
           f"{(times['run'] + rest) / times['run']:.2f}x the run (bound 1.3x); the command {times['command']:.2f} s = "
           f"{times['command'] / times['run']:.2f}x the run")  # fmt: skip
     print(f"load average {load()}")
+
+
+def numpy_fields(result):
+    """The link forces and energies by the NumPy reference (Network.link_forces, Network.energy): the path before."""
+    net = result.network
+    net.link_forces(result.x, result.u)
+    net.energy(result.x, result.u, result.x[:1], result.g, result.dissipated)
 
 
 def run_copy(result):
