@@ -14,7 +14,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-__all__ = ["CACHE", "KERNEL_MODULES", "Packed", "PackedRingChain", "PackedRings"]
+__all__ = ["CACHE", "KERNEL_MODULES", "Packed", "PackedRingChain", "PackedRings", "jit"]
 
 #: The modules whose compiled kernels call one another (the disk cache is keyed on all their sources).
 KERNEL_MODULES = ("_compiled.py", "kernels.py", "rings_step.py", "rings_kernels.py")
@@ -56,6 +56,24 @@ def _sources_key() -> str:
 
 #: Where compiled kernels are cached (None: compiled in every process).
 CACHE = _cache_folder()
+
+
+def jit(**options):
+    """``numba.njit`` cached on disk in :data:`CACHE` (compiled in every process where it is None), with NumPy's
+    error model; Numba reads its cache folder when a kernel is decorated, so the folder is set for that moment
+    only."""
+    import numba
+
+    def decorate(function):
+        previous = numba.config.CACHE_DIR
+        if CACHE is not None:
+            numba.config.CACHE_DIR = CACHE
+        try:
+            return numba.njit(cache=CACHE is not None, error_model="numpy", **options)(function)
+        finally:
+            numba.config.CACHE_DIR = previous
+
+    return decorate
 
 
 class Packed(NamedTuple):

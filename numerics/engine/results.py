@@ -9,7 +9,9 @@ r"""What a run returns: times, states, and the forces and energies derived from 
   ``contact_force``, ``sensor_force`` and the sensor helpers of :mod:`~ringchain.numerics.signals`.
 
 A result holds the states of every site, or of the sites a run was asked to record (the
-sensors' rings of a long chain); forces are computed from the recorded states when asked for.
+sensors' rings of a long chain); forces are computed from the recorded states when asked for:
+for a network in two or three dimensions (a sheet) the link forces and the energies in one
+compiled pass over the samples (:mod:`.fields`), for a chain by the network's NumPy slices.
 The chain's views go through the chain's own index maps (``contact_links``,
 ``sensor_links``...), so this module knows nothing of how a chain is laid out.
 """
@@ -101,7 +103,26 @@ class NetworkSimulation:
     @functools.cached_property
     def link_force(self) -> np.ndarray:
         """Force of each link (:attr:`links`), N, positive in tension; shape (..., T, n_links)."""
+        if self._fields is not None:
+            return self._fields.force
         return self.network.link_forces(self.x, self.u, self.links, self.sites, memory=self.memory)
+
+    @functools.cached_property
+    def _fields(self):
+        """A network in two or three dimensions (a sheet): its link forces and, with every site recorded, its
+        energies, compiled in one pass over the samples (:mod:`.fields`); None otherwise (a chain's NumPy slices)."""
+        from . import fields
+
+        if self.network.dim == 1 or not fields.compiles(self.network):  # a chain: NumPy slices, no compile
+            return None
+        options = dict(links=self.links, sites=self.sites, g=self.g, energies=self.sites is None)
+        if self.x.ndim == 2:
+            return fields.fields(self.network, self.x, self.u, memory=self.memory, **options)
+        runs = [fields.fields(self.network, self.x[b], self.u[b], memory=None if self.memory is None else
+                              self.memory[b], member=b if self.network.batch_shape else 0, **options)
+                for b in range(self.x.shape[0])]  # fmt: skip
+        parts = zip(*runs, strict=True)
+        return fields.Fields(*(np.stack(part) if isinstance(part[0], np.ndarray) else part[0] for part in parts))
 
     def _require_all(self, what: str) -> None:
         if self.sites is not None:
@@ -121,6 +142,10 @@ class NetworkSimulation:
     def energy(self) -> EnergyBudget:
         """Kinetic, contact, bending, gravity and dissipated energy, J (see :class:`EnergyBudget`)."""
         self._require_all("energy")
+        if self._fields is not None:
+            f = self._fields
+            return EnergyBudget(kinetic=f.kinetic, contact=f.contact, bending=f.bending, gravity=f.gravity,
+                                dissipated=self.dissipated, plastic=f.plastic)  # fmt: skip
         memory = {} if self.memory is None else {"memory": self.memory}
         return self.network.energy(self.x, self.u, self.x[..., :1, :], self.g, self.dissipated, **memory)
 

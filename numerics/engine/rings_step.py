@@ -43,11 +43,10 @@ from __future__ import annotations
 
 import math
 
-import numba
 import numpy as np
 
 from . import rings_kernels
-from ._compiled import CACHE, Packed
+from ._compiled import Packed, jit
 
 __all__ = [
     "rings_derivative",
@@ -63,20 +62,7 @@ __all__ = [
 CONTACTS = 2
 
 
-def _jit(**options):
-    def decorate(function):
-        previous = numba.config.CACHE_DIR
-        if CACHE is not None:
-            numba.config.CACHE_DIR = CACHE
-        try:
-            return numba.njit(cache=CACHE is not None, error_model="numpy", **options)(function)
-        finally:
-            numba.config.CACHE_DIR = previous
-
-    return decorate
-
-
-@_jit(inline="always")
+@jit(inline="always")
 def _rotation(q0, q1, q2, q3, R):
     """The rotation matrix of the quaternion (q0, q1, q2, q3) (normalised here) into R (3, 3)."""
     s = 1.0 / (q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3)
@@ -91,7 +77,7 @@ def _rotation(q0, q1, q2, q3, R):
     R[2, 2] = 1.0 - 2.0 * s * (q1 * q1 + q2 * q2)
 
 
-@_jit()
+@jit()
 def _pair(m, k, x, u, R, warm, load, rec, rows, vec, law):
     """Forces and torques of the contacts of pair ``k`` at state (x, u), added to ``load`` (n, 6: force and torque
     about the ring's centre, in space); returns (dissipated power, elastic energy).  The pair's contacts are
@@ -142,7 +128,7 @@ def _pair(m, k, x, u, R, warm, load, rec, rows, vec, law):
     return power, energy
 
 
-@_jit()
+@jit()
 def loads(m, x, u, R, out):
     """Rotation matrices of every ring into R (n, 3, 3) and the contact forces and torques (space) into
     ``out`` (n, 6); returns (dissipated power, elastic energy)."""
@@ -162,7 +148,7 @@ def loads(m, x, u, R, out):
     return power, energy
 
 
-@_jit()
+@jit()
 def rings_derivative(m, b, g, y, dy, N):
     """dy/dt of the rings' state y = [x (N), u (N), W if damped] (the module notes)."""
     n = m.ints[4]
@@ -198,7 +184,7 @@ def rings_derivative(m, b, g, y, dy, N):
         dy[2 * N] = power
 
 
-@_jit()
+@jit()
 def normalise(m, y, G, n):
     """|q| = 1 for every ring of the G states of length n one after the other in ``y`` (after accepted steps)."""
     N = m.ints[2]
@@ -211,13 +197,13 @@ def normalise(m, y, G, n):
     return N
 
 
-@_jit()
+@jit()
 def derivative(m, g, y, dy):
     """dy/dt of one state (the NumPy face of :func:`rings_derivative`, for SciPy's methods and tests)."""
     rings_derivative(m, 0, g, y, dy, m.ints[2])
 
 
-@_jit()
+@jit()
 def contact_state(m, xs, us, warm, out):
     """The contacts of states ``xs``, ``us`` (T, 7n) into ``out`` (T, L, CONTACTS, 12): per pair (i, j) its
     CONTACTS deepest minima of the distance of the centre circles, each [approach delta (m: > 0 in contact,
@@ -242,13 +228,13 @@ def contact_state(m, xs, us, warm, out):
 
 
 # -- velocity Verlet with the free rotor -------------------------------------------------------------------------
-@_jit(inline="always")
+@jit(inline="always")
 def _qmul(a0, a1, a2, a3, b0, b1, b2, b3):
     return (a0 * b0 - a1 * b1 - a2 * b2 - a3 * b3, a0 * b1 + a1 * b0 + a2 * b3 - a3 * b2,
             a0 * b2 - a1 * b3 + a2 * b0 + a3 * b1, a0 * b3 + a1 * b2 - a2 * b1 + a3 * b0)  # fmt: skip
 
 
-@_jit(inline="always")
+@jit(inline="always")
 def _qexp(v0, v1, v2):
     """The unit quaternion of the rotation vector (v0, v1, v2), rad."""
     angle = math.sqrt(v0 * v0 + v1 * v1 + v2 * v2)
@@ -258,7 +244,7 @@ def _qexp(v0, v1, v2):
     return math.cos(0.5 * angle), s * v0, s * v1, s * v2
 
 
-@_jit()
+@jit()
 def _kick(m, x, u, R, load, h, g):
     """Velocities and body angular velocities kicked by the load over ``h`` (s)."""
     for r in range(m.ints[4]):
@@ -273,7 +259,7 @@ def _kick(m, x, u, R, load, h, g):
             u[o + 3 + c] += h * tau / (I3 if c == 2 else I1)
 
 
-@_jit()
+@jit()
 def _drift(m, x, u, R, h):
     """Positions drift and every ring turns as a free symmetric rotor for ``h`` (s), exactly."""
     for r in range(m.ints[4]):
@@ -301,7 +287,7 @@ def _drift(m, x, u, R, h):
             u[o + 3 + c] = Lb / (I3 if c == 2 else I1)
 
 
-@_jit()
+@jit()
 def _verlet_rings_run(m, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u):
     N = x0.size
     n = m.ints[4]

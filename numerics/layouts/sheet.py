@@ -74,7 +74,8 @@ hanging square sheet is a row of identical chains (:class:`~ringchain.numerics.C
 Records: ``simulate(..., rings=sites)`` keeps the states of those sites only (one ring per site;
 :meth:`Sheet.link_sites` gives the sites whose states the forces of some links need).  A run is a
 :class:`~ringchain.numerics.SheetSimulation` (:mod:`.sheet_runs`): ``link_force`` (time x links),
-``displacement`` and ``velocity`` (time x sites x 2), ``energy()``, its fields written to NetCDF.
+``displacement`` and ``velocity`` (time x sites x 2), ``energy()`` (the forces and energies compiled in one
+pass over the samples, :mod:`ringchain.numerics.engine.fields`), its fields written to NetCDF.
 """
 
 from __future__ import annotations
