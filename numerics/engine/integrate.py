@@ -63,7 +63,7 @@ from ringchain.theory import STANDARD_GRAVITY, impact_speed
 from ringchain.theory import _validate as v
 
 from .resources import available_memory as _available_memory  # one name, patched by tests
-from .resources import format_bytes, format_duration
+from .resources import fields_cost, format_bytes, format_duration
 
 __all__ = [
     "simulate",
@@ -165,11 +165,9 @@ _SECONDS_PER_SITE_STEP = {"verlet": 3e-8, "dopri5": 2e-7}
 _DOPRI5_STEPS_PER_PERIOD = 7.0
 
 # A sheet (2-3D network): its stepper costs this many times a chain's per coordinate; what follows the run (link_force,
-# energy(), the file) this many seconds per link and sample, and this many temporary arrays of links x samples at its
-# peak (tracemalloc: tests/numerics/test_sheet_estimate.py; processor time: benchmarks/bench_sheet_estimate.py).
+# energy(), the file: one compiled pass, engine/fields) is resources.fields_cost (tracemalloc:
+# tests/numerics/layouts/test_sheet_estimate.py; processor time: benchmarks/bench_sheet_estimate.py).
 _PLANAR_STEP_COST = 6.5  # dopri5 takes 2.4x the steps the linearised modes suggest, each 2.7x a chain's per coordinate
-_SECONDS_PER_LINK_SAMPLE = 1e-6
-_LINK_TEMPORARIES = 10
 # Bytes per site of a chain's network, dynamics and initial state, built before a run can be estimated (measured:
 # 153 per site for a dual-spring chain of 1e6 rings); a chain that needs more than the memory available is refused
 # before they are built (issue 24, item 11: 1e8 rings took 15.7 GB and 34 s before the estimate refused them).
@@ -580,11 +578,16 @@ def _prepare(model, t_end, impact_velocities, drop_heights, gravity, t_eval, n_s
         solver = 8 * n_state * (2 * min(T, max(1, CHUNK_BYTES // (8 * n_state))) + 30)  # output, copies, LSODA
     links = getattr(dyn, "n_links", N) if rings is None else 2 * len(rings)
     planar = getattr(dyn, "dim", 1) > 1
-    # The forces derived later (link_force, kept) and, in two or three dimensions, the temporaries of the links'
-    # geometry that link_force and energy() build at their peak (after the solver's arrays are freed).
-    derived = links * 8 * B * T * (1 + (_LINK_TEMPORARIES if planar else 0))
-    memory = 8 * B * T * (2 * K + 1) + (derived + solver if not planar else max(derived, solver))
-    post = _SECONDS_PER_LINK_SAMPLE * links * B * T if planar else 0.0
+    # The forces derived later (link_force, kept): in two or three dimensions in one compiled pass with the
+    # energies (engine/fields), after the solver's arrays are freed.
+    if planar:
+        post, derived = fields_cost(links, K, T, B)
+        if method in COMPILED_METHODS:
+            solver = 8 * 12 * B * N  # a compiled method writes the record itself
+        memory = 8 * B * T * (2 * K + 1) + max(derived, solver)
+    else:
+        post, derived = 0.0, links * 8 * B * T
+        memory = 8 * B * T * (2 * K + 1) + derived + solver
     estimate = RunEstimate(method, B, N, T, K, steps, dt, int(memory), post, planar)
     prepared = dict(t_end=t_end, t_eval=t_eval, g=g, gravity=gravity, x0=x0, u0=u0, scales=scales, rings=rings,
                     keep=keep, dt=dt, rtol=rtol, atol=atol, dynamics=dyn)  # fmt: skip
