@@ -17,7 +17,7 @@ import numpy as np
 __all__ = ["CACHE", "KERNEL_MODULES", "Packed", "PackedRingChain", "PackedRings", "jit"]
 
 #: The modules whose compiled kernels call one another (the disk cache is keyed on all their sources).
-KERNEL_MODULES = ("_compiled.py", "kernels.py", "rings_step.py", "rings_kernels.py")
+KERNEL_MODULES = ("_compiled.py", "kernels.py", "rings_step.py", "rings_kernels.py", "fields.py")
 
 
 def _cache_folder() -> str | None:

@@ -32,6 +32,7 @@ import numpy as np
 
 from ._compiled import jit
 from ._kernel_calls import over_threads
+from .kernels import law_force
 from .packing import LAW_KINDS, pack
 
 __all__ = ["Fields", "compiles", "fields"]
@@ -42,27 +43,15 @@ _THREADED_WORK = 200_000
 
 @jit()
 def _law(kind, p0, p1, p2, e, rate, memory):
-    """(force, elastic energy) of one link of law ``kind`` (parameters p0-p2) at extension ``e`` and its rate;
-    the energy of kind 3 (Thornton) is left to NumPy (0 here)."""
-    if kind == 1:  # LinearSpring (K, gamma): both signs
-        return p0 * e + p1 * rate, 0.5 * p0 * e * e
-    if kind == 2:  # Dashpot (gamma)
-        return p0 * rate, 0.0
-    if e <= 0.0:  # the one-sided contacts are open
-        return 0.0, 0.0
-    if kind == 3:  # Thornton (K_c, delta_y, gamma): F_m (u/w)^(3/2) below the largest approach dm
-        dm = max(memory, e)
-        if dm <= p1:
-            elastic = p0 * e * math.sqrt(e)
-        else:
-            w = 0.5 * math.sqrt(p1) * (3.0 * dm - p1) / math.sqrt(dm)
-            u = e - dm + w
-            elastic = 0.0 if u <= 0.0 else 0.5 * p0 * math.sqrt(p1) * (3.0 * dm - p1) * (u / w) * math.sqrt(u / w)
-        force = elastic + p2 * rate if elastic > 0.0 else 0.0
-        return max(force, 0.0), 0.0
-    elastic = p0 * e * math.sqrt(e) if p1 == 1.5 else p0 * e**p1  # PowerLaw (K, n, gamma), HuntCrossley (K, n, alpha)
-    force = elastic * (1.0 + 1.5 * p2 * rate) if kind == 4 else elastic + p2 * rate
-    return max(force, 0.0), elastic * e / (p1 + 1.0)
+    """(force, elastic energy) of one link of law ``kind`` (parameters p0-p2) at extension ``e`` and its rate: the
+    kernels' force (:func:`~ringchain.numerics.engine.kernels.law_force`) and the energy stored by its elastic part
+    (K delta^(n+1)/(n+1) for the power laws, K delta^2/2 for a spring); Thornton's is left to NumPy (0 here)."""
+    force, elastic = law_force(kind, p0, p1, p2, e, rate, memory)
+    if kind == 0 or kind == 4:
+        return force, (elastic * e / (p1 + 1.0) if e > 0.0 else 0.0)
+    if kind == 1:
+        return force, 0.5 * elastic * e
+    return force, 0.0
 
 
 @jit(nogil=True)

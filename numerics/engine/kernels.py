@@ -92,6 +92,7 @@ __all__ = [
     "CACHE",
     "PARAMETERS",
     "LAW_KINDS",
+    "law_force",
     "STATUS",
 ]
 
@@ -117,8 +118,9 @@ def _copy(source, target):
 
 
 @_jit()
-def _law(kind, p0, p1, p2, e, rate, memory):
-    """(force, elastic force) of one link: the :mod:`ringchain.numerics.laws` of kind ``kind``, parameters p0-p2."""
+def law_force(kind, p0, p1, p2, e, rate, memory):
+    """(force, elastic force) of one link, N: the :mod:`ringchain.numerics.laws` of kind ``kind`` (:data:`LAW_KINDS`),
+    parameters p0-p2, at extension ``e`` (m) and its rate (m/s); ``memory``: Thornton's largest approach (m)."""
     if kind == 0:  # PowerLaw: [K delta^n + gamma delta_dot]_+ where engaged (K, n, gamma)
         if e <= 0.0:
             return 0.0, 0.0
@@ -269,7 +271,7 @@ def _network_accelerations(m, b, g, x, u, out, memory):
                     w = (0.0 if j < 0 else x[j * d + c]) - x[i * d + c]
                     du = (0.0 if j < 0 else u[j * d + c]) - u[i * d + c]
                     rate += du * (m.rest_vectors[k, c] + w) / length
-        force, elastic = _law(kind[k], par[k, 0], par[k, 1], par[k, 2], e, rate, memory[k] if memory.size else 0.0)
+        force, elastic = law_force(kind[k], par[k, 0], par[k, 1], par[k, 2], e, rate, memory[k] if memory.size else 0.0)
         if damped:
             power += (force - elastic) * rate
         if d == 1:
