@@ -1,0 +1,31 @@
+"""The static state of rigid rings under gravity (:meth:`Rings.equilibrium`): residuals and the balance of weights."""
+
+import numpy as np
+import pytest
+from ringchain.numerics import Rings
+from ringchain.theory import STANDARD_GRAVITY, Ring
+
+RING = Ring.from_aspect_ratio(9.0)
+
+
+@pytest.mark.parametrize("law", ["hertz", "power-law"])
+def test_the_anchor_carries_the_weight_of_the_hanging_chain(law):
+    n = 6
+    chain = Rings.chain(n, RING, law=law)
+    tol = 1e-9
+    rest = chain.equilibrium(force_tol=tol)
+    _, forces, torques = rest.potential(rest.centres, rest.orientations)
+    weight = RING.mass * STANDARD_GRAVITY
+    free = ~rest.fixed
+    # The solver's own bound, checked here from a search of every contact from scratch.
+    assert np.abs(forces[free]).max() <= tol * weight
+    assert np.abs(torques[free]).max() <= tol * weight * RING.R
+    # Invariant (independent of the solver): the contacts push the fixed ring down by the weight of the free rings
+    # (its own weight is not a contact force); to the residual force on each free ring, tol m g each.
+    anchor = forces[rest.fixed, 2].sum()
+    np.testing.assert_allclose(-anchor, (n - 1) * weight, atol=(n - 1) * tol * weight)
+
+
+def test_equilibrium_names_a_bad_tolerance():
+    with pytest.raises(ValueError, match="force_tol"):
+        Rings.chain(3, RING).equilibrium(force_tol=-1.0)
