@@ -393,7 +393,7 @@ class RingsDynamics:
             model.exponent, model.dashpot, model.friction  # fmt: skip
         gravity = np.zeros((n, 7))
         gravity[~model.fixed, 2] = 1.0
-        ints = np.array([2, 3, 7 * n, int(self.damped), n, L, 0, 0, 0, 0], dtype=np.int64)
+        ints = np.array([2, 3, 7 * n, int(self.damped), n, L, 1, 0, 0, 0], dtype=np.int64)  # 1: search first
         # The kind of rings_kernels.contact_force: 0 Hertz of the curvatures at each contact (E* per pair, the
         # elliptical factor's table), 1 the given law F = K delta^n (Rings.stiffness, exponent).
         hertz = model.law == "hertz"
@@ -429,7 +429,7 @@ class RingsDynamics:
 
         x = self.state(centres, orientations)
         out = np.zeros((self.n_rings, 6))
-        _, elastic = loads(self.packed(), x, np.zeros_like(x), np.empty((self.n_rings, 3, 3)), out)
+        _, elastic = loads(self.packed(), x, np.zeros_like(x), np.empty((self.n_rings, 3, 3)), out, True)
         return elastic, out
 
     # -- the dynamics contract ----------------------------------------------------------------------------------
