@@ -34,10 +34,11 @@ torques on both rings.  Their dissipated power (dashpot and friction) is the rat
 energy W.  The search (:func:`~ringchain.numerics.engine.rings_kernels.pair_contacts_warm`, with its checks for
 minima that split or are born next to the ones it follows) runs once per accepted step of the Runge-Kutta
 loop, at the first evaluation after it (:func:`normalise` raises the flag); the other stages follow the
-minima from the angles of that search by one Newton step (:func:`~ringchain.numerics.engine.rings_kernels.
-pair_contacts_follow`; the gap is stationary at a minimum, so the angle's error enters the gap at second
-order, and the step's own angle error at fourth), falling back on the search where a Newton step meets
-g'' <= 0.  Measured on the struck chain of 1,000 rings, a search costs 2.8 ms per evaluation, a follow 1.9 ms.
+minima from the angles of that search by one Newton step
+(:func:`~ringchain.numerics.engine.rings_kernels.pair_contacts_follow`; the gap is stationary at a minimum, so
+the angle's error enters the gap at second order), falling back on the search where a Newton step meets
+g'' <= 0.  Measured on the struck chain of 1,000 rings (999 pairs, a loaded machine), the search costs 2.8 ms
+an evaluation, the follow 1.9 ms; dopri5's run (benchmarks/bench_rings.py) 15 % less processor time.
 The splitting scheme, :meth:`~ringchain.numerics.Rings.potential` and the contact records search at every
 evaluation.
 
@@ -101,7 +102,7 @@ def _rotation(q0, q1, q2, q3, R):
 
 
 @_jit()
-def _pair(m, k, x, u, R, warm, load, rec, rows, vec, law, search):
+def _pair(m, k, x, u, R, warm, load, rec, rows, vec, law, search, weights):
     """Forces and torques of the contacts of pair ``k`` at state (x, u), added to ``load`` (n, 6: force and torque
     about the ring's centre, in space); returns (dissipated power, elastic energy).  The pair's contacts are
     found by :func:`~ringchain.numerics.engine.rings_kernels.pair_contacts_warm` from ``warm[k]`` ([count, angles s_1
@@ -131,12 +132,16 @@ def _pair(m, k, x, u, R, warm, load, rec, rows, vec, law, search):
         warm[k, 0] = count
         for c in range(count):
             warm[k, 1 + c] = rows[c, 1]
-    law[0], law[1], law[2], law[3] = m.kind[k], m.par[0, k, 0], m.par[0, k, 1], m.par[0, k, 2]
-    law[4], law[5], law[6] = m.par[0, k, 3], m.floats[0], m.spans[k]
+    rings_kernels.fold_weights(c1, x[7 * i + 3 : 7 * i + 7], m.coupling[i, 0], m.coupling[i, 1], c2,
+                               x[7 * j + 3 : 7 * j + 7], m.coupling[j, 0], m.coupling[j, 1], rows, count,
+                               weights)  # fmt: skip
+    law[0], law[2], law[3] = m.kind[k], m.par[0, k, 1], m.par[0, k, 2]
+    law[4], law[5] = m.par[0, k, 3], m.floats[0]
     power, energy = 0.0, 0.0
     for slot in range(rec.shape[0]):
         rec[slot, 0] = -np.inf
     for c in range(count):
+        law[1], law[6] = m.par[0, k, 0] * weights[c], m.spans[k] * weights[c]  # the share of a contact by a fold
         normal, stored, dashpot, friction = rings_kernels.contact_force(
             rows[c], c1, v1, w1, c2, v2, w2, law, m.inv_top, m.floats[1], force, t1, t2)  # fmt: skip
         power += dashpot + friction
@@ -174,8 +179,9 @@ def loads(m, x, u, R, out, search=True):
     power, energy = 0.0, 0.0
     rec, vec = np.empty((CONTACTS, 12)), np.empty((9, 3))
     rows, law = np.empty((rings_kernels.MAX_CONTACTS, rings_kernels.FIELDS)), np.empty(rings_kernels.LAW_PARAMETERS)
+    weights = np.empty(rings_kernels.MAX_CONTACTS)
     for k in range(m.li.size):
-        pk, ek = _pair(m, k, x, u, R, m.rest_vectors, out, rec, rows, vec, law, search)
+        pk, ek = _pair(m, k, x, u, R, m.rest_vectors, out, rec, rows, vec, law, search, weights)
         power += pk
         energy += ek
     return power, energy
@@ -254,6 +260,7 @@ def contact_state(m, xs, us, warm, out):
     load = np.zeros((n, 6))
     vec = np.empty((9, 3))
     rows, law = np.empty((rings_kernels.MAX_CONTACTS, rings_kernels.FIELDS)), np.empty(rings_kernels.LAW_PARAMETERS)
+    weights = np.empty(rings_kernels.MAX_CONTACTS)
     for k_t in range(xs.shape[0]):
         x, u = xs[k_t], us[k_t]
         for r in range(n):
@@ -263,7 +270,7 @@ def contact_state(m, xs, us, warm, out):
             for slot in range(CONTACTS):
                 for c in range(12):
                     out[k_t, k, slot, c] = 0.0
-            _pair(m, k, x, u, R, warm, load, out[k_t, k], rows, vec, law, True)
+            _pair(m, k, x, u, R, warm, load, out[k_t, k], rows, vec, law, True, weights)
 
 
 # -- velocity Verlet with the free rotor -------------------------------------------------------------------------

@@ -37,7 +37,11 @@ delta ~ (m g / K)^(2/3) -- and each stage starts from the last.  The softest sta
 weight of 30 rings below a tenth of a tube radius (the paper's steel ring), so no pair unlinks.
 
 The Hertz law of the curvatures leaves the pose derivative of K_c out of its forces
-(:func:`~ringchain.numerics.engine.rings_kernels.contact_force`); the state found is where the forces vanish.
+(:func:`~ringchain.numerics.engine.rings_kernels.contact_force`), and the share of a contact next to a fold
+(:func:`~ringchain.numerics.engine.rings_kernels.fold_weights`) that of its share: the loads are not quite a
+gradient, so the energy decides the steps far from the solution, and near it (tau >= ``NEWTON``) the step solves
+the unsymmetrised matrix (Newton's for the loads), accepted where the residual falls.  The state found is where the
+forces vanish.
 Converged when the largest residual force on a free ring is below ``force_tol`` m g and the largest torque
 below ``force_tol`` m g R (R the largest major radius), checked at the end by a search of every contact from
 scratch.
@@ -56,6 +60,9 @@ __all__ = ["equilibrium", "STEP"]
 #: Largest move of an iteration, in tube radii (of a centre, or of a rim by a rotation): no ring jumps through
 #: another's tube within one step.
 STEP = 0.25
+
+#: Pseudo-time step (in the scaled variables) from which the step solves the unsymmetrised matrix.
+NEWTON = 1e2
 
 #: Contact stiffnesses of the stages, as fractions of the law's (module notes).
 SOFTENING = (1e-3, 1e-2, 1e-1, 1.0)
@@ -191,13 +198,19 @@ def _newton(problem, tol, max_iterations):
             break
         if matrix is None:
             matrix = problem.stiffness(grad)
-            matrix = (0.5 * (matrix + matrix.T)).tocsc()
-        factor = splu((matrix + sparse.identity(size) / tau).tocsc(), permc_spec="MMD_AT_PLUS_A",
-                      diag_pivot_thresh=0.0, options={"SymmetricMode": True})  # fmt: skip
+            symmetric = (0.5 * (matrix + matrix.T)).tocsc()
+        shift = sparse.identity(size) / tau
+        factor = splu((symmetric + shift).tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
+                      options={"SymmetricMode": True})  # fmt: skip
         if not np.all(factor.U.diagonal() > 0.0):
             tau *= 0.25
             continue
         step = factor.solve(-grad)
+        if tau >= NEWTON:  # near the solution, the step of the matrix itself (the loads of the Hertz law of the
+            try:  # curvatures, and of a contact's share by a fold, are not quite a gradient): Newton's, quadratic
+                step = splu((matrix + shift).tocsc()).solve(-grad)
+            except RuntimeError:  # a singular factor: keep the symmetric step
+                pass
         largest = np.max(np.abs(step))
         if not np.isfinite(largest):
             tau *= 0.25
