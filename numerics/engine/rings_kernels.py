@@ -515,9 +515,10 @@ def fold_weights(c1, q1, R1, r1, c2, q2, R2, r2, rows, count, weights):
     Where two tubes lie nearly parallel over an arc, the distance can have a minimum next to a maximum, both below
     r_1 + r_2; as the pose changes the two meet and vanish (a fold), and a contact counted with its full force
     would vanish with a finite force.  For each maximum in overlap, by delta_M, between minima a and b lying P_a and
-    P_b below it, minimum a keeps the share 1 - delta_M / (delta_M + P_a) * P_b / (P_a + P_b) of its force (and b
-    likewise): none at a fold (P_a -> 0), all of it as its neighbour vanishes (P_b -> 0) or the maximum leaves the
-    overlap (delta_M -> 0), half each where twins merge (P_a = P_b -> 0).  The shares of its two sides multiply.
+    P_b below it, minimum a keeps the share S(x), x = 1 - delta_M / (delta_M + P_a) * P_b / (P_a + P_b), of its
+    force (and b likewise), S(x) = 3 x^2 - 2 x^3: none at a fold (P_a -> 0), all of it as its neighbour vanishes
+    (P_b -> 0) or the maximum leaves the overlap (delta_M -> 0), half each where twins merge (P_a = P_b -> 0).
+    The shares of its two sides multiply.
     """
     for i in range(count):
         weights[i] = 1.0
@@ -551,12 +552,14 @@ def fold_weights(c1, q1, R1, r1, c2, q2, R2, r2, rows, count, weights):
         if top >= 0.0:
             continue
         P_a, P_b = max(top - rows[a, 0], 0.0), max(top - rows[b, 0], 0.0)
+        share_a, share_b = 0.5, 0.5
         if P_a + P_b > 0.0:
-            weights[a] *= 1.0 - (-top) / (P_a - top) * P_b / (P_a + P_b)
-            weights[b] *= 1.0 - (-top) / (P_b - top) * P_a / (P_a + P_b)
-        else:
-            weights[a] *= 0.5
-            weights[b] *= 0.5
+            share_a = 1.0 - (-top) / (P_a - top) * P_b / (P_a + P_b)
+            share_b = 1.0 - (-top) / (P_b - top) * P_a / (P_a + P_b)
+        # smoothed (3 x^2 - 2 x^3: a half stays a half), so that a minimum that the scan finds or misses a rounding
+        # error from its fold carries a share of order (P / delta_M)^2, not P / delta_M
+        weights[a] *= share_a * share_a * (3.0 - 2.0 * share_a)
+        weights[b] *= share_b * share_b * (3.0 - 2.0 * share_b)
 
 
 # -- the contact law -------------------------------------------------------------------------------------------
