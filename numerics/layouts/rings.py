@@ -248,8 +248,9 @@ class Rings:
     def equilibrium(self, **options):
         """The network at its static state under gravity (a :class:`Rings` at rest there).
 
-        The solver (energy minimisation over positions and rotation vectors) is the layouts' module
-        ``rings_static``, built on :meth:`potential` (the energy and its gradient, minus the forces and torques).
+        The solver (Newton's method on the loads over positions and rotation vectors, with pseudo-time steps and
+        stages of softened contacts) is the layouts' module ``rings_static``, built on
+        :meth:`RingsDynamics.contact_loads`; ``options`` are its ``g``, ``force_tol`` and ``max_iterations``.
         """
         try:
             from .rings_static import equilibrium
