@@ -29,3 +29,19 @@ def test_the_anchor_carries_the_weight_of_the_hanging_chain(law):
 def test_equilibrium_names_a_bad_tolerance():
     with pytest.raises(ValueError, match="force_tol"):
         Rings.chain(3, RING).equilibrium(force_tol=-1.0)
+
+
+def test_a_small_sheet_of_chain_mail_hangs_from_its_top_row():
+    sheet = Rings.mail(2, 3, RING)  # three free rings, each hung on two of the fixed row (one at the edges)
+    tol = 1e-8
+    rest = sheet.equilibrium(force_tol=tol)
+    _, forces, torques = rest.potential(rest.centres, rest.orientations)
+    weight = RING.mass * STANDARD_GRAVITY
+    free = ~rest.fixed
+    # The solver's bound, checked from a search of every contact from scratch.
+    assert np.abs(forces[free]).max() <= tol * weight
+    assert np.abs(torques[free]).max() <= tol * weight * RING.R
+    # Invariant: the fixed row carries the weight of the free rings, to the residual force on each (tol m g).
+    np.testing.assert_allclose(-forces[rest.fixed, 2].sum(), free.sum() * weight, atol=free.sum() * tol * weight)
+    # The rings hang: every free ring is lower than it was built (they rest on the row above, not on the layout).
+    assert np.all(rest.centres[free, 2] < sheet.centres[free, 2])
