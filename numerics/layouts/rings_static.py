@@ -53,7 +53,7 @@ import numpy as np
 from ringchain.theory import STANDARD_GRAVITY
 from ringchain.theory import _validate as v
 
-from .rings_layouts import quaternion_about, quaternion_product
+from .rings_layouts import quaternion_about, quaternion_product, rotate
 
 __all__ = ["equilibrium", "STEP"]
 
@@ -169,9 +169,7 @@ class _Problem:
         # A torus turned about its own axis moves no point off itself: the spin is a null direction of the loads
         # (without friction), pinned here by a stiffness as large as the largest of the matrix, so that no step
         # turns a ring about its axis (and the cap on each ring's move is not spent on it).
-        from .rings import rotation_matrices
-
-        axes = rotation_matrices(self.orientations[free])[..., 2]
+        axes = rotate(self.orientations[free], [0.0, 0.0, 1.0])
         pin = max(float(np.max(np.abs(np.concatenate(values)))) if values else 1.0, 1.0)
         block = (6 * np.arange(free.size)[:, None] + 3 + np.arange(3)).repeat(3, axis=1).ravel()
         rows.append(block)
