@@ -17,6 +17,14 @@ evaluations) in 95.9 s wall (23.9 s of CPU); 42 MB allocated at peak, 240-390 MB
 of the kernels took 217 s of wall time on that machine.  The goal, 20 s on 2 cores: Verlet meets it, dopri5
 at its default tolerance (3e-10) does not (about 3.6 ms per evaluation of 1,000 rings).
 
+Again (load average 4 on the 2 cores), the same runs: before the stages of dopri5 followed the contacts, dopri5
+42.8 and 57.2 s wall (17.4 and 16.6 s of CPU), Verlet 22.0 and 23.7 s wall (5.3 and 5.7 s of CPU), the cold
+compile 141.7 s wall; the contacts searched once per accepted step and followed by one Newton step at the other
+stages (:mod:`ringchain.numerics.engine.rings_step`), dopri5 26.9 and 30.1 s wall (13.4 and 14.9 s of CPU: 2.1 ms
+per evaluation), Verlet 10.9 and 14.4 s wall (5.4 and 5.6 s of CPU), the cold compile 148.9 s wall; the same
+steps, evaluations and peak link force (688.7 N).  On two idle cores the CPU time is the wall time: dopri5 meets
+the goal.
+
 Run: ``python benchmarks/bench_rings.py [--rings 1000] [--duration 1e-3] [--speed 1.0] [--samples 201]
 [--method dopri5]``.
 """

@@ -248,8 +248,9 @@ class Rings:
     def equilibrium(self, **options):
         """The network at its static state under gravity (a :class:`Rings` at rest there).
 
-        The solver (energy minimisation over positions and rotation vectors) is the layouts' module
-        ``rings_static``, built on :meth:`potential` (the energy and its gradient, minus the forces and torques).
+        The solver (Newton's method on the loads over positions and rotation vectors, with pseudo-time steps and
+        stages of softened contacts) is the layouts' module ``rings_static``, built on
+        :meth:`RingsDynamics.contact_loads`; ``options`` are its ``g``, ``force_tol`` and ``max_iterations``.
         """
         try:
             from .rings_static import equilibrium
@@ -270,17 +271,9 @@ class Rings:
     def potential(self, centres, orientations, g=STANDARD_GRAVITY):
         """Potential energy (J: contacts and gravity), forces (n, 3, N) and torques (n, 3, N m, in space) of a
         configuration: minus the gradient of the energy over positions and rotation vectors (applied on the
-        left, in space).  Fixed rings get their loads too (the solver ignores them)."""
-        from ..engine import rings_step
-
-        dyn = self.dynamics()
-        m = dyn.packed()
-        x = dyn.state(centres, orientations)
-        u = np.zeros_like(x)
-        n = self.n_rings
-        loads = np.zeros((n, 6))
-        R = np.empty((n, 3, 3))
-        _, elastic = rings_step.loads(m, x, u, R, loads)
+        left, in space).  Fixed rings get their loads too (the solver ignores them).  Each call searches the
+        contacts from scratch; :meth:`RingsDynamics.contact_loads` keeps the warm start between calls."""
+        elastic, loads = self.dynamics().contact_loads(centres, orientations)
         free = ~self.fixed
         gravity = g * float(np.sum(self.masses[free] * np.asarray(centres)[free, 2]))
         forces = loads[:, :3].copy()
@@ -288,9 +281,10 @@ class Rings:
         return elastic + gravity, forces, loads[:, 3:]
 
     # -- the model contract (engine.integrate) ---------------------------------------------------------------------
-    def dynamics(self) -> RingsDynamics:
-        """What the engine integrates (a fresh one per run: it carries the warm start of the contacts)."""
-        return RingsDynamics(self)
+    def dynamics(self, stiffness_scale=1.0) -> RingsDynamics:
+        """What the engine integrates (a fresh one per run: it carries the warm start of the contacts); the static
+        solver's softened stages scale every contact's stiffness by ``stiffness_scale``."""
+        return RingsDynamics(self, stiffness_scale)
 
     def initial_motion(self, velocity=None, angular_velocity=None):
         """Initial state (x0, u0), each of shape (1, 7n), from velocities (n, 3, m/s, space) and angular
@@ -371,8 +365,11 @@ class RingsDynamics:
 
     stateful = False
 
-    def __init__(self, model: Rings):
+    def __init__(self, model: Rings, stiffness_scale: float = 1.0):
         self.model = model
+        #: Factor on every contact's stiffness (K of the power law, E* of Hertz's): below 1, the softened contacts
+        #: of the static solver's first stages (:mod:`ringchain.numerics.layouts.rings_static`).
+        self.stiffness_scale = float(v.positive("stiffness_scale", stiffness_scale))
         self.n_rings = model.n_rings
         self.n_coords = 7 * model.n_rings
         self.damped = bool(model.dashpot > 0.0 or model.friction > 0.0)
@@ -393,11 +390,11 @@ class RingsDynamics:
         bodies = np.column_stack([R, r, model.masses, I1, I3, model.fixed.astype(float), model.centres])
         warm = np.zeros((L, 1 + MAX_CONTACTS))  # no minima known: the first evaluation searches cold
         par = np.zeros((1, L, PARAMETERS))
-        par[0, :, 0], par[0, :, 1], par[0, :, 2], par[0, :, 3] = model.stiffness, model.exponent, model.dashpot, \
-            model.friction  # fmt: skip
+        par[0, :, 0], par[0, :, 1], par[0, :, 2], par[0, :, 3] = model.stiffness * self.stiffness_scale, \
+            model.exponent, model.dashpot, model.friction  # fmt: skip
         gravity = np.zeros((n, 7))
         gravity[~model.fixed, 2] = 1.0
-        ints = np.array([2, 3, 7 * n, int(self.damped), n, L, 0, 0, 0, 0], dtype=np.int64)
+        ints = np.array([2, 3, 7 * n, int(self.damped), n, L, 1, 0, 0, 0], dtype=np.int64)  # 1: search first
         # The kind of rings_kernels.contact_force: 0 Hertz of the curvatures at each contact (E* per pair, the
         # elliptical factor's table), 1 the given law F = K delta^n (Rings.stiffness, exponent).
         hertz = model.law == "hertz"
@@ -409,7 +406,7 @@ class RingsDynamics:
             E = np.array([ring.material.E for ring in model.rings])
             nu = np.array([ring.material.nu for ring in model.rings])
             i, j = model.pairs.T
-            moduli = np.asarray(contact_modulus_pair(E[i], nu[i], E[j], nu[j]), dtype=float)
+            moduli = np.asarray(contact_modulus_pair(E[i], nu[i], E[j], nu[j]), dtype=float) * self.stiffness_scale
         return PackedRings(ints, np.array([model.slip_speed, step]), np.zeros((1, 7 * n)), gravity.reshape(1, -1),
                       model.pairs[:, 0].copy(), model.pairs[:, 1].copy(), kind, par, warm, moduli, np.zeros(L),
                       np.ascontiguousarray(bodies), table, np.zeros(n))  # fmt: skip
@@ -424,6 +421,17 @@ class RingsDynamics:
         x[:, :3] = np.asarray(centres, dtype=float) - self.model.centres
         x[:, 3:] = orientations
         return x.ravel()
+
+    def contact_loads(self, centres, orientations):
+        """Elastic energy of the contacts (J) and the contact loads (n, 6: force, N, and torque about the centre,
+        N m, in space) of a configuration at rest, warm-started from this object's last call (the first searches
+        every pair from scratch)."""
+        from ..engine.rings_step import loads
+
+        x = self.state(centres, orientations)
+        out = np.zeros((self.n_rings, 6))
+        _, elastic = loads(self.packed(), x, np.zeros_like(x), np.empty((self.n_rings, 3, 3)), out, True)
+        return elastic, out
 
     # -- the dynamics contract ----------------------------------------------------------------------------------
     @property

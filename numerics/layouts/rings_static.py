@@ -1,155 +1,233 @@
 r"""The static state of a network of rigid rings under gravity, its fixed rings held: :meth:`Rings.equilibrium`.
 
-:func:`equilibrium` minimises the potential energy of a :class:`~ringchain.numerics.Rings` -- gravity,
-sum m g z, plus the elastic energy of every contact (:meth:`Rings.potential`: the network's own contact
-law, every local minimum of the distance of two centre circles a contact) -- over the centres and
-orientations of the free rings.  Each ring's orientation is the rotation vector theta of
-q = exp(theta) q_0 about its starting pose q_0; the gradient is the negative of the forces and of the
-torques mapped through the left Jacobian of SO(3), dU/dtheta = -J_l(theta)^T tau, exact at every theta.
+:func:`equilibrium` finds where the loads on every free ring vanish -- gravity, m g along -z, and the forces and
+torques of every contact (the network's own contact law, every local minimum of the distance of two centre
+circles a contact) -- over the centres and orientations of the free rings.  Each ring moves from its pose of
+the current iteration by a translation and a rotation vector theta (q = exp(theta) q_0); the loads are minus
+the gradient of the potential energy over these, the torques mapped through the left Jacobian of SO(3)
+(the identity at theta = 0, where every iteration starts).  The variables are scaled so that the solver sees
+numbers of order one: translations in tube radii r, rotations in units that move a rim by r, loads in units of
+the heaviest weight m g (torques of m g R).
 
-Two solvers, because the contacts are stiff.  Near the minimum a residual force F on a contact of
-stiffness k is worth F^2 / k of energy, below the rounding of the energy itself, so a line search on
-the energy stalls; :func:`_lbfgs` searches on the slope alone.  Far from it (a sheet that drapes, its
-rings sliding by centimetres), the contacts appear and vanish as rings slide and L-BFGS's model of the
-energy is poor; damped dynamics (FIRE, :func:`_fire`) first settles the network on contacts softened to
-1e-6, 1e-4 and 1e-2 of their stiffness, then L-BFGS finishes on the law itself.  Converged when the largest
-residual force on a free ring is below ``force_tol`` times the heaviest weight m g, and the largest
-torque below ``force_tol`` m g R.
+Why not a first-order method alone.  A draped sheet couples stiff contacts to floppy modes: the Hertz contact under a
+ring's weight, k = 3/2 K^(2/3) (m g)^(1/3), is some 1e4-1e5 m g per tube radius, the swing of the sheet as a
+pendulum about r/L m g per tube radius (L the sheet's length).  Gradient methods (damped dynamics, L-BFGS) then
+take of order sqrt(1e7) steps per decade of the residual; and contacts softened too far (1e-6 of their stiffness)
+let rings pass through one another (a soft tube gives way under a few weights and the pair unlinks).
+
+The solver: pseudo-transient continuation (Newton's method on the loads with a pseudo-time step tau,
+(H + I / tau) dx = -g, tau grown as the residual falls: Kelley and Keyes, SIAM J. Numer. Anal. 35, 508 (1998)).
+The stiffness matrix H (minus the Jacobian of the scaled loads, symmetrised) is built by finite differences of
+the compiled loads, :meth:`~ringchain.numerics.layouts.rings.RingsDynamics.contact_loads`, warm-started from call
+to call: rings whose bounding spheres (radius R + r) overlap no common neighbour's are moved together (a
+distance-2 colouring of the graph of rings that can touch), so a matrix costs 6 times the number of colours
+evaluations, whatever the number of rings.  The spin of a torus about its own axis moves no point of it, a
+null direction of the loads, pinned in H.  (H + I / tau) is factorised without pivoting off the diagonal
+(SuperLU), whose pivots give its inertia: tau shrinks until it is positive definite, so the step goes downhill.
+Steps are capped at ``STEP`` tube radii in every variable (no ring jumps through another's tube), and accepted
+where the energy does not rise beyond its rounding or the residual falls; tau grows by the ratio of the
+residuals after an accepted step and shrinks fourfold after a rejected one.  The base and trial poses search
+every contact from scratch (the warm start cannot see a minimum born away from those it follows, and a step
+moves rings far); the finite differences follow them.
+
+Stages.  The contacts are first softened (:data:`SOFTENING`: every stiffness, K of the power law or E* of
+Hertz's, scaled down), which widens the region where Newton's model holds -- a step along a floppy mode of
+length s changes a contact's approach by about s^2 / (2 R), which must stay below the approach
+delta ~ (m g / K)^(2/3) -- and each stage starts from the last.  The softest stage keeps the approach under the
+weight of 30 rings below a tenth of a tube radius (the paper's steel ring), so no pair unlinks.
+
+The Hertz law of the curvatures leaves the pose derivative of K_c out of its forces
+(:func:`~ringchain.numerics.engine.rings_kernels.contact_force`), and the share of a contact next to a fold
+(:func:`~ringchain.numerics.engine.rings_kernels.fold_weights`) that of its share: the loads are not quite a
+gradient, so the energy decides the steps far from the solution, and near it (tau >= ``NEWTON``) the step solves
+the unsymmetrised matrix (Newton's for the loads), accepted where the residual falls.  The state found is where the
+forces vanish.
+Converged when the largest residual force on a free ring is below ``force_tol`` m g and the largest torque
+below ``force_tol`` m g R (R the largest major radius), checked at the end by a search of every contact from
+scratch.
 """
 
 from __future__ import annotations
-
-import dataclasses
 
 import numpy as np
 from ringchain.theory import STANDARD_GRAVITY
 from ringchain.theory import _validate as v
 
-from .rings_layouts import quaternion_about, quaternion_product
+from .rings_layouts import quaternion_about, quaternion_product, rotate
 
-__all__ = ["equilibrium"]
+__all__ = ["equilibrium", "STEP"]
 
+#: Largest move of an iteration, in tube radii (of a centre, or of a rim by a rotation): no ring jumps through
+#: another's tube within one step.
+STEP = 0.25
 
-def _left_jacobian(theta):
-    t = np.linalg.norm(theta, axis=1)[:, None, None]
-    small = t < 1e-6
-    t = np.where(small, 1.0, t)
-    K = np.zeros((len(theta), 3, 3))
-    K[:, 0, 1], K[:, 0, 2], K[:, 1, 2] = -theta[:, 2], theta[:, 1], -theta[:, 0]
-    K[:, 1, 0], K[:, 2, 0], K[:, 2, 1] = theta[:, 2], -theta[:, 1], theta[:, 0]
-    a = np.where(small, 0.5, (1 - np.cos(t)) / t**2)
-    b = np.where(small, 1.0 / 6.0, (t - np.sin(t)) / t**3)
-    return np.eye(3) + a * K + b * K @ K
+#: Pseudo-time step (in the scaled variables) from which the step solves the unsymmetrised matrix.
+NEWTON = 1e2
+
+#: Contact stiffnesses of the stages, as fractions of the law's (module notes).
+SOFTENING = (1e-3, 1e-2, 1e-1, 1.0)
+
+#: Finite-difference step of the stiffness matrix, in the scaled variables (tube radii): small beside the
+#: approach of a contact under one weight (about 1e-3 r for the paper's steel ring), large beside the rounding
+#: of the loads (about 1e-10 m g over stiffnesses of 1e4 m g / r).
+DIFFERENCE = 1e-7
 
 
 def _exp(theta):
+    """Unit quaternions of rotation vectors theta (n, 3), rad."""
     t = np.linalg.norm(theta, axis=1)
     axis = np.where(t[:, None] > 0, theta, np.array([[0.0, 0.0, 1.0]]))
     return quaternion_about(axis, t)
 
 
-def _lbfgs(gradient, x, *, tol, max_step, max_iterations, memory=20):
-    """L-BFGS with a line search on the directional derivative alone: x where max |gradient| <= tol.
-
-    The energy of stiff contacts under gravity changes by less than its own rounding near the minimum
-    (a residual force F on a contact of stiffness k is worth F^2 / k), so the search brackets the zero
-    of the slope along the direction (secant steps, expanding until it changes sign) and accepts a
-    step once the slope has fallen to 0.9 of its first value (the curvature condition of Wolfe).
-    Trial steps are capped at ``max_step`` in every variable (no ring jumps through another).
-    Returns (x, gradient, iterations, evaluations).
-    """
-    g = gradient(x)
-    evaluations, history = 1, []
-    for iteration in range(max_iterations):
-        if np.max(np.abs(g)) <= tol:
-            return x, g, iteration, evaluations
-        d = -g
-        alphas = []
-        for s_k, y_k, rho in reversed(history):
-            alpha = rho * (s_k @ d)
-            d -= alpha * y_k
-            alphas.append(alpha)
-        if history:
-            s_k, y_k, _ = history[-1]
-            d *= (s_k @ y_k) / (y_k @ y_k)
-        for (s_k, y_k, rho), alpha in zip(history, reversed(alphas), strict=True):
-            d += s_k * (alpha - rho * (y_k @ d))
-        slope0 = d @ g
-        if slope0 >= 0:  # not a descent direction: start again from steepest descent
-            history.clear()
-            d, slope0 = -g, -(g @ g)
-        cap = max_step / max(np.max(np.abs(d)), 1e-300)
-        lo, slope_lo, hi, slope_hi = 0.0, slope0, None, None
-        step = min(1.0, cap)
-        for _ in range(40):
-            g_new = gradient(x + step * d)
-            evaluations += 1
-            slope = d @ g_new
-            if abs(slope) <= 0.9 * abs(slope0):
-                break
-            if slope < 0:
-                lo, slope_lo = step, slope
-                if hi is None:
-                    step = min(step * 4, lo + cap) if slope_lo == slope0 else lo + min(3 * (lo - 0.0), cap)
-                    continue
-            else:
-                hi, slope_hi = step, slope
-            # secant between the bracket's ends, kept inside it
-            step = lo - slope_lo * (hi - lo) / (slope_hi - slope_lo)
-            step = min(max(step, lo + 0.1 * (hi - lo)), hi - 0.1 * (hi - lo))
-        s_new = step * d
-        y_new = g_new - g
-        if s_new @ y_new > 0:
-            history.append((s_new, y_new, 1.0 / (s_new @ y_new)))
-            if len(history) > memory:
-                history.pop(0)
-        x, g = x + s_new, g_new
-    return x, g, max_iterations, evaluations
+def _colours(neighbours):
+    """A distance-2 colouring of a graph given as sets of neighbours: no two rings of one colour are neighbours
+    or share one (greedy, in order).  Returns a list of index arrays."""
+    colour = np.full(len(neighbours), -1)
+    for i, near in enumerate(neighbours):
+        taken = {colour[j] for j in near}
+        taken.update(colour[k] for j in near for k in neighbours[j])
+        c = 0
+        while c in taken:
+            c += 1
+        colour[i] = c
+    return [np.flatnonzero(colour == c) for c in range(colour.max() + 1)] if len(colour) else []
 
 
-def _fire(gradient, x, *, tol, stiffness, max_iterations, max_move=0.5):
-    """Damped dynamics (FIRE: Bitzek et al., Phys. Rev. Lett. 97, 170201 (2006)) to max |gradient| <= tol.
+class _Problem:
+    """The scaled loads of the free rings about a base pose, evaluated on one warm-started contact search."""
 
-    The fallback of L-BFGS where the energy is not smooth enough for a line search (contacts that
-    appear, merge or split as rings slide); unit masses in the scaled variables, the time step bounded
-    by the contacts' stiffness and each step's move by ``max_move``.  Stops after ``max_iterations`` steps.
-    Returns (x, gradient, iterations, evaluations).
-    """
-    dt_max = 0.5 / np.sqrt(1e6 * stiffness)
-    dt, a, positive = 0.1 * dt_max, 0.1, 0
-    velocity = np.zeros_like(x)
-    g = gradient(x)
-    for iteration in range(max_iterations):
-        if np.max(np.abs(g)) <= tol:
-            return x, g, iteration, iteration + 1
-        force = -g
-        power = force @ velocity
-        if power > 0:
-            norm = np.linalg.norm(force)
-            velocity = (1 - a) * velocity + a * np.linalg.norm(velocity) * force / max(norm, 1e-300)
-            positive += 1
-            if positive > 5:
-                dt, a = min(dt * 1.1, dt_max), a * 0.99
+    def __init__(self, network, g, softening=1.0, start=None):
+        self.network, self.g = network, g
+        self.dynamics = network.dynamics(softening)
+        self.moving = np.flatnonzero(~network.fixed)
+        self.masses = network.masses
+        self.weight = float(np.max(self.masses)) * g
+        self.length = float(max(ring.r for ring in network.rings))
+        self.reach = float(max(ring.R for ring in network.rings))
+        self.bounds = np.array([ring.R + ring.r for ring in network.rings])
+        self.centres, self.orientations = (network.centres.copy(), network.orientations.copy()) if start is None \
+            else start  # fmt: skip
+
+    def pose(self, x):
+        x = x.reshape(-1, 6)
+        c, q = self.centres.copy(), self.orientations.copy()
+        c[self.moving] += x[:, :3] * self.length
+        q[self.moving] = quaternion_product(_exp(x[:, 3:] * (self.length / self.reach)), q[self.moving])
+        return c, q
+
+    def evaluate(self, x, cold=True):
+        """(energy from the base pose, J; scaled gradient (6 per free ring)) at the move x from the base pose, every
+        contact searched from scratch (``cold``; the warm start cannot see a minimum of the distance born away from
+        the ones it follows, and a step of the solver moves rings far) or followed from the last call."""
+        if cold:
+            self.dynamics.packed().rest_vectors[:, 0] = 0.0
+        c, q = self.pose(x)
+        elastic, loads = self.dynamics.contact_loads(c, q)
+        free = self.moving
+        forces = loads[free, :3].copy()
+        forces[:, 2] -= self.g * self.masses[free]
+        gravity = self.g * float(np.sum(self.masses[free] * (c[free, 2] - self.centres[free, 2])))
+        # At theta = 0 the left Jacobian is the identity; away from it the difference is second order in the
+        # step, which the finite differences and the acceptance test absorb (every iteration starts at theta = 0).
+        grad = np.concatenate([-forces / self.weight, -loads[free, 3:] / (self.weight * self.reach)], axis=1)
+        return elastic + gravity, grad.ravel()
+
+    def move(self, x):
+        """Make the pose at x the new base."""
+        self.centres, self.orientations = self.pose(x)
+        self.orientations /= np.linalg.norm(self.orientations, axis=1, keepdims=True)
+
+    def stiffness(self, grad):
+        """The sparse stiffness matrix d(grad)/dx at the base pose (grad its gradient there)."""
+        from scipy import sparse
+
+        free = self.moving
+        index = np.full(len(self.masses), -1)
+        index[free] = np.arange(free.size)
+        pairs = self.network.pairs
+        reach = self.bounds[pairs[:, 0]] + self.bounds[pairs[:, 1]]
+        close = np.linalg.norm(self.centres[pairs[:, 0]] - self.centres[pairs[:, 1]], axis=1) < reach
+        neighbours = [set() for _ in free]
+        for i, j in pairs[close]:
+            if index[i] >= 0 and index[j] >= 0:
+                neighbours[index[i]].add(index[j])
+                neighbours[index[j]].add(index[i])
+        rows, cols, values = [], [], []
+        offsets = np.arange(6)
+        for group in _colours(neighbours):
+            for d in range(6):
+                x = np.zeros((free.size, 6))
+                x[group, d] = DIFFERENCE
+                column = (self.evaluate(x.ravel(), cold=False)[1] - grad) / DIFFERENCE
+                for i in group:
+                    near = np.fromiter((i, *neighbours[i]), dtype=np.int64)
+                    r = (6 * near[:, None] + offsets).ravel()
+                    rows.append(r)
+                    cols.append(np.full(r.size, 6 * i + d))
+                    values.append(column[r])
+        # A torus turned about its own axis moves no point off itself: the spin is a null direction of the loads
+        # (without friction), pinned here by a stiffness as large as the largest of the matrix, so that no step
+        # turns a ring about its axis (and the cap on each ring's move is not spent on it).
+        axes = rotate(self.orientations[free], [0.0, 0.0, 1.0])
+        pin = max(float(np.max(np.abs(np.concatenate(values)))) if values else 1.0, 1.0)
+        block = (6 * np.arange(free.size)[:, None] + 3 + np.arange(3)).repeat(3, axis=1).ravel()
+        rows.append(block)
+        cols.append((6 * np.arange(free.size)[:, None] + 3 + np.tile(np.arange(3), 3)).ravel())
+        values.append((pin * axes[:, :, None] * axes[:, None, :]).ravel())
+        size = 6 * free.size
+        return sparse.csc_matrix((np.concatenate(values), (np.concatenate(rows), np.concatenate(cols))),
+                                 shape=(size, size))  # fmt: skip
+
+
+def _newton(problem, tol, max_iterations):
+    """The pseudo-transient Newton iterations of the module notes on ``problem`` until max |gradient| <= tol."""
+    from scipy import sparse
+    from scipy.sparse.linalg import splu
+
+    size = 6 * problem.moving.size
+    energy, grad = problem.evaluate(np.zeros(size))
+    # Energies below this differ by rounding (1e-13 of a weight lifted by a tube radius, per free ring).
+    rounding = 1e-13 * max(problem.moving.size, 1) * problem.weight * problem.length
+    tau, matrix = 1.0, None  # pseudo-time step: (I / tau + H) dx = -g
+    residual = np.linalg.norm(grad)
+    for _ in range(max_iterations):
+        if not size or np.max(np.abs(grad)) <= tol:
+            break
+        if matrix is None:
+            matrix = problem.stiffness(grad)
+            symmetric = (0.5 * (matrix + matrix.T)).tocsc()
+        shift = sparse.identity(size) / tau
+        factor = splu((symmetric + shift).tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
+                      options={"SymmetricMode": True})  # fmt: skip
+        if not np.all(factor.U.diagonal() > 0.0):
+            tau *= 0.25
+            continue
+        step = factor.solve(-grad)
+        if tau >= NEWTON:  # near the solution, the step of the matrix itself (the loads of the Hertz law of the
+            try:  # curvatures, and of a contact's share by a fold, are not quite a gradient): Newton's, quadratic
+                step = splu((matrix + shift).tocsc()).solve(-grad)
+            except RuntimeError:  # a singular factor: keep the symmetric step
+                pass
+        largest = np.max(np.abs(step))
+        if not np.isfinite(largest):
+            tau *= 0.25
+            continue
+        if largest > STEP:
+            step *= STEP / largest
+        trial_energy, trial_grad = problem.evaluate(step)
+        change = trial_energy - energy
+        if change <= rounding or np.linalg.norm(trial_grad) < residual:
+            problem.move(step)
+            energy, grad = problem.evaluate(np.zeros(size))
+            new = np.linalg.norm(grad)
+            tau = min(tau * max(residual / new, 0.5) * (2.0 if largest < STEP else 1.0), 1e12)
+            residual, matrix = new, None
         else:
-            velocity[:] = 0.0
-            dt, a, positive = dt * 0.5, 0.1, 0
-        velocity += dt * force
-        move = dt * velocity
-        largest = np.max(np.abs(move))
-        if largest > 0.1 * max_move:
-            move *= 0.1 * max_move / largest
-            velocity *= 0.1 * max_move / largest
-        x = x + move
-        g = gradient(x)
-    return x, g, max_iterations, max_iterations + 1
+            tau *= 0.25
 
 
-#: Softened contact stiffnesses, as fractions of the law's K, settled in turn by damped dynamics before the law
-#: itself: the soft contacts let the network move far at little cost (a drape), the stiff ones then only settle it.
-SOFTENING = (1e-6, 1e-4, 1e-2)
-
-
-def equilibrium(network, *, g=STANDARD_GRAVITY, force_tol=1e-8, soften=True, max_iterations=2000):
+def equilibrium(network, *, g=STANDARD_GRAVITY, force_tol=1e-8, max_iterations=200):
     """The network at its static state under gravity (along -z), its fixed rings held where they are.
 
     Parameters
@@ -159,13 +237,10 @@ def equilibrium(network, *, g=STANDARD_GRAVITY, force_tol=1e-8, soften=True, max
     g : float
         Gravity, m/s^2 (> 0).
     force_tol : float
-        Largest residual force on a free ring, as a fraction of the heaviest weight m g (torques: of
-        m g R with R the largest major radius).
-    soften : bool
-        Settle on softened contacts first (:data:`SOFTENING`; needed when the rings move far, as in a drape;
-        a chain that only stretches needs none).
+        Largest residual force on a free ring, as a fraction of the heaviest weight m g (torques: of m g R with
+        R the largest major radius); the contact forces' own rounding, about 1e-10, is the floor.
     max_iterations : int
-        Steps of each stage (damped dynamics) or iterations of L-BFGS.
+        Newton iterations of each stage (module notes), accepted or not.
 
     Returns
     -------
@@ -180,45 +255,20 @@ def equilibrium(network, *, g=STANDARD_GRAVITY, force_tol=1e-8, soften=True, max
     g = float(v.positive("g", g, "m/s^2"))
     force_tol = float(v.positive("force_tol", force_tol))
     max_iterations = v.count("max_iterations", max_iterations, 1)
-    masses = network.masses
-    moving = np.flatnonzero(~network.fixed)
-    weight = float(np.max(masses)) * g
-    length = float(max(ring.r for ring in network.rings))  # variable scale: positions in tube radii
-    reach = float(max(ring.R for ring in network.rings))
-    torque_scale = weight * reach
-    centres, orientations = network.centres.copy(), network.orientations.copy()
-    stages = [(scale, max(force_tol, 1e-3)) for scale in (SOFTENING if v.boolean("soften", soften) else ())]
-    for softening, tol in [*stages, (1.0, force_tol)]:
-        model = dataclasses.replace(network, stiffness=network.stiffness * softening)
-        start_c, start_q = centres.copy(), orientations.copy()
-
-        def pose(x, start_c=start_c, start_q=start_q):
-            x = x.reshape(-1, 6)
-            c, q = start_c.copy(), start_q.copy()
-            c[moving] += x[:, :3] * length
-            theta = x[:, 3:] * (length / reach)  # rotations in units that move a rim by one tube radius
-            q[moving] = quaternion_product(_exp(theta), start_q[moving])
-            return c, q, theta
-
-        def gradient(x, pose=pose, model=model):
-            c, q, theta = pose(x)
-            _, forces, torques = model.potential(c, q, g)
-            grad_c = -forces[moving] / weight
-            grad_t = -np.einsum("nji,nj->ni", _left_jacobian(theta), torques[moving]) / torque_scale
-            return np.concatenate([grad_c, grad_t], axis=1).ravel()
-
-        x0 = np.zeros(6 * len(moving))
-        if softening < 1:
-            x = _fire(gradient, x0, tol=tol, stiffness=softening, max_iterations=max_iterations)[0]
-        else:
-            x = _lbfgs(gradient, x0, tol=tol, max_step=0.2, max_iterations=max_iterations)[0]
-        centres, orientations, _ = pose(x)
-        orientations /= np.linalg.norm(orientations, axis=1, keepdims=True)
-    _, forces, torques = network.potential(centres, orientations, g)
+    pose = None
+    for softening in SOFTENING:
+        problem = _Problem(network, g, softening, pose)
+        tol = force_tol if softening == 1.0 else max(force_tol, 1e-3)
+        _newton(problem, tol, max_iterations)
+        pose = problem.centres, problem.orientations
+    centres, orientations = problem.centres, problem.orientations
+    _, forces, torques = network.potential(centres, orientations, g)  # every contact searched afresh
+    moving = problem.moving
     residual_force = float(np.max(np.abs(forces[moving]), initial=0.0))
     residual_torque = float(np.max(np.abs(torques[moving]), initial=0.0))
-    if residual_force > force_tol * weight or residual_torque > force_tol * torque_scale:
+    torque_scale = problem.weight * problem.reach
+    if residual_force > force_tol * problem.weight or residual_torque > force_tol * torque_scale:
         raise RuntimeError(f"no static state within {max_iterations} iterations: largest residual force "
-                           f"{residual_force:.3g} N (goal {force_tol * weight:.3g} N), torque {residual_torque:.3g} "
-                           f"N m (goal {force_tol * torque_scale:.3g} N m)")  # fmt: skip
+                           f"{residual_force:.3g} N (goal {force_tol * problem.weight:.3g} N), torque "
+                           f"{residual_torque:.3g} N m (goal {force_tol * torque_scale:.3g} N m)")  # fmt: skip
     return network.moved(centres, orientations)
