@@ -80,7 +80,7 @@ def test_taut_rings_sag_in_proportion_to_their_tension_and_less_than_the_string(
     ratios = []
     for pretension in (20.0, 320.0):
         taut = taut_chain(7, RING, pretension)
-        rest = taut.equilibrium(force_tol=1e-6, soften=False)
+        rest = taut.equilibrium(force_tol=1e-6)
         tensions = link_forces_at_rest(rest)
         w = membrane_deflection(rest.centres, rest.links, tensions, rest.masses * STANDARD_GRAVITY, rest.fixed)
         sag = taut.centres[:, 2] - rest.centres[:, 2]
