@@ -54,10 +54,11 @@ _alias_package_folders()
 
 
 @pytest.fixture(autouse=True)
-def _compile_notices(monkeypatch):
-    """The kernels' compile notice goes to a list, not to stderr: whether a test compiles a kernel depends on
-    which tests its worker ran before, and tests read stderr for their own output.  The notice itself is
-    tested in a fresh process (tests/numerics/engine/test_kernels.py)."""
+def notices(monkeypatch):
+    """The package's notices (a kernel's compile, where a job runs: engine/_kernel_calls.notify) go to this list,
+    not to stderr: whether a test compiles a kernel depends on which tests its worker ran before, and tests read
+    stderr for their own output.  The compile notice on stderr is tested in a fresh process
+    (tests/numerics/engine/test_kernels.py)."""
     from ringchain.numerics.engine import _kernel_calls
 
     notices: list[str] = []

@@ -12,6 +12,7 @@
 #   writes to stderr, is fatal (-W).
 # Environment: PYTHON (default: the repo's .venv/bin/python if present, else python3).
 set -euo pipefail
+export RINGCHAIN_NOTICES=0  # the package's notices on stderr (a compile, where a job runs) would fail a page
 book="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(dirname "$book")"
 if [[ -z "${PYTHON:-}" ]]; then

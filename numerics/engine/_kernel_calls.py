@@ -103,5 +103,8 @@ def announce_compile(dispatcher, family: str, folder, args=None) -> None:
 
 
 def notify(line: str) -> None:
-    """Print ``line`` on stderr at once (the compile notice's one way out)."""
-    print(line, file=sys.stderr, flush=True)
+    """Print ``line`` on stderr at once: the package's notices of what it does (a compile, where a job runs), not
+    results.  ``RINGCHAIN_NOTICES=0`` in the environment silences them (the book's build sets it: a page's stderr
+    is an error there)."""
+    if os.environ.get("RINGCHAIN_NOTICES", "1").strip() != "0":
+        print(line, file=sys.stderr, flush=True)

@@ -33,6 +33,7 @@ import socket
 import sys
 from pathlib import Path
 
+from . import _kernel_calls
 from ._kernel_calls import load_factor
 
 __all__ = [
@@ -230,8 +231,10 @@ def run_tasks(
         saved, cost = seconds * (1.0 - 1.0 / workers), POOL_START_SECONDS * load_factor()
         max_workers = 0 if saved < cost else workers
         where = "in this process" if max_workers == 0 else f"on {workers} worker processes"
-        print(f"{name}: {sum(sizes)} {unit}s {where} (about {seconds:.1f} s of work; a pool of {workers} would save "
-              f"about {saved:.1f} s and costs about {cost:.1f} s to start)", file=sys.stderr)  # fmt: skip
+        _kernel_calls.notify(
+            f"{name}: {sum(sizes)} {unit}s {where} (about {seconds:.1f} s of work; a pool of "
+            f"{workers} would save about {saved:.1f} s and costs about {cost:.1f} s to start)"
+        )
     if own:
         executor = default_executor(len(tasks), max_workers, f"{name}()")
     results: list = [None] * len(tasks)

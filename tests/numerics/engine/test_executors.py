@@ -94,12 +94,23 @@ def test_zero_workers_run_in_this_process():
     assert isinstance(default_executor(4, 0), InlineExecutor)
 
 
-def test_a_job_smaller_than_a_pools_start_runs_in_this_process_and_says_so(capsys):
+def test_a_job_smaller_than_a_pools_start_runs_in_this_process_and_says_so(notices):
     # A job of 0.1 s of work on a pool of at most two workers saves at most 0.1 s, less than the pool's
     # start (POOL_START_SECONDS, 2.5 s, or more on a busy machine): no process is started.
     assert executors.run_tasks(abs, [(-1,), (2,)], seconds=0.1, name="sweep", unit="point") == [1, 2]
-    err = capsys.readouterr().err
-    assert "sweep: 2 points in this process" in err and err.count("\n") == 1
+    assert len(notices) == 1 and notices[0].startswith("sweep: 2 points in this process")
+
+
+def test_notices_go_to_stderr_unless_silenced(capsys, monkeypatch):
+    monkeypatch.undo()  # the suite's notices fixture: back to the package's own notify
+    from ringchain.numerics.engine import _kernel_calls
+
+    monkeypatch.delenv("RINGCHAIN_NOTICES", raising=False)
+    _kernel_calls.notify("ringchain: a notice")
+    assert capsys.readouterr().err == "ringchain: a notice\n"
+    monkeypatch.setenv("RINGCHAIN_NOTICES", "0")  # as the book's build sets it
+    _kernel_calls.notify("ringchain: a notice")
+    assert capsys.readouterr().err == ""
 
 
 def test_a_dead_worker_is_reported_with_what_to_do():
