@@ -14,6 +14,7 @@ its own module's file).
 from __future__ import annotations
 
 import itertools
+import math
 import os
 import sys
 
@@ -48,6 +49,20 @@ def over_threads(kernel, B, parallel, *args):
     with ThreadPoolExecutor(count) as pool:
         for done in [pool.submit(kernel, *args, a, b) for a, b in ranges]:
             done.result()
+
+
+def verlet_arrays(x0, u0, t_eval, t_end, dt, keep):
+    """What a fixed-step run of B runs (rows of ``x0``, ``u0``) over ``t_eval`` starts from: x0, u0 as contiguous
+    floats, the number of steps and the step (``t_end`` in ceil(t_end/dt) equal steps, s), and the outputs to fill:
+    x and u of ``keep`` (B, T, K), the exit status (B,), the final x and u (B, n)."""
+    x0 = np.ascontiguousarray(x0, dtype=float)
+    u0 = np.ascontiguousarray(u0, dtype=float)
+    B = x0.shape[0]
+    n_steps = max(1, math.ceil(t_end / dt))
+    T, K = t_eval.size, keep.size
+    out_x, out_u = np.empty((B, T, K)), np.empty((B, T, K))
+    status, final_x, final_u = np.zeros(B, dtype=np.int64), np.empty_like(x0), np.empty_like(u0)
+    return x0, u0, n_steps, t_end / n_steps, out_x, out_u, status, final_x, final_u
 
 
 def will_compile(dispatcher, args=None) -> bool:

@@ -76,7 +76,7 @@ from numba.extending import overload
 
 from . import rings_step
 from ._compiled import CACHE, Packed, PackedRingChain, PackedRings
-from ._kernel_calls import announce_compile, over_threads
+from ._kernel_calls import announce_compile, over_threads, verlet_arrays
 from .packing import LAW_KINDS, PARAMETERS, pack, pack_network, pack_ring_chain
 
 __all__ = [
@@ -817,14 +817,8 @@ def verlet(packed: Packed, x0, u0, t_eval, t_end, dt, keep, g, *, parallel=None,
     memory) also the memory at the samples (B, T, links) and at the end (B, links)."""
     if packed.ints[0] == 2:  # rigid rings: their splitting scheme
         return rings_step.verlet_rings(packed, x0, u0, t_eval, t_end, dt, keep, g)
-    x0 = np.ascontiguousarray(x0, dtype=float)
-    u0 = np.ascontiguousarray(u0, dtype=float)
-    B = x0.shape[0]
-    n_steps = max(1, math.ceil(t_end / dt))
-    dt = t_end / n_steps
-    T, K = t_eval.size, keep.size
-    out_x, out_u = np.empty((B, T, K)), np.empty((B, T, K))
-    status, final_x, final_u = np.zeros(B, dtype=np.int64), np.empty_like(x0), np.empty_like(u0)
+    x0, u0, n_steps, dt, out_x, out_u, status, final_x, final_u = verlet_arrays(x0, u0, t_eval, t_end, dt, keep)
+    B, T = x0.shape[0], t_eval.size
     stateful = memory is not None
     memory = np.array(memory if stateful else np.zeros((B, 0)), dtype=float)  # a copy: the kernel updates it
     out_m = np.zeros((B, T, memory.shape[1]))

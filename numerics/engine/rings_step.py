@@ -57,6 +57,7 @@ import numpy as np
 
 from . import rings_kernels
 from ._compiled import Packed, jit
+from ._kernel_calls import verlet_arrays
 
 __all__ = [
     "rings_derivative",
@@ -360,15 +361,8 @@ def verlet_rings(packed: Packed, x0, u0, t_eval, t_end, dt, keep, g):
     """The splitting scheme of the module notes over ``t_eval`` for one or more runs (rows of x0, u0): the same
     returns as :func:`ringchain.numerics.engine.kernels.verlet` (x and u of ``keep`` (B, T, K), final x and u, status,
     the step, the number of steps)."""
-    x0 = np.ascontiguousarray(x0, dtype=float)
-    u0 = np.ascontiguousarray(u0, dtype=float)
-    B = x0.shape[0]
-    n_steps = max(1, math.ceil(t_end / dt))
-    dt = t_end / n_steps
-    T, K = t_eval.size, keep.size
-    out_x, out_u = np.empty((B, T, K)), np.empty((B, T, K))
-    status, final_x, final_u = np.zeros(B, dtype=np.int64), np.empty_like(x0), np.empty_like(u0)
-    for b in range(B):
+    x0, u0, n_steps, dt, out_x, out_u, status, final_x, final_u = verlet_arrays(x0, u0, t_eval, t_end, dt, keep)
+    for b in range(x0.shape[0]):
         code, x, u = _verlet_rings_run(packed, float(g), x0[b], u0[b], np.ascontiguousarray(t_eval, dtype=float),
                                        int(n_steps), float(dt), np.ascontiguousarray(keep, dtype=np.int64), out_x[b],
                                        out_u[b])  # fmt: skip
