@@ -51,12 +51,20 @@ def over_threads(kernel, B, parallel, *args):
             done.result()
 
 
+def kernel_array(a, dtype=float) -> np.ndarray:
+    """``a`` as a C-contiguous, writable array of ``dtype`` for a kernel's argument (copied only where it is not one
+    already).  Numba compiles a kernel once per type of its arguments, and a read-only array (a cached table, a
+    broadcast, a frozen result) is another type: one read-only argument compiles the whole integrator again (once
+    every run of the suite did, for a read-only ``t_eval`` and the rings' read-only table)."""
+    return np.require(a, dtype=dtype, requirements=("C", "W"))
+
+
 def verlet_arrays(x0, u0, t_eval, t_end, dt, keep):
     """What a fixed-step run of B runs (rows of ``x0``, ``u0``) over ``t_eval`` starts from: x0, u0 as contiguous
     floats, the number of steps and the step (``t_end`` in ceil(t_end/dt) equal steps, s), and the outputs to fill:
     x and u of ``keep`` (B, T, K), the exit status (B,), the final x and u (B, n)."""
-    x0 = np.ascontiguousarray(x0, dtype=float)
-    u0 = np.ascontiguousarray(u0, dtype=float)
+    x0 = kernel_array(x0)
+    u0 = kernel_array(u0)
     B = x0.shape[0]
     n_steps = max(1, math.ceil(t_end / dt))
     T, K = t_eval.size, keep.size

@@ -31,7 +31,7 @@ from typing import NamedTuple
 import numpy as np
 
 from ._compiled import jit
-from ._kernel_calls import over_threads
+from ._kernel_calls import kernel_array, over_threads
 from .kernels import law_force
 from .packing import LAW_KINDS, pack
 
@@ -154,7 +154,7 @@ def fields(network, x, u=None, links=None, sites=None, memory=None, g=0.0, energ
                          "Network.energy")  # fmt: skip
     packed = pack(network)
     d, S = network.dim, network.n_sites
-    x = np.ascontiguousarray(x, dtype=float)
+    x = kernel_array(x, dtype=float)
     T = x.shape[0]
     links = np.arange(network.n_links) if links is None else np.asarray(links, dtype=np.int64)
     column = np.arange(S) if sites is None else np.full(S, -1)
@@ -167,12 +167,12 @@ def fields(network, x, u=None, links=None, sites=None, memory=None, g=0.0, energ
         raise ValueError("the forces of these links need sites that were not recorded (record their rings)")
     ci, cj = ci * d, np.where(cj < 0, -1, cj * d)  # the first coordinate of each end in a row of x
     damped = bool(packed.ints[3])
-    u = x if u is None else np.ascontiguousarray(u, dtype=float)
+    u = x if u is None else kernel_array(u, dtype=float)
     if damped and u is x:
         raise ValueError("a damped network needs the velocities u")
     if network.stateful:
         memory = np.broadcast_to(network.initial_memory()[:1], (T, network.n_links)) if memory is None else memory
-    memory = np.ascontiguousarray(memory, dtype=float) if network.stateful else np.zeros((0, 0))
+    memory = kernel_array(memory, dtype=float) if network.stateful else np.zeros((0, 0))
     bp = member if packed.par.shape[0] > 1 else 0
     work = T * (network.n_links if energies else links.size)
     threaded = work >= _THREADED_WORK
@@ -192,7 +192,7 @@ def fields(network, x, u=None, links=None, sites=None, memory=None, g=0.0, energ
         return Fields(force, None, None, None, None, 0.0)
     own = network.member(member) if network.batch_shape else network
     motion = np.empty((T, 2))
-    over_threads(_motion, T, threaded, x, u, np.repeat(own.mass, d), np.ascontiguousarray(own.weight_mass, dtype=float),
+    over_threads(_motion, T, threaded, x, u, np.repeat(own.mass, d), kernel_array(own.weight_mass, dtype=float),
                  d, motion)  # fmt: skip
     plastic = 0.0
     for law, index in own.groups:

@@ -76,7 +76,7 @@ from numba.extending import overload
 
 from . import rings_step
 from ._compiled import CACHE, Packed, PackedRingChain, PackedRings
-from ._kernel_calls import announce_compile, over_threads, verlet_arrays
+from ._kernel_calls import announce_compile, kernel_array, over_threads, verlet_arrays
 from .packing import LAW_KINDS, PARAMETERS, pack, pack_network, pack_ring_chain
 
 __all__ = [
@@ -394,9 +394,9 @@ def _accelerations_of(m, b, g, x, u, out, memory):
 def accelerations(packed: Packed, x, u=None, g=9.80665, member=0, memory=None) -> np.ndarray:
     """Accelerations of one state (m/s^2), for tests: the compiled right-hand side against the NumPy one
     (``memory``: the largest approach of each link, m, for laws with memory; read, never written)."""
-    x = np.ascontiguousarray(x, dtype=float)
-    u = np.zeros_like(x) if u is None else np.ascontiguousarray(u, dtype=float)
-    memory = np.zeros(0) if memory is None else np.ascontiguousarray(memory, dtype=float)
+    x = kernel_array(x, dtype=float)
+    u = np.zeros_like(x) if u is None else kernel_array(u, dtype=float)
+    memory = np.zeros(0) if memory is None else kernel_array(memory, dtype=float)
     out = np.empty_like(x)
     _accelerations_of(packed, member, float(g), x, u, out, memory)
     return out
@@ -731,15 +731,15 @@ def dopri5(
     over all of them (forward differences between runs then share their steps).  ``locate``: each step ends
     where a contact opens or closes (the module notes); False steps over them, as a plain pair does.
     """
-    y0 = np.ascontiguousarray(y0, dtype=float)
+    y0 = kernel_array(y0, dtype=float)
     B = y0.shape[0]
     T, K = t_eval.size, keep.size
     N = int(packed.ints[2])
     out_x, out_u, out_w = np.empty((B, T, K)), np.empty((B, T, K)), np.zeros((B, T))
     out_m = np.zeros((B, T, y0.shape[1] - 2 * N - int(packed.ints[3] != 0)))
     status, stats, final = np.zeros(B, dtype=np.int64), np.zeros((B, 4), dtype=np.int64), np.empty_like(y0)
-    args = (packed, float(g), y0, np.ascontiguousarray(t_eval, dtype=float), float(rtol),
-            np.ascontiguousarray(atol, dtype=float), np.ascontiguousarray(keep, dtype=np.int64), N, out_x, out_u, out_w,
+    args = (packed, float(g), y0, kernel_array(t_eval, dtype=float), float(rtol),
+            kernel_array(atol, dtype=float), kernel_array(keep, dtype=np.int64), N, out_x, out_u, out_w,
             int(max_steps), status, stats, final, out_m)  # fmt: skip
     announce_compile(_dopri5_runs, "dopri5", CACHE, (*args, 0, B, bool(shared), bool(locate)))
     if shared:
@@ -827,10 +827,10 @@ def verlet(packed: Packed, x0, u0, t_eval, t_end, dt, keep, g, *, parallel=None,
         float(g),
         x0,
         u0,
-        np.ascontiguousarray(t_eval, dtype=float),
+        kernel_array(t_eval, dtype=float),
         int(n_steps),
         float(dt),
-        np.ascontiguousarray(keep, dtype=np.int64),
+        kernel_array(keep, dtype=np.int64),
         out_x,
         out_u,
         status,

@@ -13,6 +13,7 @@ import weakref
 import numpy as np
 
 from ._compiled import Packed, PackedRingChain
+from ._kernel_calls import kernel_array
 
 __all__ = ["PARAMETERS", "LAW_KINDS", "pack", "pack_network", "pack_ring_chain"]
 
@@ -67,9 +68,9 @@ def pack_network(net) -> Packed:
     # The fast path: a chain (Network.is_path) whose link k is the one of site k.
     path = net.is_path and np.array_equal(net.i, np.arange(L))
     ints = np.array([0, d, net.n_coords, int(net.damped), S, L, 0, 0, 0, int(path)], dtype=np.int64)
-    return Packed(ints, _empty(2), np.ascontiguousarray(1.0 / mass), np.ascontiguousarray(gravity, dtype=float),
-                  net.i.astype(np.int64), net.j.astype(np.int64), kind, par, np.ascontiguousarray(rest_vectors),
-                  np.ascontiguousarray(spans), np.ascontiguousarray(prestretch), _empty(0, 0), _empty(0),
+    return Packed(ints, _empty(2), kernel_array(1.0 / mass), kernel_array(gravity, dtype=float),
+                  net.i.astype(np.int64), net.j.astype(np.int64), kind, par, kernel_array(rest_vectors),
+                  kernel_array(spans), kernel_array(prestretch), _empty(0, 0), _empty(0),
                   _empty(0))  # fmt: skip
 
 
@@ -81,8 +82,8 @@ def pack_ring_chain(chain) -> PackedRingChain:
     return PackedRingChain(ints, np.array([chain.K_c, chain.n]), _empty(1, 0), np.atleast_2d(ring.rigid.astype(float)),
                   _empty(0, dtype=np.int64), _empty(0, dtype=np.int64), _empty(0, dtype=np.int64),
                   _empty(1, 0, PARAMETERS), _empty(0, 1), _empty(0), _empty(0),
-                  np.ascontiguousarray(coupling), np.ascontiguousarray(ring.inverse_mass[:, 1]),
-                  np.ascontiguousarray(ring.inverse_mass[:, 0]))  # fmt: skip
+                  kernel_array(coupling), kernel_array(ring.inverse_mass[:, 1]),
+                  kernel_array(ring.inverse_mass[:, 0]))  # fmt: skip
 
 
 # -- the laws --------------------------------------------------------------------------------------------------

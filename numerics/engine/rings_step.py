@@ -57,7 +57,7 @@ import numpy as np
 
 from . import rings_kernels
 from ._compiled import Packed, jit
-from ._kernel_calls import verlet_arrays
+from ._kernel_calls import kernel_array, verlet_arrays
 
 __all__ = [
     "rings_derivative",
@@ -328,7 +328,7 @@ def _verlet_rings_run(m, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u):
     R = np.empty((n, 3, 3))
     load = np.empty((n, 6))
     x_prev, u_prev = np.empty(N), np.empty(N)
-    loads(m, x, u, R, load)
+    loads(m, x, u, R, load, True)
     T = t_eval.size
     j = 0
     while j < T and t_eval[j] / dt - 1e-9 <= 0.0:
@@ -340,7 +340,7 @@ def _verlet_rings_run(m, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u):
             x_prev[c], u_prev[c] = x[c], u[c]
         _kick(m, x, u, R, load, 0.5 * dt, g)
         _drift(m, x, u, R, dt)
-        loads(m, x, u, R, load)
+        loads(m, x, u, R, load, True)
         _kick(m, x, u, R, load, 0.5 * dt, g)
         while j < T and math.ceil(t_eval[j] / dt - 1e-9) - 1 == k:  # linear between the step's ends (second order)
             s = t_eval[j] / dt - k
@@ -363,8 +363,8 @@ def verlet_rings(packed: Packed, x0, u0, t_eval, t_end, dt, keep, g):
     the step, the number of steps)."""
     x0, u0, n_steps, dt, out_x, out_u, status, final_x, final_u = verlet_arrays(x0, u0, t_eval, t_end, dt, keep)
     for b in range(x0.shape[0]):
-        code, x, u = _verlet_rings_run(packed, float(g), x0[b], u0[b], np.ascontiguousarray(t_eval, dtype=float),
-                                       int(n_steps), float(dt), np.ascontiguousarray(keep, dtype=np.int64), out_x[b],
+        code, x, u = _verlet_rings_run(packed, float(g), x0[b], u0[b], kernel_array(t_eval, dtype=float),
+                                       int(n_steps), float(dt), kernel_array(keep, dtype=np.int64), out_x[b],
                                        out_u[b])  # fmt: skip
         status[b], final_x[b], final_u[b] = code, x, u
     return out_x, out_u, final_x, final_u, status, dt, n_steps

@@ -49,6 +49,7 @@ from ringchain.theory import STANDARD_GRAVITY, Ring, torus_moments
 from ringchain.theory import _validate as v
 
 from ..contact.tori import candidate_pairs, linking_number
+from ..engine._kernel_calls import kernel_array
 
 __all__ = ["Rings", "RingsSimulation", "RingsBatch", "RingsEnergy", "LAWS"]
 
@@ -400,7 +401,7 @@ class RingsDynamics:
         hertz = model.law == "hertz"
         kind = np.full(L, 0 if hertz else 1, dtype=np.int64)
         table, step = elliptical_factor_grid() if hertz else (np.ones(4), 1.0)
-        table = np.ascontiguousarray(table, dtype=float)
+        table = kernel_array(table, dtype=float)
         moduli = np.zeros(L)
         if hertz and L:
             E = np.array([ring.material.E for ring in model.rings])
@@ -409,7 +410,7 @@ class RingsDynamics:
             moduli = np.asarray(contact_modulus_pair(E[i], nu[i], E[j], nu[j]), dtype=float) * self.stiffness_scale
         return PackedRings(ints, np.array([model.slip_speed, step]), np.zeros((1, 7 * n)), gravity.reshape(1, -1),
                       model.pairs[:, 0].copy(), model.pairs[:, 1].copy(), kind, par, warm, moduli, np.zeros(L),
-                      np.ascontiguousarray(bodies), table, np.zeros(n))  # fmt: skip
+                      kernel_array(bodies), table, np.zeros(n))  # fmt: skip
 
     def packed(self):
         """The :class:`~ringchain.numerics.engine.kernels.PackedRings` form (kind 2) of the rings, made once per run."""
@@ -449,7 +450,7 @@ class RingsDynamics:
 
         def rhs(t, y):
             dy = np.empty_like(y)
-            derivative(m, float(g), np.ascontiguousarray(y), dy)
+            derivative(m, float(g), kernel_array(y), dy)
             return dy
 
         return rhs
@@ -496,7 +497,7 @@ class RingsDynamics:
         gravity = g * np.einsum("i,ki->k", mass * free, X[..., 2] - X0[..., 2])
         m = self.packed()
         record = np.zeros((X.shape[0], len(model.pairs), 2, 12))
-        contact_state(m, np.ascontiguousarray(X.reshape(X.shape[0], -1)), np.ascontiguousarray(U.reshape(
+        contact_state(m, kernel_array(X.reshape(X.shape[0], -1)), kernel_array(U.reshape(
             U.shape[0], -1)), np.zeros_like(m.rest_vectors), record)  # fmt: skip
         contact = record[..., 11].sum(axis=(1, 2))
         return RingsEnergy(translational.reshape(shape), rotational.reshape(shape), contact.reshape(shape),
@@ -527,7 +528,7 @@ class RingsDynamics:
             record = np.zeros((x0.shape[0], len(model.pairs), 2, 12))
             from ..engine.rings_step import contact_state
 
-            contact_state(m, np.ascontiguousarray(x0), np.ascontiguousarray(u0), np.zeros_like(m.rest_vectors), record)
+            contact_state(m, kernel_array(x0), kernel_array(u0), np.zeros_like(m.rest_vectors), record)
             X = np.maximum(X, np.max(record[..., 0], axis=(1, 2), initial=0.0))
         return X, speed, energy
 
@@ -633,7 +634,7 @@ class RingsSimulation:
         dyn = self.model.dynamics()
         m = dyn.packed()
         out = np.zeros((self.t.size, len(self.model.pairs), 2, 12))
-        contact_state(m, np.ascontiguousarray(self.x), np.ascontiguousarray(self.u), np.zeros_like(m.rest_vectors), out)
+        contact_state(m, kernel_array(self.x), kernel_array(self.u), np.zeros_like(m.rest_vectors), out)
         return out
 
     @property

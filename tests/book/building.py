@@ -28,7 +28,7 @@ def newest_source_mtime() -> float:
     paths = [*BOOK.glob("*.md"), *BOOK.glob("*.yml"), *BOOK.glob("*.py")]
     paths += [BOOK / "references.bib", BOOK / "matplotlibrc"]
     paths += [BOOK / "browser_check.js", *(BOOK / "_css").glob("*.css")]
-    paths += [*(ROOT / "theory").glob("*.py"), *(ROOT / "numerics").glob("*.py")]
+    paths += [*(ROOT / "theory").glob("*.py"), *(ROOT / "numerics").rglob("*.py")]
     return max(p.stat().st_mtime for p in paths)
 
 
