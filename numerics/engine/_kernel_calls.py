@@ -8,7 +8,10 @@ its own module's file).
 - :func:`announce_compile` prints one line on stderr before a kernel is compiled rather than loaded from
   the disk cache: ``ringchain: compiling the integrator for this machine, once: about N s; cached in ...``.
   N is the compile time of that kernel measured on a quiet two-core machine (:data:`COMPILE_SECONDS`),
-  scaled by the load average per core when the machine is busier.
+  scaled by the load average per core when the machine is busier.  It then compiles the kernel under a lock on a
+  file of the cache folder: processes that start together on an empty cache (a pool's workers, the pages of a book,
+  the workers of a test session) would each compile the same kernel at once; the second one waits for the first,
+  then loads its kernel from the disk cache (a second or so, against 10-20 s of compiling).
 """
 
 from __future__ import annotations
@@ -123,6 +126,31 @@ def announce_compile(dispatcher, family: str, folder, args=None) -> None:
     where = f"cached in {folder}" if folder else "not cached: the cache folder is disabled or not writable"
     notify(f"ringchain: compiling the integrator for this machine, once: about {compile_estimate(family):.0f} s; "
            f"{where}")  # fmt: skip
+    if folder and args is not None:
+        compile_once(dispatcher, args, folder)
+
+
+def compile_once(dispatcher, args, folder) -> None:
+    """Compile ``dispatcher`` for the types of ``args`` holding an exclusive lock on a file of the cache
+    ``folder``, so that no two processes compile one kernel at once: a process that waited finds the kernel in the
+    disk cache and loads it (Numba's ``compile`` reads the cache first).  Without locks on this platform (no
+    ``fcntl``), or with a folder where no lock file can be made, it compiles as the call would."""
+    import numba
+
+    signature = tuple(numba.typeof(a) for a in args)
+    try:
+        import fcntl
+
+        handle = open(os.path.join(folder, f"{dispatcher.py_func.__name__}.lock"), "a")
+    except (ImportError, OSError):
+        dispatcher.compile(signature)
+        return
+    with handle:
+        fcntl.flock(handle, fcntl.LOCK_EX)
+        try:
+            dispatcher.compile(signature)
+        finally:
+            fcntl.flock(handle, fcntl.LOCK_UN)
 
 
 def notify(line: str) -> None:

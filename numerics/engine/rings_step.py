@@ -56,8 +56,8 @@ import math
 import numpy as np
 
 from . import rings_kernels
-from ._compiled import Packed, jit
-from ._kernel_calls import kernel_array, verlet_arrays
+from ._compiled import CACHE, Packed, jit
+from ._kernel_calls import announce_compile, kernel_array, verlet_arrays
 
 __all__ = [
     "rings_derivative",
@@ -362,9 +362,11 @@ def verlet_rings(packed: Packed, x0, u0, t_eval, t_end, dt, keep, g):
     returns as :func:`ringchain.numerics.engine.kernels.verlet` (x and u of ``keep`` (B, T, K), final x and u, status,
     the step, the number of steps)."""
     x0, u0, n_steps, dt, out_x, out_u, status, final_x, final_u = verlet_arrays(x0, u0, t_eval, t_end, dt, keep)
+    t_eval, keep = kernel_array(t_eval), kernel_array(keep, dtype=np.int64)
     for b in range(x0.shape[0]):
-        code, x, u = _verlet_rings_run(packed, float(g), x0[b], u0[b], kernel_array(t_eval, dtype=float),
-                                       int(n_steps), float(dt), kernel_array(keep, dtype=np.int64), out_x[b],
-                                       out_u[b])  # fmt: skip
+        args = (packed, float(g), x0[b], u0[b], t_eval, int(n_steps), float(dt), keep, out_x[b], out_u[b])
+        if b == 0:
+            announce_compile(_verlet_rings_run, "verlet", CACHE, args)
+        code, x, u = _verlet_rings_run(*args)
         status[b], final_x[b], final_u[b] = code, x, u
     return out_x, out_u, final_x, final_u, status, dt, n_steps

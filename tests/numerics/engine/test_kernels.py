@@ -403,3 +403,44 @@ def test_a_compile_is_foreseen_per_kind_of_argument():
     assert not will_compile(twice, (np.zeros(2),))
     assert will_compile(twice, (np.zeros(2, dtype=np.int64),))  # another type: a new compile
     assert not will_compile(twice)  # without arguments: whether any version exists
+
+
+LOCKED_MODULE = """
+import numba
+
+@numba.njit(cache=True)
+def twice(x):
+    return 2.0 * x
+"""
+
+LOCKED_PROBE = """
+import sys
+import numpy as np
+sys.path.insert(0, sys.argv[1])
+from ringchain.numerics.engine._kernel_calls import compile_once
+from locked_kernel import twice
+
+compile_once(twice, (np.zeros(3),), sys.argv[2])
+print(sum(twice._cache_misses.values()), sum(twice._cache_hits.values()))
+"""
+
+
+def test_two_processes_compile_a_kernel_once(tmp_path):
+    # Two processes that need the same kernel at once on an empty cache: the one that gets the lock compiles it,
+    # the other waits and loads it from the disk cache (Numba's own counters of misses and hits say which did
+    # what).  The test holds the lock while both start, so that both are waiting when it is released.
+    import fcntl
+    import time
+
+    (tmp_path / "locked_kernel.py").write_text(LOCKED_MODULE)
+    env = {**os.environ, "NUMBA_CACHE_DIR": os.fspath(tmp_path / "cache")}
+    with open(tmp_path / "twice.lock", "a") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        runs = [subprocess.Popen([sys.executable, "-c", LOCKED_PROBE, os.fspath(tmp_path), os.fspath(tmp_path)],
+                                 env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                for _ in range(2)]  # fmt: skip
+        time.sleep(1.0)  # both reach the lock (imports take well under a second once NumPy is cached)
+        fcntl.flock(lock, fcntl.LOCK_UN)
+    counts = sorted(tuple(int(c) for c in run.communicate(timeout=300)[0].split()) for run in runs)
+    assert all(run.returncode == 0 for run in runs)
+    assert counts == [(0, 1), (1, 0)]  # one loaded (a hit), one compiled (a miss)
