@@ -95,3 +95,24 @@ def pytest_unconfigure(config):
     if _BOOK_BUILD in config.stash:
         building, process = config.stash[_BOOK_BUILD]
         building.stop(process)
+
+
+def pytest_xdist_make_scheduler(config, log):
+    """xdist's files-as-units scheduling (``--dist loadfile``), but with every file of tests/theory in one unit.
+
+    The theory's tests derive in SymPy, and each derivation is cached in its process (``functools.cache``,
+    :class:`ringchain.theory._codegen.Derived`): run by one worker, a derivation that several files need -- the
+    comparison of every shipped entry with its derivation (tests/theory/test_shipped.py) and the symbolic tests of
+    the same module -- is made once instead of once per worker (about a third of the theory's time).  The unit holds
+    the most tests, so xdist hands it out first, and that worker takes more files only once it is nearly done.
+    """
+    if config.getoption("dist") != "loadfile":
+        return None
+    from xdist.scheduler import LoadFileScheduling
+
+    class TheoryInOneUnit(LoadFileScheduling):
+        def _split_scope(self, nodeid):
+            scope = super()._split_scope(nodeid)
+            return "tests/theory" if scope.startswith("tests/theory/") else scope
+
+    return TheoryInOneUnit(config, log)
