@@ -24,13 +24,13 @@ subcommand.
 from __future__ import annotations
 
 import argparse
+import gc
 import math
 import os
 import sys
 import warnings
 from pathlib import Path
 
-from ..jobs.paper import PAPER_DROP_HEIGHT, PAPER_FIGURES, STIFFNESS_SOURCES
 from . import _options as opt
 from . import rings as rings_cli
 from . import sheet as sheet_cli
@@ -205,6 +205,7 @@ def _version() -> str:
 
 def build_parser() -> argparse.ArgumentParser:
     from ..engine.integrate import METHODS
+    from ..jobs.paper import PAPER_DROP_HEIGHT, PAPER_FIGURES, STIFFNESS_SOURCES
 
     parser = _Parser(prog="ringchain", description=__doc__.split("\n\n")[0], allow_abbrev=False)
     parser.add_argument("--version", action="version", version=f"ringchain {_version()}")
@@ -282,12 +283,25 @@ _FLOATING_POINT = r"(overflow|invalid value|divide by zero) encountered"
 
 
 def main(argv=None) -> int:
-    """Run ``ringchain`` with ``argv`` (default ``sys.argv[1:]``); returns the exit code."""
-    parser = build_parser()
+    """Run ``ringchain`` with ``argv`` (default ``sys.argv[1:]``); returns the exit code.
+
+    Run as the process's own command (``argv`` None: the ``ringchain`` script, ``python -m``), the cyclic garbage
+    collector is paused while the command starts (the imports and the parser make objects that live as long
+    as the process, which the collector would walk again and again) and those objects are then set aside
+    (:func:`gc.freeze`) before it resumes for the command's own work.
+    """
+    starting = argv is None and gc.isenabled()
+    if starting:
+        gc.disable()
     try:
+        parser = build_parser()
         args = parser.parse_args(argv)
     except SystemExit as exc:  # --help (0) or a usage error (2), already printed
         return int(exc.code or 0)
+    finally:
+        if starting:
+            gc.freeze()
+            gc.enable()
     command = " ".join(filter(None, (args.command, getattr(args, "action", None), getattr(args, "fit_command", None))))
     try:
         with warnings.catch_warnings():

@@ -107,7 +107,7 @@ def add_parser(sub, *, geometry) -> None:
     impact.add_argument("--drop-height", type=float, nargs="+", metavar="M", help="drop height of each file, m")
     impact.add_argument("--impact-velocity", type=float, nargs="+", metavar="M/S",
                         help="impact speed of each file, m/s")  # fmt: skip
-    p.add_argument("--free", type=_free_list, default=_free_list(DEFAULT_FREE), metavar="LIST",
+    p.add_argument("--free", type=_free_list, default=DEFAULT_FREE, metavar="LIST",
                    help=f"free parameters, a comma list (default {DEFAULT_FREE}; also K, n, K_b, gamma_b, v0, "
                         "h0)")  # fmt: skip
     p.add_argument("--no-offsets", action="store_true", help="do not fit a DC offset per channel")
