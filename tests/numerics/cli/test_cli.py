@@ -285,6 +285,19 @@ def test_version_is_the_package_version_in_one_line(capsys):
     assert (done.returncode, done.stdout, done.stderr) == (0, f"ringchain {version('ringchain')}\n", "")
 
 
+def test_simulate_without_a_plot_imports_neither_matplotlib_nor_sympy(tmp_path):
+    # A fresh process, as the ringchain script runs it: the run needs the kernels and NumPy, not the plotting
+    # library (only --plot does) nor the symbolic engine (the theory's generated code is read from disk).
+    program = (
+        "import sys; from ringchain.numerics.cli import main; sys.argv[0] = 'ringchain'; code = main(); "
+        "print(code, *sorted({name.split('.')[0] for name in sys.modules} & {'matplotlib', 'sympy'}))"
+    )
+    argv = [sys.executable, "-c", program, *SIMULATE, "--out", str(tmp_path / "run.csv")]
+    done = subprocess.run(argv, capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines()[-1] == "0"
+
+
 def test_console_script_exit_codes():
     script = Path(sys.executable).with_name("ringchain")
     ok = subprocess.run([script, "ring", "--R", "22.5e-3", "--r", "2.5e-3"], capture_output=True, text=True)
