@@ -15,7 +15,8 @@ tests/test_architecture.py):
 
 This face re-exports every public name, so ``from ringchain.numerics import simulate`` never depends on
 where a name lives; ``ringchain.numerics.laws`` and ``ringchain.numerics.signals`` are the engine's
-modules under their public names.
+modules under their public names.  A name's module is imported when the name is first read (``_WHERE``
+below): importing the package costs NumPy and the theory's face, not Numba, SciPy or Matplotlib.
 """
 
 import importlib

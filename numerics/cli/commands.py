@@ -32,9 +32,9 @@ import warnings
 from pathlib import Path
 
 from . import _options as opt
+from . import ensemble as ensemble_cli
 from . import rings as rings_cli
 from . import sheet as sheet_cli
-from .ensemble import add_parser as add_ensemble_parser
 
 __all__ = ["main", "build_parser"]
 
@@ -203,7 +203,10 @@ def _version() -> str:
         return "(not installed)"
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(command: str | None = None) -> argparse.ArgumentParser:
+    """The parser of ``ringchain``; given the ``command`` a process runs, the options of the subcommands kept in
+    modules of their own (``fit``, ``ensemble``, ``sheet``, ``rings``) are built only if it is one of them (the
+    others are listed with their help, as ``ringchain --help`` shows them: building them imports their jobs)."""
     from ..engine.integrate import METHODS
     from ..jobs.paper import PAPER_DROP_HEIGHT, PAPER_FIGURES, STIFFNESS_SOURCES
 
@@ -264,13 +267,24 @@ def build_parser() -> argparse.ArgumentParser:
                        allow_abbrev=False).set_defaults(func=_cache_info)  # fmt: skip
     actions.add_parser("clear", help="remove every entry (the theory is derived again on next use)",
                        allow_abbrev=False).set_defaults(func=_cache_clear)  # fmt: skip
-    from .fit import add_parser as add_fit_parser
+    from . import fit as fit_cli
 
-    add_fit_parser(sub, geometry=opt.geometry_options)  # sets its own func (fit_cli.run)
-    add_ensemble_parser(sub)  # ringchain ensemble: sets its own func (ensemble_cli.run)
-    sheet_cli.add_parser(sub)  # ringchain sheet: sets its own func (sheet_cli.run)
-    rings_cli.add_parser(sub)  # ringchain rings: sets its own func (rings_cli.run)
+    built = {"fit": lambda: fit_cli.add_parser(sub, geometry=opt.geometry_options),  # each sets its own func
+             "ensemble": lambda: ensemble_cli.add_parser(sub), "sheet": lambda: sheet_cli.add_parser(sub),
+             "rings": lambda: rings_cli.add_parser(sub)}  # fmt: skip
+    helps = {"fit": fit_cli.HELP, "ensemble": ensemble_cli.HELP, "sheet": sheet_cli.HELP, "rings": rings_cli.HELP}
+    known = {*sub.choices, *built}
+    for name, build in built.items():
+        if command in (None, name) or command not in known:
+            build()
+        else:
+            sub.add_parser(name, help=helps[name], allow_abbrev=False)
     return parser
+
+
+def _command_of(argv) -> str | None:
+    """The subcommand ``argv`` (default ``sys.argv[1:]``) names: its first word that is not an option."""
+    return next((word for word in (sys.argv[1:] if argv is None else argv) if not word.startswith("-")), None)
 
 
 #: Exit codes of a command its reader stopped (128 + SIGPIPE, as a shell reports ``yes | head``) and of one
@@ -294,7 +308,7 @@ def main(argv=None) -> int:
     if starting:
         gc.disable()
     try:
-        parser = build_parser()
+        parser = build_parser(_command_of(argv))
         args = parser.parse_args(argv)
     except SystemExit as exc:  # --help (0) or a usage error (2), already printed
         return int(exc.code or 0)

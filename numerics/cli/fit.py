@@ -27,6 +27,9 @@ from ..engine._files import save_figure
 
 __all__ = ["add_parser", "run"]
 
+#: What ``ringchain --help`` says of ``fit``.
+HELP = "fit parameters to measurements (static test, speeds, sensor traces)"
+
 #: Free parameters of ``ringchain fit traces`` by default.
 DEFAULT_FREE = "m,gamma,t0"
 
@@ -53,8 +56,8 @@ def add_parser(sub, *, geometry) -> None:
     from ..layouts.chain import MODELS
     from . import _options as opt
 
-    fit = sub.add_parser("fit", help="fit parameters to measurements (static test, speeds, sensor traces)",
-                         allow_abbrev=False, description="Fit parameters to measurements: a quasi-static test, "
+    fit = sub.add_parser("fit", help=HELP, allow_abbrev=False,
+                         description="Fit parameters to measurements: a quasi-static test, "
                          "(peak force, speed) pairs, or sensor traces (SI units).")  # fmt: skip
     kinds = fit.add_subparsers(dest="fit_command", required=True, metavar="{static,speed,traces}")
 
