@@ -7,10 +7,11 @@ interpreter sharing that folder (warm).  Printed:
 - the wall and CPU time of a warm process (median of ``--repeat``), beside an empty interpreter's start
   (``python -c pass``) and the issue's bound (1.0 s wall);
 - where a warm process spends its time (median of ``--repeat`` instrumented processes): ``imports`` (every
-  outermost import outside the kernel's load), ``kernel load`` (Numba's start-up and the cached kernels read
-  from disk: ``numba.core.caching.Cache.load_overload``, with the imports Numba makes on its way), ``output``
-  (the CSV, :func:`~ringchain.numerics.write_traces`), ``run`` (the rest of the command: parsing, the
-  chain, the integration, reading the pulses, printing) and the garbage collector's share of all of them;
+  outermost import outside the kernel's load; of them, the first imports of NumPy and of Numba), ``kernel
+  load`` (Numba's start-up and the cached kernels read from disk: ``numba.core.caching.Cache.load_overload``,
+  with the imports Numba makes on its way, SciPy's BLAS among them), ``output`` (the CSV,
+  :func:`~ringchain.numerics.write_traces`), ``run`` (the rest of the command: parsing, the chain, the
+  integration, reading the pulses, printing) and the garbage collector's share of all of them;
 - how many compiled kernels the command decorated and how many it loaded, and which heavy packages it
   imported (a run without ``--plot`` needs neither Matplotlib nor SymPy).
 
@@ -40,7 +41,7 @@ BOUND = 1.0
 PROBE = r"""
 import builtins, gc, json, sys, time
 start = time.perf_counter()
-phase = {"imports": 0.0, "kernel load": 0.0, "output": 0.0, "gc": 0.0}
+phase = {"imports": 0.0, "numpy": 0.0, "numba": 0.0, "kernel load": 0.0, "output": 0.0, "gc": 0.0}
 state = {"depth": 0, "loading": False, "patched": False, "gc_start": 0.0}
 counts = {"decorated": 0, "loaded": 0}
 original_import = builtins.__import__
@@ -92,16 +93,19 @@ def patch():
         traces.write_traces = timed_output(traces.write_traces)
 
 
-def timed_import(*args, **kwargs):
+def timed_import(name, *args, **kwargs):
     outermost = state["depth"] == 0 and not state["loading"]
+    first = name in ("numpy", "numba") and name not in sys.modules  # the first import of the package, wherever
     t = time.perf_counter()
     state["depth"] += 1
     try:
-        return original_import(*args, **kwargs)
+        return original_import(name, *args, **kwargs)
     finally:
         state["depth"] -= 1
         if outermost:
             phase["imports"] += time.perf_counter() - t
+        if first:
+            phase[name] = time.perf_counter() - t
         patch()
 
 
@@ -162,9 +166,10 @@ def main(argv=None):
           f" (bound {BOUND:.1f} s wall: {'met' if wall <= BOUND else 'NOT met'})")  # fmt: skip
     print(f"    of which an empty interpreter's start (python -c pass)  {empty:6.3f} s wall")
     print(f"  split of a warm process, median of {args.repeat} instrumented processes (s):")
-    for name in ("imports", "kernel load", "run", "output", "total", "gc"):
+    for name in ("imports", "numpy", "numba", "kernel load", "run", "output", "total", "gc"):
         value = statistics.median(p[name] for p in probes)
-        note = {"gc": "  (the garbage collector, inside the phases above)",
+        note = {"numpy": "  (of the imports: NumPy's own)", "numba": "  (of the imports: Numba's own, NumPy apart)",
+                "gc": "  (the garbage collector, inside the phases above)",
                 "total": "  (from the first import to the exit code)"}.get(name, "")  # fmt: skip
         print(f"    {name:<12} {value:6.3f}{note}")
     last = probes[-1]
