@@ -15,49 +15,73 @@ tests/test_architecture.py):
 
 This face re-exports every public name, so ``from ringchain.numerics import simulate`` never depends on
 where a name lives; ``ringchain.numerics.laws`` and ``ringchain.numerics.signals`` are the engine's
-modules under their public names.
+modules under their public names.  A name's module is imported when the name is first read (``_WHERE``
+below): importing the package costs NumPy and the theory's face, not Numba, SciPy or Matplotlib.
 """
 
+import importlib
 import sys
 
-from ringchain.theory import STANDARD_GRAVITY
-
-from .contact.angle import AngleContact, AnglePowerLaw, angle_power_law, contact_at_angle
-from .contact.bem import HALF_SPACE_LIMIT, ContactCurve, HalfSpaceWarning, PressureMaps, contact_curve
-from .contact.tori import CONTACT_FIELDS, TorusContacts, candidate_pairs, linking_number, torus_contacts
 from .engine import laws, signals
-from .engine.integrate import (
-    ADAPTIVE_METHODS,
-    DEFAULT_METHOD,
-    DEFAULT_RTOL,
-    METHODS,
-    VERLET_STEPS_PER_PERIOD,
-    IntegrationError,
-    RunEstimate,
-    RunTooLargeError,
-    estimate_run,
-    simulate,
-    simulate_batch,
-)
-from .engine.laws import linear_spring_force, power_law_force
-from .engine.network import ANCHOR, Links, Network
-from .engine.results import BatchSimulation, EnergyBudget, NetworkBatch, NetworkSimulation, Simulation
-from .engine.signals import NoPulseError, PulseError, TruncatedPulseError, UnresolvedPulseError
-from .engine.traces import DataError, read_speed_amplitude, read_static, read_traces, write_traces
-from .jobs.dissipation import energy_shares, equivalent_contact_dashpot, second_impact
-from .jobs.effective_mass import fit_effective_mass, predict_effective_mass
-from .jobs.ensemble import Ensemble, Summary, ensemble, summarize
-from .jobs.fit import FitError, FitResult, fit_speed_amplitude, fit_speed_lattice, fit_speed_rings, fit_static
-from .jobs.fit_dynamic import TraceRecord, fit_traces
-from .jobs.paper import STIFFNESS_SOURCES, PaperExperiment, paper_chain, paper_experiment
-from .jobs.sweep import Point, sweep, write_csv
-from .layouts.chain import MODELS, STRIKERS, SUPPORTS, Chain, initial_state
-from .layouts.disorder import DisorderWarning, draw_rings
-from .layouts.ring_beam import ReducedRing, RingModel
-from .layouts.ring_chain import RingChain, RingSimulation, simulate_rings
-from .layouts.rings import Rings, RingsBatch, RingsEnergy, RingsSimulation
-from .layouts.sheet import Sheet
-from .layouts.sheet_runs import SheetBatch, SheetSimulation, read_sheet_run, sheet_run_options
+
+#: Where each public name lives, relative to this package (or absolute).  The names are imported on first
+#: use (PEP 562: :func:`__getattr__` below), so that ``import ringchain.numerics`` loads neither Numba and the
+#: compiled kernels nor SciPy, Matplotlib or SymPy, and a command imports only what it runs.
+_WHERE = {
+    "ringchain.theory": ("STANDARD_GRAVITY",),
+    ".contact.angle": ("AngleContact", "AnglePowerLaw", "angle_power_law", "contact_at_angle"),
+    ".contact.bem": ("HALF_SPACE_LIMIT", "ContactCurve", "HalfSpaceWarning", "PressureMaps", "contact_curve"),
+    ".contact.tori": ("CONTACT_FIELDS", "TorusContacts", "candidate_pairs", "linking_number", "torus_contacts"),
+    ".engine.integrate": (
+        "ADAPTIVE_METHODS",
+        "DEFAULT_METHOD",
+        "DEFAULT_RTOL",
+        "METHODS",
+        "VERLET_STEPS_PER_PERIOD",
+        "IntegrationError",
+        "RunEstimate",
+        "RunTooLargeError",
+        "estimate_run",
+        "simulate",
+        "simulate_batch",
+    ),
+    ".engine.laws": ("linear_spring_force", "power_law_force"),
+    ".engine.network": ("ANCHOR", "Links", "Network"),
+    ".engine.results": ("BatchSimulation", "EnergyBudget", "NetworkBatch", "NetworkSimulation", "Simulation"),
+    ".engine.signals": ("NoPulseError", "PulseError", "TruncatedPulseError", "UnresolvedPulseError"),
+    ".engine.traces": ("DataError", "read_speed_amplitude", "read_static", "read_traces", "write_traces"),
+    ".jobs.dissipation": ("energy_shares", "equivalent_contact_dashpot", "second_impact"),
+    ".jobs.effective_mass": ("fit_effective_mass", "predict_effective_mass"),
+    ".jobs.ensemble": ("Ensemble", "Summary", "ensemble", "summarize"),
+    ".jobs.fit": ("FitError", "FitResult", "fit_speed_amplitude", "fit_speed_lattice", "fit_speed_rings", "fit_static"),
+    ".jobs.fit_dynamic": ("TraceRecord", "fit_traces"),
+    ".jobs.paper": ("STIFFNESS_SOURCES", "PaperExperiment", "paper_chain", "paper_experiment"),
+    ".jobs.sweep": ("Point", "sweep", "write_csv"),
+    ".layouts.chain": ("MODELS", "STRIKERS", "SUPPORTS", "Chain", "initial_state"),
+    ".layouts.disorder": ("DisorderWarning", "draw_rings"),
+    ".layouts.ring_beam": ("ReducedRing", "RingModel"),
+    ".layouts.ring_chain": ("RingChain", "RingSimulation", "simulate_rings"),
+    ".layouts.rings": ("Rings", "RingsBatch", "RingsEnergy", "RingsSimulation"),
+    ".layouts.sheet": ("Sheet",),
+    ".layouts.sheet_runs": ("SheetBatch", "SheetSimulation", "read_sheet_run", "sheet_run_options"),
+}
+_OWNER = {name: module for module, names in _WHERE.items() for name in names}
+
+
+def __getattr__(name: str):
+    """A public name read for the first time: import its module, keep the value here (the next read is an
+    ordinary attribute).  ``from ringchain.numerics import Chain``, ``numerics.Chain`` and ``import *`` (through
+    ``__all__``) work as with imports at the top."""
+    module = _OWNER.get(name)
+    if module is None:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = globals()[name] = getattr(importlib.import_module(module, __name__), name)
+    return value
+
+
+def __dir__():
+    return sorted({*globals(), *_OWNER})
+
 
 # The engine's laws and signals under their public module names (one module, two names: an import of
 # ringchain.numerics.laws finds it here after the package is imported, and objects compare equal).

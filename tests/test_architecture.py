@@ -7,6 +7,8 @@ only from a private module (``_validate``, ``_codegen``, ``_options``).
 
 import ast
 import importlib
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -153,3 +155,28 @@ def test_the_command_line_is_thin_and_no_module_is_huge():
 def test_the_engine_knows_no_layout_and_no_job(module):
     deps = graph()[f"ringchain.numerics.engine.{module}"]
     assert {dep for dep in deps if dep.startswith("ringchain.numerics") and floor(dep) != 0} == set()
+
+
+def test_the_numerics_face_hands_on_each_name_from_the_module_that_defines_it():
+    # The face imports a name's module on first use (numerics/__init__.py, PEP 562): each name it lists is the
+    # defining module's own object, every name of __all__ is listed once, and dir() shows them before any use.
+    import ringchain.numerics as face
+
+    listed = [name for names in face._WHERE.values() for name in names]
+    assert sorted(listed) == sorted(set(face.__all__) - {"laws", "signals"}) and len(listed) == len(set(listed))
+    for module, names in face._WHERE.items():
+        source = importlib.import_module(module, face.__name__)
+        assert all(getattr(face, name) is getattr(source, name) for name in names), module
+    assert set(face.__all__) <= set(dir(face))
+    with pytest.raises(AttributeError, match="no attribute 'not_a_name'"):
+        face.not_a_name  # noqa: B018
+
+
+def test_importing_the_numerics_loads_neither_sympy_nor_scipy_nor_matplotlib():
+    # A fresh interpreter (this session has imported everything): the numeric API starts without the symbolic
+    # engine, the plotting library, SciPy or Numba; each is imported by what needs it.
+    code = "import sys, ringchain.numerics; print(*sorted(sys.modules))"
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    loaded = set(done.stdout.split())
+    assert {"ringchain.numerics", "numpy"} <= loaded
+    assert {name.split(".")[0] for name in loaded} & {"sympy", "matplotlib", "scipy", "numba"} == set()

@@ -24,17 +24,17 @@ subcommand.
 from __future__ import annotations
 
 import argparse
+import gc
 import math
 import os
 import sys
 import warnings
 from pathlib import Path
 
-from ..jobs.paper import PAPER_DROP_HEIGHT, PAPER_FIGURES, STIFFNESS_SOURCES
 from . import _options as opt
+from . import ensemble as ensemble_cli
 from . import rings as rings_cli
 from . import sheet as sheet_cli
-from .ensemble import add_parser as add_ensemble_parser
 
 __all__ = ["main", "build_parser"]
 
@@ -203,8 +203,12 @@ def _version() -> str:
         return "(not installed)"
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(command: str | None = None) -> argparse.ArgumentParser:
+    """The parser of ``ringchain``; given the ``command`` a process runs, the options of the subcommands kept in
+    modules of their own (``fit``, ``ensemble``, ``sheet``, ``rings``) are built only if it is one of them (the
+    others are listed with their help, as ``ringchain --help`` shows them: building them imports their jobs)."""
     from ..engine.integrate import METHODS
+    from ..jobs.paper import PAPER_DROP_HEIGHT, PAPER_FIGURES, STIFFNESS_SOURCES
 
     parser = _Parser(prog="ringchain", description=__doc__.split("\n\n")[0], allow_abbrev=False)
     parser.add_argument("--version", action="version", version=f"ringchain {_version()}")
@@ -263,13 +267,24 @@ def build_parser() -> argparse.ArgumentParser:
                        allow_abbrev=False).set_defaults(func=_cache_info)  # fmt: skip
     actions.add_parser("clear", help="remove every entry (the theory is derived again on next use)",
                        allow_abbrev=False).set_defaults(func=_cache_clear)  # fmt: skip
-    from .fit import add_parser as add_fit_parser
+    from . import fit as fit_cli
 
-    add_fit_parser(sub, geometry=opt.geometry_options)  # sets its own func (fit_cli.run)
-    add_ensemble_parser(sub)  # ringchain ensemble: sets its own func (ensemble_cli.run)
-    sheet_cli.add_parser(sub)  # ringchain sheet: sets its own func (sheet_cli.run)
-    rings_cli.add_parser(sub)  # ringchain rings: sets its own func (rings_cli.run)
+    built = {"fit": lambda: fit_cli.add_parser(sub, geometry=opt.geometry_options),  # each sets its own func
+             "ensemble": lambda: ensemble_cli.add_parser(sub), "sheet": lambda: sheet_cli.add_parser(sub),
+             "rings": lambda: rings_cli.add_parser(sub)}  # fmt: skip
+    helps = {"fit": fit_cli.HELP, "ensemble": ensemble_cli.HELP, "sheet": sheet_cli.HELP, "rings": rings_cli.HELP}
+    known = {*sub.choices, *built}
+    for name, build in built.items():
+        if command in (None, name) or command not in known:
+            build()
+        else:
+            sub.add_parser(name, help=helps[name], allow_abbrev=False)
     return parser
+
+
+def _command_of(argv) -> str | None:
+    """The subcommand ``argv`` (default ``sys.argv[1:]``) names: its first word that is not an option."""
+    return next((word for word in (sys.argv[1:] if argv is None else argv) if not word.startswith("-")), None)
 
 
 #: Exit codes of a command its reader stopped (128 + SIGPIPE, as a shell reports ``yes | head``) and of one
@@ -282,12 +297,25 @@ _FLOATING_POINT = r"(overflow|invalid value|divide by zero) encountered"
 
 
 def main(argv=None) -> int:
-    """Run ``ringchain`` with ``argv`` (default ``sys.argv[1:]``); returns the exit code."""
-    parser = build_parser()
+    """Run ``ringchain`` with ``argv`` (default ``sys.argv[1:]``); returns the exit code.
+
+    Run as the process's own command (``argv`` None: the ``ringchain`` script, ``python -m``), the cyclic garbage
+    collector is paused while the command starts (the imports and the parser make objects that live as long
+    as the process, which the collector would walk again and again) and those objects are then set aside
+    (:func:`gc.freeze`) before it resumes for the command's own work.
+    """
+    starting = argv is None and gc.isenabled()
+    if starting:
+        gc.disable()
     try:
+        parser = build_parser(_command_of(argv))
         args = parser.parse_args(argv)
     except SystemExit as exc:  # --help (0) or a usage error (2), already printed
         return int(exc.code or 0)
+    finally:
+        if starting:
+            gc.freeze()
+            gc.enable()
     command = " ".join(filter(None, (args.command, getattr(args, "action", None), getattr(args, "fit_command", None))))
     try:
         with warnings.catch_warnings():

@@ -31,6 +31,10 @@ DEFAULT_COUNT = 100
 SHOWN_RINGS = 6
 
 
+#: What ``ringchain --help`` says of ``ensemble``.
+HELP = "disordered chains struck alike: peak force and arrival at every ring"
+
+
 def parse_spread(text: str) -> tuple[str, float]:
     """argparse type of one ``--spread`` value: ``NAME=VALUE``, a relative standard deviation >= 0 of NAME."""
     from ..layouts.disorder import SPREAD_NAMES
@@ -52,7 +56,7 @@ def add_parser(sub) -> None:
     from ..layouts.chain import MODELS
 
     p = sub.add_parser(
-        "ensemble", help="disordered chains struck alike: peak force and arrival at every ring", allow_abbrev=False,
+        "ensemble", help=HELP, allow_abbrev=False,
         description="Chains of rings that differ at random about one ring, struck alike and read at every ring. "
                     "Each --spread NAME=VALUE is a relative standard deviation (R, r, angle; K, m for the "
                     "power-law model).",

@@ -27,6 +27,9 @@ from ..engine._files import save_figure
 
 __all__ = ["add_parser", "run"]
 
+#: What ``ringchain --help`` says of ``fit``.
+HELP = "fit parameters to measurements (static test, speeds, sensor traces)"
+
 #: Free parameters of ``ringchain fit traces`` by default.
 DEFAULT_FREE = "m,gamma,t0"
 
@@ -53,8 +56,8 @@ def add_parser(sub, *, geometry) -> None:
     from ..layouts.chain import MODELS
     from . import _options as opt
 
-    fit = sub.add_parser("fit", help="fit parameters to measurements (static test, speeds, sensor traces)",
-                         allow_abbrev=False, description="Fit parameters to measurements: a quasi-static test, "
+    fit = sub.add_parser("fit", help=HELP, allow_abbrev=False,
+                         description="Fit parameters to measurements: a quasi-static test, "
                          "(peak force, speed) pairs, or sensor traces (SI units).")  # fmt: skip
     kinds = fit.add_subparsers(dest="fit_command", required=True, metavar="{static,speed,traces}")
 
@@ -107,7 +110,7 @@ def add_parser(sub, *, geometry) -> None:
     impact.add_argument("--drop-height", type=float, nargs="+", metavar="M", help="drop height of each file, m")
     impact.add_argument("--impact-velocity", type=float, nargs="+", metavar="M/S",
                         help="impact speed of each file, m/s")  # fmt: skip
-    p.add_argument("--free", type=_free_list, default=_free_list(DEFAULT_FREE), metavar="LIST",
+    p.add_argument("--free", type=_free_list, default=DEFAULT_FREE, metavar="LIST",
                    help=f"free parameters, a comma list (default {DEFAULT_FREE}; also K, n, K_b, gamma_b, v0, "
                         "h0)")  # fmt: skip
     p.add_argument("--no-offsets", action="store_true", help="do not fit a DC offset per channel")

@@ -41,12 +41,15 @@ def grid_size(text: str) -> tuple[int, ...]:
     return sizes
 
 
+#: What ``ringchain --help`` says of ``rings``.
+HELP = "rigid rings in 3D: a struck chain, a draped sheet, a PAM block; NetCDF, VTK"
+
+
 def add_parser(sub) -> None:
     """Add ``rings`` to the subparsers ``sub`` of ``ringchain``."""
     from ..engine.integrate import check_samples
 
-    p = sub.add_parser("rings", help="rigid rings in 3D: a struck chain, a draped sheet, a PAM block; NetCDF, VTK",
-                       allow_abbrev=False, description=__doc__.split("\n\n")[0])  # fmt: skip
+    p = sub.add_parser("rings", help=HELP, allow_abbrev=False, description=__doc__.split("\n\n")[0])  # fmt: skip
     p.add_argument("--layout", choices=LAYOUTS, default="chain", help="chain, mail (4-in-1) or pam (default chain)")
     p.add_argument("--rings", type=opt.Checked(int, lambda n: opt.v.count("rings", n, 2)), default=10,
                    help="rings of a chain (default 10)")  # fmt: skip

@@ -49,6 +49,10 @@ def netcdf_file(text: str) -> str:
     return opt.output_file(text)
 
 
+#: What ``ringchain --help`` says of ``sheet``.
+HELP = "an impact on a sheet of interlinked rings; fields to NetCDF"
+
+
 def struck_option(text: str):
     """argparse type of --struck: an edge, ``point`` or ROW,COL."""
     from ..layouts.sheet import EDGES
@@ -69,8 +73,7 @@ def add_parser(sub) -> None:
     from ..engine.integrate import METHODS, check_samples
     from ..layouts.sheet import PATTERNS
 
-    p = sub.add_parser("sheet", help="an impact on a sheet of interlinked rings; fields to NetCDF",
-                       allow_abbrev=False, description=__doc__.split("\n\n")[0])  # fmt: skip
+    p = sub.add_parser("sheet", help=HELP, allow_abbrev=False, description=__doc__.split("\n\n")[0])  # fmt: skip
     # ROWSxCOLS and ROW,COL may start with a minus sign: read "-3x4" and "-1,2" as values (refused with a reason),
     # not as unknown options (argparse's "expected one argument").
     p._negative_number_matcher = re.compile(r"^-\d")

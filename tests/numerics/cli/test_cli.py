@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from ringchain.numerics import Chain, simulate
-from ringchain.numerics.cli.commands import main
+from ringchain.numerics.cli.commands import build_parser, main
 from ringchain.theory import Ring, paper_data, si_to_n_per_mm, solitary_wave_speed
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
@@ -283,6 +283,28 @@ def test_version_is_the_package_version_in_one_line(capsys):
     script = Path(sys.executable).with_name("ringchain")
     done = subprocess.run([script, "--version"], capture_output=True, text=True)
     assert (done.returncode, done.stdout, done.stderr) == (0, f"ringchain {version('ringchain')}\n", "")
+
+
+def test_the_parser_of_one_command_parses_it_as_the_whole_parser_does(tmp_path):
+    # main() builds the options of fit, ensemble, sheet and rings only when it runs one of them: the command it runs
+    # reads the same, and ringchain --help lists every command with the same words.
+    for argv in ([*SIMULATE, "--out", str(tmp_path / "run.csv")], ["fit", "traces", str(tmp_path / "t.csv"),
+                 "--drop-height", "0.05"], ["cache", "info"]):  # fmt: skip
+        assert vars(build_parser(argv[0]).parse_args(argv)) == vars(build_parser().parse_args(argv))
+    assert build_parser("simulate").format_help() == build_parser().format_help()
+
+
+def test_simulate_without_a_plot_imports_neither_matplotlib_nor_sympy(tmp_path):
+    # A fresh process, as the ringchain script runs it: the run needs the kernels and NumPy, not the plotting
+    # library (only --plot does) nor the symbolic engine (the theory's generated code is read from disk).
+    program = (
+        "import sys; from ringchain.numerics.cli import main; sys.argv[0] = 'ringchain'; code = main(); "
+        "print(code, *sorted({name.split('.')[0] for name in sys.modules} & {'matplotlib', 'sympy'}))"
+    )
+    argv = [sys.executable, "-c", program, *SIMULATE, "--out", str(tmp_path / "run.csv")]
+    done = subprocess.run(argv, capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines()[-1] == "0"
 
 
 def test_console_script_exit_codes():
