@@ -280,7 +280,10 @@ def _compiled(method, dyn, x0, u0, scales, t_eval, t_end, rtol, atol, dt, g, kee
 
     The kernels check that the state stays finite; the energy watch reads the final state.
     """
-    from . import kernels
+    from ._kernel_calls import collector_paused
+
+    with collector_paused():  # the first import starts Numba and decorates the kernels
+        from . import kernels
 
     packed = kernels.pack(dyn)
     B, N = x0.shape
