@@ -171,7 +171,7 @@ class Point:
     @property
     def ring(self) -> Ring:
         """The ring of this point (R = R/r x r)."""
-        return Ring.from_aspect_ratio(self.R_over_r, r=self.r, material=self.material, angle=self.angle)
+        return _ring(self.R_over_r, self.r, self.material, self.angle)
 
     @property
     def dynamic(self) -> bool:
@@ -199,7 +199,6 @@ class Point:
     def columns(self) -> dict:
         """The row's columns before the run: the point and the static theory of its contact (Eqs. 1-4)."""
         ring = self.ring
-        K, n = ring.power_law()
         return {
             "R_over_r": self.R_over_r,
             "R_m": ring.R,
@@ -213,14 +212,32 @@ class Point:
             **_striker_columns(self.striker_mass, self.m_eff_ratio * ring.mass, ring.mass),
             "drop_height_m": self.drop_height,
             "impact_velocity_m_s": self.speed,
-            "ring_mass_kg": ring.mass,
-            "spacing_m": ring.spacing,
-            "K_c_N_m1.5": ring.K_c,
-            "K_b_N_m": ring.K_b,
-            "crossover_force_N": ring.crossover_force,
-            "K_fit_N_mn": K,
-            "n_fit": n,
+            **_contact_theory(ring),
         }
+
+
+# The points of a sweep share a few rings: each ring and the static theory of its contact (Eqs. 1-4, a fit of
+# the power law among them) are made once, not once per point (a fifth of a sweep of drop heights).
+@functools.lru_cache(maxsize=1024)
+def _ring(R_over_r, r, material, angle) -> Ring:
+    return Ring.from_aspect_ratio(R_over_r, r=r, material=material, angle=angle)
+
+
+@functools.lru_cache(maxsize=1024)
+def _contact_theory(ring: Ring) -> dict:
+    """The columns of the static theory of ``ring``'s contact (:meth:`Point.columns`); a copy is not needed: the
+    caller unpacks it into its own row."""
+    K, n = ring.power_law()
+    return {"ring_mass_kg": ring.mass, "spacing_m": ring.spacing, "K_c_N_m1.5": ring.K_c, "K_b_N_m": ring.K_b,
+            "crossover_force_N": ring.crossover_force, "K_fit_N_mn": K, "n_fit": n}  # fmt: skip
+
+
+@functools.lru_cache(maxsize=1024)
+def _fitted_power_law(K_c: float, K_b: float) -> tuple[float, float]:
+    """The power law fitted to a dual-spring chain's springs (Eq. 4), once per chain of a sweep."""
+    from ringchain.theory import fit_power_law
+
+    return tuple(float(x) for x in fit_power_law(K_c=K_c, K_b=K_b))
 
 
 @dataclass(frozen=True)
@@ -369,18 +386,14 @@ def _dynamics(sensors, run) -> dict:
     """The :data:`DYNAMIC_COLUMNS` of one run: the sensors read as the paper reads them (Sec. III.A), Eq. (8) at
     the near sensor's peak force (a uniform chain: its power law, or for the dual-spring chain the one fitted to
     its springs, Eq. 4), the largest force on the support."""
-    from ringchain.theory import fit_power_law, solitary_wave_speed
+    from ringchain.theory import solitary_wave_speed
 
     near, far = sensors
     chain = run.chain
     F_near = run.peak_force(near)
     V_s = None
     if chain.uniform:
-        K, n = (
-            (chain.K, chain.n)
-            if chain.model == "power-law"
-            else (float(x) for x in fit_power_law(K_c=chain.K_c, K_b=chain.K_b))
-        )
+        K, n = (chain.K, chain.n) if chain.model == "power-law" else _fitted_power_law(chain.K_c, chain.K_b)
         V_s = float(solitary_wave_speed(F_near, K=K, n=n, a=chain.a, m=chain.m))
     support = run.support_force
     values = (near, far, F_near, run.peak_force(far), run.arrival_time(near), run.arrival_time(far),
