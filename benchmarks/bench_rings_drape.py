@@ -32,6 +32,7 @@ import tracemalloc
 
 import numpy as np
 from ringchain.numerics import Rings
+from ringchain.numerics.layouts.rings_static import static_state
 from ringchain.theory import STANDARD_GRAVITY, Ring
 
 
@@ -49,29 +50,29 @@ def main():
     sheet.potential(sheet.centres, sheet.orientations)  # compile (or load) the kernels
     warm_up = time.perf_counter() - start
 
+    print(f"{args.rows} x {args.cols} chain mail, {len(sheet.pairs)} candidate pairs, tolerance {args.tol:g} m g")
+    print(f"  build and compile or load of the kernels: {warm_up:.1f} s")
     tracemalloc.start()
     start, cpu = time.perf_counter(), time.process_time()
-    try:
-        rest, message = sheet.equilibrium(force_tol=args.tol, max_iterations=args.iterations), "converged"
-    except RuntimeError as error:
-        rest, message = None, str(error)
+    centres, orientations, phases = static_state(sheet, force_tol=args.tol, max_iterations=args.iterations)
     wall, cpu = time.perf_counter() - start, time.process_time() - cpu
     _, peak = tracemalloc.get_traced_memory()
     tracemalloc.stop()
     rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 2**10  # kB -> MB (Linux)
-
-    weight = ring.mass * STANDARD_GRAVITY
-    print(f"{args.rows} x {args.cols} chain mail, {len(sheet.pairs)} candidate pairs, tolerance {args.tol:g} m g")
-    print(f"  build and compile or load of the kernels: {warm_up:.1f} s")
-    print(f"  solve: {wall:.1f} s wall, {cpu:.1f} s of CPU: {message}")
+    for p in phases:
+        print(f"  {p['phase']:8s} softening {p['softening']:g}: {p['iterations']} iterations, {p['evaluations']} "
+              f"evaluations, {p['wall']:.1f} s wall, {p['cpu']:.1f} s of CPU, {p['memory'] / 2**20:.0f} MB at peak, "
+              f"residual {p['residual']:.2e} m g")  # fmt: skip
+    print(f"  solve: {wall:.1f} s wall, {cpu:.1f} s of CPU")
     print(f"  memory: {peak / 2**20:.0f} MB allocated at peak during the solve; {rss:.0f} MB resident at peak")
-    if rest is not None:
-        _, forces, torques = rest.potential(rest.centres, rest.orientations)
-        free = ~rest.fixed
-        print(f"  largest residual on a free ring: force {np.abs(forces[free]).max() / weight:.2e} m g, torque "
-              f"{np.abs(torques[free]).max() / (weight * ring.R):.2e} m g R")  # fmt: skip
-        print(f"  vertical load on the fixed rings {-forces[rest.fixed, 2].sum() / weight:.6f} m g, weight of the "
-              f"free rings {free.sum()} m g")  # fmt: skip
+    _, forces, torques = sheet.potential(centres, orientations)  # every contact searched from scratch
+    weight = ring.mass * STANDARD_GRAVITY
+    free = ~sheet.fixed
+    force, torque = np.abs(forces[free]).max() / weight, np.abs(torques[free]).max() / (weight * ring.R)
+    verdict = "converged" if max(force, torque) <= args.tol else "not converged"
+    print(f"  largest residual on a free ring: force {force:.2e} m g, torque {torque:.2e} m g R ({verdict})")
+    print(f"  vertical load on the fixed rings {-forces[sheet.fixed, 2].sum() / weight:.6f} m g, weight of the "
+          f"free rings {free.sum()} m g")  # fmt: skip
 
 
 if __name__ == "__main__":
