@@ -61,7 +61,7 @@ def main():
     rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 2**10  # kB -> MB (Linux)
     for p in phases:
         print(f"  {p['phase']:8s} softening {p['softening']:g}: {p['iterations']} iterations, {p['evaluations']} "
-              f"evaluations, {p['wall']:.1f} s wall, {p['cpu']:.1f} s of CPU, {p['memory'] / 2**20:.0f} MB at peak, "
+              f"evaluations, {p['wall']:.1f} s wall, {p['cpu']:.1f} s of CPU, {p['memory'] / 2**20:.1f} MB at peak, "
               f"residual {p['residual']:.2e} m g")  # fmt: skip
     print(f"  solve: {wall:.1f} s wall, {cpu:.1f} s of CPU")
     print(f"  memory: {peak / 2**20:.0f} MB allocated at peak during the solve; {rss:.0f} MB resident at peak")
