@@ -20,11 +20,12 @@ Measured on a 2-core machine shared with other jobs (load average 3-5), ``--iter
   steps (one evaluation each, 1,767 for the first), Newton's method 18, 21, 16 and 200 iterations (8,000
   evaluations, most of them the last stage's); residual 1.0e-4 m g, short of 1e-6 (Newton's method alone, same
   machine: 29 s, 1.6e-4 m g).
-- 10 x 10 rings (718 pairs; measured before the descent's overdamped steps, ``FORCED``, were added): 202 s wall, 140
-  s of CPU, 4 MB allocated at peak, 203 MB resident; residual 1.2e-3 m g (force; torque 4.0e-4 m g R), the fixed row
-  carrying 89.999968 of the 90 weights. The descents: 1,779 steps to 0.18 m g (softening 1e-3), the budget of 5,000
-  to 5.3e-2 (1e-2), 1,184 and 565 steps to 1e-2 m g (1e-1, 1); after each, Newton's method 30, 30, 17 and 30
-  iterations. Newton's method alone (50 iterations per stage): 3.4e3 m g.
+- 10 x 10 rings (718 pairs), on a quiet machine: 161 s wall, 161 s of CPU, 4 MB allocated at peak, 205 MB resident;
+  residual 4.0e-3 m g (force; torque 1.6e-3 m g R), the fixed row carrying 90.000115 of the 90 weights. The
+  descents: the budget of 5,000 steps to 0.20 m g (softening 1e-3) and to 8.4e-2 m g (1e-2), 1,163 and 567 steps to
+  1e-2 m g (1e-1, 1); after each, Newton's method 30, 30, 28 and 30 iterations. Before the overdamped steps
+  (``FORCED``) the first descent stopped at 0.18 m g after 1,779 steps and the run reached 1.2e-3 m g in 202 s on
+  the loaded machine. Newton's method alone (50 iterations per stage): 3.4e3 m g.
 - 30 x 30 rings (7,538 pairs): not solved. The descent of the softest stage (1e-3 of the stiffness) reaches 25.7 m g
   after 2,010 steps (226 s wall; 2,867 evaluations of some 50-80 ms on the loaded machine, 31 ms on a quiet one) and
   stops where no step along the loads lowers the energy or the residual; with overdamped steps there (``FORCED``) it

@@ -322,9 +322,12 @@ def _newton(problem, tol, max_iterations):
             matrix = problem.stiffness(grad)
             symmetric = (0.5 * (matrix + matrix.T)).tocsc()
         shift = sparse.identity(size) / tau
-        factor = splu((symmetric + shift).tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
-                      options={"SymmetricMode": True})  # fmt: skip
-        if not np.all(factor.U.diagonal() > 0.0):
+        try:
+            factor = splu((symmetric + shift).tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
+                          options={"SymmetricMode": True})  # fmt: skip
+        except RuntimeError:  # a pivot exactly zero: not positive definite either
+            factor = None
+        if factor is None or not np.all(factor.U.diagonal() > 0.0):
             tau *= 0.25
             continue
         step = factor.solve(-grad)
