@@ -249,8 +249,9 @@ class Rings:
     def equilibrium(self, **options):
         """The network at its static state under gravity (a :class:`Rings` at rest there).
 
-        The solver (Newton's method on the loads over positions and rotation vectors, with pseudo-time steps and
-        stages of softened contacts) is the layouts' module ``rings_static``, built on
+        The solver (in stages of softened contacts, an L-BFGS descent on the energy then Newton's method on the
+        loads with pseudo-time steps, over positions and rotation vectors) is the layouts' module ``rings_static``
+        (its ``static_state`` also returns the record of the phases), built on
         :meth:`RingsDynamics.contact_loads`; ``options`` are its ``g``, ``force_tol`` and ``max_iterations``.
         """
         try:

@@ -40,3 +40,31 @@ def test_a_small_sheet_of_chain_mail_hangs_from_its_top_row():
 def test_equilibrium_names_a_bad_tolerance():
     with pytest.raises(ValueError, match="force_tol"):
         Rings.chain(3, RING).equilibrium(force_tol=-1.0)
+
+
+@pytest.mark.parametrize("build", [lambda: Rings.chain(6, RING), lambda: Rings.mail(2, 3, RING)], ids=["chain", "mail"])
+def test_the_first_order_phase_alone_reaches_the_static_state(build, monkeypatch):
+    from ringchain.numerics.layouts import rings_static
+
+    # The first phase (L-BFGS on the energy) handing over only at the tolerance itself: Newton's method runs only
+    # if it stops short, so the phases must all be descents and the state found theirs.
+    monkeypatch.setattr(rings_static, "HANDOVER", 0.0)
+    network, tol = build(), 1e-8
+    centres, orientations, phases = rings_static.static_state(network, force_tol=tol)
+    assert [phase["phase"] for phase in phases] == ["descent"] * len(rings_static.SOFTENING)
+    assert phases[-1]["residual"] <= tol
+    # Independent of the solver: a search of every contact from scratch, and the weight carried by the fixed rings.
+    assert_static(network.moved(centres, orientations), tol)
+
+
+def test_the_phases_are_recorded():
+    from ringchain.numerics.layouts.rings_static import static_state
+
+    chain, tol = Rings.chain(3, RING), 1e-8
+    centres, orientations, phases = static_state(chain, force_tol=tol)
+    assert phases[0]["phase"] == "descent" and phases[0]["softening"] == 1e-3
+    for phase in phases:
+        assert phase["evaluations"] >= phase["iterations"] >= 0 and phase["wall"] >= 0.0
+        assert phase["memory"] is None  # tracemalloc is not tracing
+    assert phases[-1]["softening"] == 1.0 and phases[-1]["residual"] <= tol
+    assert_static(chain.moved(centres, orientations), tol)
