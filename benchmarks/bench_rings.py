@@ -25,6 +25,10 @@ per evaluation), Verlet 10.9 and 14.4 s wall (5.4 and 5.6 s of CPU), the cold co
 steps, evaluations and peak link force (688.7 N).  On two idle cores the CPU time is the wall time: dopri5 meets
 the goal.
 
+Nearly quiet (load 1.3: one other single-threaded job on the two cores), kernels from the disk cache: dopri5 16.4 s
+wall (16.0 s of CPU; 1101 steps, 6698 evaluations), Verlet 5.7 s wall (5.7 s of CPU, 1508 steps); 42 MB allocated
+at peak, 218 and 255 MB resident.
+
 Run: ``python benchmarks/bench_rings.py [--rings 1000] [--duration 1e-3] [--speed 1.0] [--samples 201]
 [--method dopri5]``.
 """
