@@ -103,8 +103,9 @@ def pytest_xdist_make_scheduler(config, log):
     The theory's tests derive in SymPy, and each derivation is cached in its process (``functools.cache``,
     :class:`ringchain.theory._codegen.Derived`): run by one worker, a derivation that several files need -- the
     comparison of every shipped entry with its derivation (tests/theory/test_shipped.py) and the symbolic tests of
-    the same module -- is made once instead of once per worker (about a third of the theory's time).  The unit holds
-    the most tests, so xdist hands it out first, and that worker takes more files only once it is nearly done.
+    the same module -- is made once instead of once per worker (measured on attenuation: its tests 40.2 s of CPU,
+    its two shipped entries 26.3 s, both in one process 39.8 s).  The unit holds the most tests, so xdist hands it
+    out first, and that worker takes more files only once it is nearly done.
     """
     if config.getoption("dist") != "loadfile":
         return None
