@@ -78,13 +78,18 @@ def verlet_arrays(x0, u0, t_eval, t_end, dt, keep):
     return x0, u0, n_steps, t_end / n_steps, out_x, out_u, status, final_x, final_u
 
 
+def signature_of(args) -> tuple:
+    """The Numba types of a kernel call's arguments: the key of its compiled version."""
+    import numba
+
+    return tuple(numba.typeof(a) for a in args)
+
+
 def will_compile(dispatcher, args=None) -> bool:
     """Whether calling a Numba ``dispatcher`` with ``args`` compiles it: no version for their types compiled in
     this process and none in its disk cache (a cache written by another version of the kernels' module is
     stale).  Without ``args``: whether it has no version at all."""
-    import numba
-
-    signature = None if args is None else tuple(numba.typeof(a) for a in args)
+    signature = None if args is None else signature_of(args)
     if signature is None and dispatcher.signatures:
         return False
     if signature is not None and signature in dispatcher.overloads:
@@ -139,9 +144,9 @@ def announce_compile(dispatcher, family: str, folder, args=None) -> None:
 @contextlib.contextmanager
 def collector_paused():
     """Python's garbage collector paused for the block: Numba's start-up and the load of a cached kernel make
-    some hundred thousand objects that live on, and the collector would walk them again and again (0.2-0.3 s of
-    a warm ``ringchain simulate``, about a sixth of its CPU).  Not for a compile: the objects it makes die with it,
-    and paused, its peak memory grows (250 to 297 MB for the paper's chain)."""
+    some hundred thousand objects that live on, and the collector would walk them again and again (measured:
+    0.13-0.32 s of the 2 s of CPU of a warm ``ringchain simulate``).  Not for a compile: the objects it makes die
+    with it, and paused, its peak memory grows (250 to 297 MB for the paper's chain)."""
     enabled = gc.isenabled()
     gc.disable()
     try:
@@ -154,9 +159,7 @@ def collector_paused():
 def load_cached(dispatcher, args) -> None:
     """Load ``dispatcher``'s version for the types of ``args`` from the disk cache (or find it loaded), the collector
     paused (:func:`collector_paused`); the call that follows then runs it at once."""
-    import numba
-
-    signature = tuple(numba.typeof(a) for a in args)
+    signature = signature_of(args)
     if signature not in dispatcher.overloads:
         with collector_paused():
             dispatcher.compile(signature)
@@ -167,9 +170,7 @@ def compile_once(dispatcher, args, folder) -> None:
     ``folder``, so that no two processes compile one kernel at once: a process that waited finds the kernel in the
     disk cache and loads it (Numba's ``compile`` reads the cache first).  Without locks on this platform (no
     ``fcntl``), or with a folder where no lock file can be made, it compiles as the call would."""
-    import numba
-
-    signature = tuple(numba.typeof(a) for a in args)
+    signature = signature_of(args)
     try:
         import fcntl
 
