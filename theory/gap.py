@@ -139,7 +139,9 @@ def surface_gap_quadratic():
     g = gap_symbols()
     eps = sp.Symbol("epsilon", positive=True)
     scaled = _with_inner_radius(surface_gap()).subs({g["x"]: eps * g["x"], g["y"]: eps * g["y"]})
-    return sp.expand(sp.series(scaled, eps, 0, 3).removeO().coeff(eps, 2))
+    # The eps^2 Taylor coefficient as d^2/d eps^2 at eps = 0 over 2!: the same polynomial as
+    # sp.series(scaled, eps, 0, 3), which spends 8 s in trigsimp where the derivative takes 0.3 s.
+    return sp.expand(sp.diff(scaled, eps, 2).subs(eps, 0) / 2)
 
 
 def patch_geometry():

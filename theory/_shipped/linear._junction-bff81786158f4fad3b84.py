@@ -1,8 +1,0 @@
-# ringchain generated code v1 sha256=377a1d06cbeebca75e518ee7f5e63a14fd82136f8cdbd08de1f085665b528f88
-# derivation: linear._junction
-# source key: 07201ab9dccdbac32795 (theory/*.py, sympy 1.14.0, numpy 2.4.6)
-# arguments: Z_1, Z_2
-# expression sha256: 3e63e2007f8e45af9353295a405e69c7f1ffa327fc15a9b92ced42abba252f9d (of its srepr)
-def _lambdifygenerated(Z_1, Z_2):
-    x0 = (Z_1 + Z_2)**(-1.0)
-    return (-x0*(Z_1 - Z_2), 2*Z_2*x0)

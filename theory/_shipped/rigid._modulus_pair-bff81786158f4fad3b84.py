@@ -1,7 +1,0 @@
-# ringchain generated code v1 sha256=34f359bc937e1c08f9c9807ca982e2239de6b3205603e478b8c508a0506101ac
-# derivation: rigid._modulus_pair
-# source key: 07201ab9dccdbac32795 (theory/*.py, sympy 1.14.0, numpy 2.4.6)
-# arguments: E_1, nu_1, E_2, nu_2
-# expression sha256: 048c9cabb01bda9f3cab2a722b38eb0c89f51ffe1d090e7feeb1e997fdf02c9a (of its srepr)
-def _lambdifygenerated(E_1, nu_1, E_2, nu_2):
-    return -E_1*E_2/(E_1*nu_2**2 - E_1 + E_2*nu_1**2 - E_2)
