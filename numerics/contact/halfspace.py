@@ -16,9 +16,12 @@ the non-periodic one on the window.  The kernel's transform is computed once per
 Contact.  With the rigid gap g (m) between the undeformed surfaces, the approach delta (m) and the pixel
 forces f (N), the deformed gap is h = g + u(f) - delta.  The solution has f >= 0, h >= 0 and f h = 0:
 the surfaces touch where they press and press nowhere else.  It is the minimum of the convex
-quadratic 1/2 f.u(f) + f.(g - delta) over f >= 0, found by Polonsky and Keer's (1999) constrained
-conjugate gradients: conjugate-gradient steps on the pixels in contact, pixels whose force would turn
-tensile leave the contact, pixels that overlap without force join it (and restart the gradients).
+quadratic 1/2 f.u(f) + f.(g - delta) over f >= 0 (its gradient is h), found by Polonsky and Keer's
+(1999) constrained conjugate gradients: conjugate-gradient steps on the pixels in contact, each to the
+exact minimum along its direction; pixels whose force would turn tensile leave the contact (their force
+is set to zero), and pixels that overlap without force join the next step's set.  Any change of the set
+restarts the gradients (a steepest-descent step); Polonsky and Keer give the joining pixels the previous
+step's length instead, which can overshoot when many join at once.
 
 - Force control (``load`` given): the total force is held, and the approach is the mean of g + u over
   the contact (the multiplier of the force constraint); the search directions have zero sum.
@@ -80,7 +83,8 @@ def rectangle_displacement(x, y, a, b, E_star):
     Examples
     --------
     >>> centre = float(rectangle_displacement(0.0, 0.0, 1e-3, 1e-3, 1e11))
-    >>> round(centre / (4 * 1e-3 * np.log(1 + np.sqrt(2)) / (np.pi * 1e11)), 12)  # the square's centre
+    >>> side = 2e-3  # the centre of a square: 4 side ln(1 + sqrt 2)/(pi E*) per pascal (Johnson Sec. 3.4)
+    >>> round(centre / (4 * side * float(np.log(1 + np.sqrt(2))) / (np.pi * 1e11)), 12)
     1.0
     """
     a = float(v.positive("a", a, "m"))
@@ -146,7 +150,7 @@ class ElasticHalfSpace:
     >>> space = ElasticHalfSpace((64, 64), (2e-3, 2e-3), 1e11)
     >>> X, Y = space.coordinates()
     >>> gap = (X**2 + Y**2) / (2 * 0.01)  # a sphere of radius 1 cm on a flat
-    >>> solution = space.solve(gap, load=1.0)
+    >>> solution = space.solve(gap, load=1.0, pentol=1e-12, forcetol=1e-9)
     >>> round(solution.force, 12), bool(solution.approach > 0)
     (1.0, True)
     """
@@ -283,10 +287,10 @@ class ElasticHalfSpace:
         direction = np.zeros(self.shape)
         G_old, restart, change, fresh = 1.0, True, np.inf, True
         for it in range(1, maxiter + 1):
-            free = (forces > 0) & (forces < cap)  # the conjugate-gradient set: in contact, not flowing
+            free = (forces > 0) & (forces < cap)  # in contact and not flowing
             h = gap + u
-            if load is not None:
-                approach = float(h[free].mean()) if free.any() else float(h[forces > 0].min())
+            if load is not None:  # the approach that makes the mean gap over the contact zero
+                approach = float(h[free].mean())
             h -= approach
             # Converged?  The contact conditions on fresh displacements, and a settled last step.
             residual = _violation(h, forces, cap)
@@ -295,41 +299,48 @@ class ElasticHalfSpace:
                     return HalfSpaceContact(forces, u, approach, h, forces >= cap, it - 1)
                 u, fresh = self.displacement(forces), True  # check again without the accumulated rounding
                 continue
-            G = float(np.sum(h[free] ** 2))
-            if restart or G_old <= 0:
-                direction = np.where(free, h, 0.0)
+            # Pixels that overlap without force, or flowing pixels whose gap opened, join the set of the
+            # step; the gradients restart (Polonsky and Keer) as they do after any change of the set.
+            wrong = ((forces == 0) & (h < 0)) | ((forces >= cap) & (h > 0))
+            active = free | wrong
+            if not active.any():  # nothing to move: no pixel in contact, none violating
+                change = 0.0
+                continue
+            restart = restart or bool(wrong.any())
+            G = float(np.sum(h[active] ** 2))
+            if restart:
+                direction = np.where(active, h, 0.0)
             else:
-                direction = np.where(free, h + (G / G_old) * direction, 0.0)
+                direction = np.where(active, h + (G / G_old) * direction, 0.0)
             G_old = G
-            if load is not None and free.any():
-                direction[free] -= direction[free].mean()  # keeps the total force
-            step = self.displacement(direction) if free.any() else np.zeros(self.shape)
-            curvature = float(np.sum(step[free] * direction[free]))
-            tau = float(np.sum(h[free] * direction[free])) / curvature if curvature > 0 else 0.0
-            if tau <= 0:  # no conjugate-gradient set (or a degenerate one): a Jacobi step releases the pixels
-                tau = 1.0 / self.self_influence
+            if load is not None:
+                direction[active] -= direction[active].mean()  # keeps the total force
+            step = self.displacement(direction)
+            curvature = float(np.sum(step * direction))  # > 0: the kernel is positive definite
+            if not curvature > 0:  # no move left (the gap is exactly zero on the set): settled, or stuck
+                if residual <= pentol:
+                    change, restart = 0.0, True
+                    continue
+                break
+            tau = float(np.sum(h * direction)) / curvature  # the exact minimum along the direction
             old = forces
             forces = forces - tau * direction
             clipped = (forces < 0) | (forces > cap)
             forces = np.clip(forces, 0.0, cap)
-            # Pixels that overlap without force, or flowing pixels whose gap opened: back into the set.
-            wrong = ((old == 0) & (h < 0)) | ((old >= cap) & (h > 0))
-            forces[wrong] = np.clip(forces[wrong] - tau * h[wrong], 0.0, cap)
             scale = 1.0
             if load is not None:
-                total = forces.sum()
-                if total <= 0:
-                    raise RuntimeError("the contact solver lost the contact under force control (all forces zero)")
-                scale = load / total
+                if not forces.sum() > 0:
+                    break
+                scale = load / forces.sum()
                 forces *= scale
-            restart = bool(clipped.any() or wrong.any())
+            restart = bool(clipped.any())
             change = float(np.abs(forces - old).sum())
             if restart:
                 u, fresh = self.displacement(forces), True
             else:  # linear in the forces: the step's displacement, scaled like them
                 u, fresh = (u - tau * step) * scale, False
         raise RuntimeError(
-            f"the contact solver did not converge in {maxiter} iterations: contact conditions met to "
+            f"the contact solver did not converge ({it} of at most {maxiter} iterations): contact conditions met to "
             f"{residual:.3g} m (tolerance {pentol:.3g} m), last change of the forces {change:.3g} N "
             f"(tolerance {forcetol:.3g} N)"
         )
