@@ -33,8 +33,10 @@ step's length instead, which can overshoot when many join at once.
 
 Stopping test.  The solution is accepted when the contact conditions hold to ``pentol`` (m): |h| inside
 the contact, the overlap -h outside it and the opening h of flowing pixels, all measured on
-displacements computed afresh from the forces; and when the forces of the last step changed by at most
-``forcetol`` (N, summed over the pixels), so that the contact has settled.
+displacements computed afresh from the forces; and when no pixel's force had to be clipped by more than
+``forcetol`` (N) in the last step (set to zero from tensile, or to the hardness from above it), so that
+the contact has settled, and no displacement moved by more than ``pentol`` in it.  The same tests in
+spirit as ContactMechanics' ``pentol`` and ``forcetol``.
 """
 
 from __future__ import annotations
@@ -223,9 +225,11 @@ class ElasticHalfSpace:
             (nx, ny) starting pixel forces, N, >= 0 (default: the load on the pixel of the smallest gap,
             or for displacement control the hardness or a pixel's force of the overlap there).
         pentol : float
-            Tolerance of the contact conditions on the deformed gap, m, > 0.
+            Tolerance of the contact conditions on the deformed gap, and of the last step's largest change
+            of a displacement, m, > 0.
         forcetol : float
-            Largest change of the forces (summed over the pixels) in the last step, N, > 0.
+            Largest force by which a pixel may have been clipped in the last step (a tensile force set to
+            zero, or a force above the hardness set to it), N, > 0.
         maxiter : int, optional
             Largest number of iterations.
 
@@ -285,7 +289,7 @@ class ElasticHalfSpace:
         """The constrained conjugate gradients from checked inputs (see :meth:`solve`)."""
         u = self.displacement(forces)
         direction = np.zeros(self.shape)
-        G_old, restart, change, fresh = 1.0, True, np.inf, True
+        G_old, restart, clipped_force, moved, fresh = 1.0, True, np.inf, np.inf, True
         for it in range(1, maxiter + 1):
             free = (forces > 0) & (forces < cap)  # in contact and not flowing
             h = gap + u
@@ -294,7 +298,7 @@ class ElasticHalfSpace:
             h -= approach
             # Converged?  The contact conditions on fresh displacements, and a settled last step.
             residual = _violation(h, forces, cap)
-            if residual <= pentol and change <= forcetol:
+            if residual <= pentol and moved <= pentol and clipped_force <= forcetol:
                 if fresh:
                     return HalfSpaceContact(forces, u, approach, h, forces >= cap, it - 1)
                 u, fresh = self.displacement(forces), True  # check again without the accumulated rounding
@@ -304,7 +308,7 @@ class ElasticHalfSpace:
             wrong = ((forces == 0) & (h < 0)) | ((forces >= cap) & (h > 0))
             active = free | wrong
             if not active.any():  # nothing to move: no pixel in contact, none violating
-                change = 0.0
+                clipped_force = moved = 0.0
                 continue
             restart = restart or bool(wrong.any())
             G = float(np.sum(h[active] ** 2))
@@ -319,13 +323,14 @@ class ElasticHalfSpace:
             curvature = float(np.sum(step * direction))  # > 0: the kernel is positive definite
             if not curvature > 0:  # no move left (the gap is exactly zero on the set): settled, or stuck
                 if residual <= pentol:
-                    change, restart = 0.0, True
+                    clipped_force, moved, restart = 0.0, 0.0, True
                     continue
                 break
             tau = float(np.sum(h * direction)) / curvature  # the exact minimum along the direction
-            old = forces
             forces = forces - tau * direction
-            clipped = (forces < 0) | (forces > cap)
+            excess = np.maximum(-forces, forces - cap)  # > 0 where a force turned tensile or passed the cap
+            clipped = excess > 0
+            clipped_force = float(excess.max())
             forces = np.clip(forces, 0.0, cap)
             scale = 1.0
             if load is not None:
@@ -334,15 +339,15 @@ class ElasticHalfSpace:
                 scale = load / forces.sum()
                 forces *= scale
             restart = bool(clipped.any())
-            change = float(np.abs(forces - old).sum())
             if restart:
-                u, fresh = self.displacement(forces), True
+                new, fresh = self.displacement(forces), True
             else:  # linear in the forces: the step's displacement, scaled like them
-                u, fresh = (u - tau * step) * scale, False
+                new, fresh = (u - tau * step) * scale, False
+            moved, u = float(np.abs(new - u).max()), new
         raise RuntimeError(
-            f"the contact solver did not converge ({it} of at most {maxiter} iterations): contact conditions met to "
-            f"{residual:.3g} m (tolerance {pentol:.3g} m), last change of the forces {change:.3g} N "
-            f"(tolerance {forcetol:.3g} N)"
+            f"the contact solver did not converge ({it} of at most {maxiter} iterations): contact conditions met "
+            f"to {residual:.3g} m (tolerance {pentol:.3g} m), largest force clipped in the last step "
+            f"{clipped_force:.3g} N (tolerance {forcetol:.3g} N)"
         )
 
 

@@ -106,9 +106,10 @@ def _capped_solve(gap, pixel, size, E_star, p_y, delta, R_e):
     guess = np.minimum(guess, hardness)
     if not guess.any():
         guess[np.unravel_index(np.argmin(gap), gap.shape)] = hardness
+    # The contact conditions to 1e-6 delta (the force to about as much; the check below asks 1e-3 delta).
     result = halfspace.solve(
         gap, approach=delta, hardness=hardness, initial_forces=guess,
-        pentol=1e-4 * delta, forcetol=1e-6 * hardness * gap.size, maxiter=_CAPPED_MAXITER,
+        pentol=1e-6 * delta, forcetol=1e-9 * hardness, maxiter=_CAPPED_MAXITER,
     )  # fmt: skip
     forces = result.forces
     # The contact conditions of the capped problem, checked here on the solution's own deformed gap
