@@ -85,7 +85,7 @@ def rectangle_displacement(x, y, a, b, E_star):
     Examples
     --------
     >>> centre = float(rectangle_displacement(0.0, 0.0, 1e-3, 1e-3, 1e11))
-    >>> side = 2e-3  # the centre of a square: 4 side ln(1 + sqrt 2)/(pi E*) per pascal (Johnson Sec. 3.4)
+    >>> side = 2e-3  # the centre of a square: 4 side ln(1 + sqrt 2)/(pi E*) per pascal
     >>> round(centre / (4 * side * float(np.log(1 + np.sqrt(2))) / (np.pi * 1e11)), 12)
     1.0
     """
@@ -141,6 +141,17 @@ class ElasticHalfSpace:
         (Lx, Ly) physical size of the window, m, > 0 (pixel spacing Lx/nx, Ly/ny).
     E_star : float
         Contact modulus of the two bodies, Pa, > 0 (1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2).
+
+    Attributes
+    ----------
+    shape, size, E_star
+        As given (size in m, E_star in Pa).
+    spacing : tuple of float
+        (hx, hy) pixel sides, m.
+    pixel_area : float
+        hx hy, m^2.
+    self_influence : float
+        Displacement of a pixel's centre per newton on that pixel, m/N (the largest of the kernel).
 
     Notes
     -----
