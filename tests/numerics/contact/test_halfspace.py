@@ -102,6 +102,30 @@ def test_displacement_control_inverts_force_control():
     assert by_approach.force == pytest.approx(0.7, abs=bound * np.count_nonzero(by_force.forces))
 
 
+def test_a_rough_surface_of_many_contacts():
+    # Polonsky and Keer's own use: a random surface (seeded, smoothed over a few pixels) pressed onto a flat,
+    # touching in dozens of separate spots that merge and split as the load grows.
+    from scipy import ndimage
+
+    n = 48
+    space = ElasticHalfSpace((n, n), (1e-3, 1e-3), E_STAR)
+    heights = ndimage.gaussian_filter(np.random.default_rng(7).normal(size=(n, n)), 1.0, mode="wrap")
+    gap = 2e-6 * heights / heights.std()
+    gap -= gap.min()
+    pentol = 1e-12  # m, a millionth of the roughness
+    bound = 4 * pentol / space.self_influence  # the force difference of two solutions (hardness test below)
+    spots = []
+    for load in (10.0, 100.0, 1000.0):
+        by_force = space.solve(gap, load=load, pentol=pentol, forcetol=1e-12 * load)
+        by_approach = space.solve(gap, approach=by_force.approach, pentol=pentol, forcetol=1e-12 * load)
+        touching = by_force.forces > 0
+        assert np.max(np.abs(by_force.separation[touching])) <= pentol
+        assert np.min(by_force.separation[~touching]) >= -pentol
+        assert by_approach.forces == pytest.approx(by_force.forces, abs=bound)
+        spots.append(ndimage.label(touching)[1])
+    assert spots == sorted(spots) and spots[0] > 3 and spots[-1] > 20  # measured 12, 37, 65 spots
+
+
 def test_a_hardness_above_the_peak_pressure_changes_nothing():
     radius, load = 1e-2, 2.0
     space, _X, _Y, gap, a, delta = _sphere(48, radius, load)
