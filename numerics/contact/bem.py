@@ -5,8 +5,8 @@ between the tori by its quadratic part and holds above theta_min = arccos(1 - 2r
 Here the exact gap (:func:`ringchain.theory.gap.torus_gap` and the torus distance
 :func:`~ringchain.theory.gap.torus_distance`) is loaded by a frictionless, non-adhesive
 contact between elastic half-spaces, solved with FFT boundary elements on a non-periodic
-grid (ContactMechanics: Polonsky and Keer's constrained conjugate gradients on
-Hockney-padded Green's functions, :class:`ContactMechanics.FreeFFTElasticHalfSpace`).
+grid (:mod:`.halfspace`: Polonsky and Keer's constrained conjugate gradients on Love's
+pixel kernel, convolved by FFT on Hockney's padded grid).
 
 Geometry (:func:`~ringchain.theory.gap.contact_patches`).  At and above theta_min the
 tori touch at one point on the chain axis.  Below it they touch at two points, at +-c along
@@ -61,6 +61,8 @@ from dataclasses import dataclass
 import numpy as np
 from ringchain.theory import DEFAULT_FORCE_WINDOW
 from ringchain.theory import _validate as v
+
+from .halfspace import ElasticHalfSpace
 
 __all__ = [
     "ContactCurve",
@@ -209,15 +211,6 @@ class ContactCurve:
         return dataclasses.replace(self, delta=series_extension(self.force, delta_c=self.delta, K_b=K_b), K_b=K_b)
 
 
-def load_contact_mechanics():
-    """ContactMechanics and SurfaceTopography, imported on first use (NuMPI warns once that it runs without MPI)."""
-    with warnings.catch_warnings():
-        warnings.filterwarnings("ignore", message="Could not import mpi4py", category=ImportWarning)
-        import ContactMechanics
-        import SurfaceTopography
-    return ContactMechanics, SurfaceTopography
-
-
 # -- geometry ------------------------------------------------------------------------------------------
 def _half_turn(vector):
     """Image of a vector under the half turn about the chain axis (a symmetry of the two tori)."""
@@ -356,9 +349,7 @@ class _Solver:
         X, Y = np.meshgrid(grid.x, grid.y, indexing="ij")
         self.X, self.Y = X, Y
         self.gap = tori.gap(X, Y)
-        size = (grid.nx * grid.hx, grid.ny * grid.hy)
-        self.size = size
-        self.substrate = load_contact_mechanics()[0].FreeFFTElasticHalfSpace((grid.nx, grid.ny), E_star, size)
+        self.halfspace = ElasticHalfSpace((grid.nx, grid.ny), (grid.nx * grid.hx, grid.ny * grid.hy), E_star)
         separate = tori.n_patches == 2 and not grid.joint
         self.patches_on_grid = 2 if tori.n_patches == 2 and grid.joint else 1
         # The other patch (at -c) seen from this one's grid: Boussinesq's point-load displacement per newton.
@@ -367,30 +358,19 @@ class _Solver:
     def solve(self, load, approach, *, force_control=True):
         """One contact problem: the normal load per patch ``load`` (N) with ``approach`` (m) as the
         starting guess, or (``force_control=False``) the approach imposed, ``load`` setting the
-        interaction and tolerances.  Returns ContactMechanics' result and system."""
+        interaction and tolerances.  Returns the :class:`~.halfspace.HalfSpaceContact`."""
         total = load * self.patches_on_grid
-        contact_mechanics, topography = load_contact_mechanics()
         gap = self.gap + load * self.interaction
-        surface = topography.Topography(-gap, self.size)
-        system = contact_mechanics.make_system(surface=surface, substrate=self.substrate)
         # Start from Hertz's pressure shape on the gap: sqrt(delta/2 - gap) is exact for a quadratic gap.
-        # Polonsky and Keer's iteration started from zero forces can stall on some grids.
+        # Polonsky and Keer's iteration started from one pixel takes more steps to find the contact.
         guess = np.sqrt(np.maximum(0.0, approach / 2 - gap))
         if not guess.any():
             guess[np.unravel_index(np.argmin(gap), gap.shape)] = 1.0
         guess *= total / guess.sum()
-        pad = ((0, self.grid.nx), (0, self.grid.ny))
-        options = dict(
-            initial_forces=-np.pad(guess, pad), pentol=1e-6 * self._approach_scale(load), forcetol=1e-9 * total,
-            maxiter=5000,
-        )  # fmt: skip
+        options = dict(initial_forces=guess, pentol=1e-6 * self._approach_scale(load), forcetol=1e-9 * total)
         if force_control:
-            result = system.minimize_proxy(external_force=total, **options)
-        else:
-            result = system.minimize_proxy(offset=approach, **options)
-        if not result.success:
-            raise RuntimeError(f"the contact solver did not converge: {result.message}")
-        return result, system
+            return self.halfspace.solve(gap, load=total, **options)
+        return self.halfspace.solve(gap, approach=approach, **options)
 
     def _approach_scale(self, P):
         """Rough normal approach (m) of a load P, from the Hertz sphere of the local curvature (for tolerances)."""
@@ -576,10 +556,10 @@ def _curve(tori, E_star, forces, loads, curvatures, points_across):
     for _ in range(_MAX_PASSES * 3):
         grid = _grid_for(tori, x_lo, x_hi, y_half, hx * spacing_factor, hy * spacing_factor)
         solver = _Solver(tori, E_star, grid, (A, B))
-        first = solver.solve(loads[0], solver._approach_scale(loads[0]))[0]
-        last = solver.solve(loads[-1], solver._approach_scale(loads[-1]))[0]
-        box_small = _contact_box(grid, first.jac, tori)
-        box_large = _contact_box(grid, last.jac, tori)
+        first = solver.solve(loads[0], solver._approach_scale(loads[0]))
+        last = solver.solve(loads[-1], solver._approach_scale(loads[-1]))
+        box_small = _contact_box(grid, first.forces, tori)
+        box_large = _contact_box(grid, last.forces, tori)
         if box_large[3]:  # the largest contact reaches the edge: enlarge the window and try again
             x_lo, x_hi, y_half = _enlarged(tori, x_lo, x_hi, y_half, 1.5)
             continue
@@ -710,11 +690,11 @@ def _solve_curve(tori, E_star, grid, loads, curvatures):
     for k, P in enumerate(loads):
         if k:  # Hertz's scaling from the previous load
             guess = approach[-1] * (P / loads[k - 1]) ** (2 / 3)
-        result, _ = solver.solve(P, guess)
-        forces = result.jac
+        result = solver.solve(P, guess)
+        forces = result.forces
         p = forces / pixel
         inside = forces > 0
-        approach.append(result.offset)
+        approach.append(result.approach)
         area.append(inside.sum() * pixel)
         patches.append(ndimage.label(inside)[1])
         centre = np.where(solver.X > 0, tori.c, -tori.c) if tori.n_patches == 2 else 0.0
@@ -738,6 +718,6 @@ def _resolution_error(tori, E_star, grid, loads, solution, curvatures):
     coarse = _Solver(tori, E_star, grid.coarsened(_COARSENING), curvatures)
     errors = []
     for k in (0, len(loads) - 1):
-        _, system = coarse.solve(loads[k], solution["approach"][k], force_control=False)
-        errors.append(abs(system.compute_normal_force() / (loads[k] * coarse.patches_on_grid) - 1))
+        result = coarse.solve(loads[k], solution["approach"][k], force_control=False)
+        errors.append(abs(result.force / (loads[k] * coarse.patches_on_grid) - 1))
     return float(max(errors))
