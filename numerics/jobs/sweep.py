@@ -382,24 +382,27 @@ DYNAMIC_COLUMNS = (
 )  # fmt: skip
 
 
-def _dynamics(sensors, run) -> dict:
-    """The :data:`DYNAMIC_COLUMNS` of one run: the sensors read as the paper reads them (Sec. III.A), Eq. (8) at
-    the near sensor's peak force (a uniform chain: its power law, or for the dual-spring chain the one fitted to
-    its springs, Eq. 4), the largest force on the support."""
+def _dynamics(sensors, runs) -> list[dict]:
+    """The :data:`DYNAMIC_COLUMNS` of each run of a batch: the sensors read as the paper reads them (Sec. III.A),
+    every run's at once (:func:`~ringchain.numerics.signals.peak` on the batch's traces), Eq. (8) at the near
+    sensor's peak force (a uniform chain: its power law, or for the dual-spring chain the one fitted to its
+    springs, Eq. 4), the largest force on the support."""
     from ringchain.theory import solitary_wave_speed
 
     near, far = sensors
-    chain = run.chain
-    F_near = run.peak_force(near)
+    chain = runs.chain
+    F_near = runs.peak_force(near)
     V_s = None
     if chain.uniform:
         K, n = (chain.K, chain.n) if chain.model == "power-law" else _fitted_power_law(chain.K_c, chain.K_b)
-        V_s = float(solitary_wave_speed(F_near, K=K, n=n, a=chain.a, m=chain.m))
-    support = run.support_force
-    values = (near, far, F_near, run.peak_force(far), run.arrival_time(near), run.arrival_time(far),
-              run.time_of_flight(near, far), run.wave_speed(near, far), V_s,
-              None if support is None else float(np.max(support)), float(run.t[-1]))  # fmt: skip
-    return dict(zip(DYNAMIC_COLUMNS, values, strict=True))
+        V_s = solitary_wave_speed(F_near, K=K, n=n, a=chain.a, m=chain.m)
+    support = runs.support_force
+    columns = (F_near, runs.peak_force(far), runs.arrival_time(near), runs.arrival_time(far),
+               runs.time_of_flight(near, far), runs.wave_speed(near, far), V_s,
+               None if support is None else np.max(support, axis=-1))  # fmt: skip
+    t_end = float(runs.t[-1])
+    return [dict(zip(DYNAMIC_COLUMNS, (near, far, *(None if c is None else float(c[b]) for c in columns), t_end),
+                     strict=True)) for b in range(len(runs))]  # fmt: skip
 
 
 def _batch(points, t_end, n_samples, method, solver):
@@ -440,10 +443,9 @@ def run_points(points, *, t_end=None, n_samples=DEFAULT_SAMPLES, method=SWEEP_ME
     retries = 0 if t_end is not None else MAX_DOUBLINGS
     chain, t_end, arguments = _batch(points, t_end, n_samples, method, solver)
     while True:
-        runs = list(simulate_batch(chain, t_end, **arguments))  # each run reads its sensors once
+        runs = simulate_batch(chain, t_end, **arguments)
         try:
-            for run in runs:
-                signals.leading_pulse(run.t, run.sensor(first.sensors[1]))
+            runs.peak_force(first.sensors[1])  # every run's far pulse, read once (the rows use it)
             break
         except (signals.TruncatedPulseError, signals.NoPulseError) as exc:
             # An impact always sends a pulse: none at the far sensor means it has not got there yet.
@@ -454,8 +456,8 @@ def run_points(points, *, t_end=None, n_samples=DEFAULT_SAMPLES, method=SWEEP_ME
                 ) from None
         retries -= 1
         t_end *= 2.0
-    for row, run in zip(rows, runs, strict=True):
-        row.update(_dynamics(first.sensors, run))
+    for row, dynamics in zip(rows, _dynamics(first.sensors, runs), strict=True):
+        row.update(dynamics)
     return rows
 
 
