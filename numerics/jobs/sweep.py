@@ -147,13 +147,9 @@ class Point:
 
     def __post_init__(self):
         set_ = functools.partial(object.__setattr__, self)
-        set_("striker_mass", striker_convention(self.striker_mass))
-        set_("R_over_r", float(v.positive("R/r", self.R_over_r)))
-        set_("r", float(v.positive("r", self.r, "m")))
-        set_("angle", float(v.as_float("angle", self.angle)))
-        set_("m_eff_ratio", float(v.in_range("m_eff_ratio", self.m_eff_ratio, 0.0, 1.0)))
-        set_("model", v.choice("model", str(self.model), MODELS))
-        set_("n_rings", v.count("n_rings", self.n_rings, 2))
+        chain = ("striker_mass", "R_over_r", "r", "angle", "m_eff_ratio", "model", "n_rings")
+        for name, value in zip(chain, _memo(_checked_chain, *(getattr(self, name) for name in chain)), strict=True):
+            set_(name, value)
         if self.drop_height is not None and self.impact_velocity is not None:
             raise ValueError("give a drop height or an impact velocity, not both")
         for name, unit in (("drop_height", "m"), ("impact_velocity", "m/s")):
@@ -162,11 +158,8 @@ class Point:
                 raise ValueError(f"{name.replace('_', ' ')} must be a number (in {unit}), got {value!r}")
             if value is not None:
                 set_(name, float(v.positive(name.replace("_", " "), value, unit)))
-        set_("sensors", sensor_pair(self.sensors))
-        ring = self.ring  # validates R > 2 r, the angle and the material, with errors that say why
-        if self.dynamic:
-            ring.check_chain()
-            sensor_pair(self.sensors, self.n_rings)
+        set_("sensors", _memo(_checked_sensors, self.sensors, self.R_over_r, self.r, self.material, self.angle,
+                              self.n_rings, self.dynamic))  # fmt: skip
 
     @property
     def ring(self) -> Ring:
@@ -194,10 +187,14 @@ class Point:
     def chain_key(self) -> tuple:
         """What the points integrated together share: all but the impact's size."""
         kind = "drop" if self.drop_height is not None else "velocity" if self.impact_velocity is not None else None
-        return (*(getattr(self, f.name) for f in fields(self) if f.name not in _IMPACT), kind)
+        return (*(getattr(self, name) for name in _CHAIN_FIELDS), kind)
 
     def columns(self) -> dict:
         """The row's columns before the run: the point and the static theory of its contact (Eqs. 1-4)."""
+        return self._columns(self.speed)
+
+    def _columns(self, speed) -> dict:
+        """:meth:`columns`, the impact speed (m/s) given."""
         ring = self.ring
         return {
             "R_over_r": self.R_over_r,
@@ -211,9 +208,44 @@ class Point:
             "m_eff_ratio": self.m_eff_ratio,
             **_striker_columns(self.striker_mass, self.m_eff_ratio * ring.mass, ring.mass),
             "drop_height_m": self.drop_height,
-            "impact_velocity_m_s": self.speed,
+            "impact_velocity_m_s": speed,
             **_contact_theory(ring),
         }
+
+
+# A grid's points share their chain: its fields are checked once per chain, not once per point (a tenth of a
+# millisecond each, a second of a sweep of 10^4 drop heights).
+def _memo(check, *values):
+    """``check(*values)`` through its cache, keyed on the values and their types (1 and True, 20 and 20.0 are
+    checked apart); values that cannot be hashed (a list of sensors) are checked without it."""
+    try:
+        return check(*((type(x), x) for x in values))
+    except TypeError as exc:
+        if "unhashable" not in str(exc):
+            raise
+        return check.__wrapped__(*((type(x), x) for x in values))
+
+
+@functools.lru_cache(maxsize=1024)
+def _checked_chain(*typed) -> tuple:
+    """The chain's fields of a :class:`Point` (striker, R/r, r, angle, m_eff/m0, model, ring count), checked."""
+    striker, R_over_r, r, angle, m_eff_ratio, model, n_rings = (x for _, x in typed)
+    return (striker_convention(striker), float(v.positive("R/r", R_over_r)), float(v.positive("r", r, "m")),
+            float(v.as_float("angle", angle)), float(v.in_range("m_eff_ratio", m_eff_ratio, 0.0, 1.0)),
+            v.choice("model", str(model), MODELS), v.count("n_rings", n_rings, 2))  # fmt: skip
+
+
+@functools.lru_cache(maxsize=1024)
+def _checked_sensors(*typed) -> tuple:
+    """A :class:`Point`'s sensors, checked with its ring (R > 2 r, the angle, the material: errors that say why) and,
+    with an impact, against its chain."""
+    sensors, R_over_r, r, material, angle, n_rings, dynamic = (x for _, x in typed)
+    sensors = sensor_pair(sensors)
+    ring = _ring(R_over_r, r, material, angle)
+    if dynamic:
+        ring.check_chain()
+        sensor_pair(sensors, n_rings)
+    return sensors
 
 
 # The points of a sweep share a few rings: each ring and the static theory of its contact (Eqs. 1-4, a fit of
@@ -296,11 +328,14 @@ class FilePoint:
                 self.striker_mass, kind)  # fmt: skip
 
     def columns(self) -> dict:
+        return self._columns(self.speed)
+
+    def _columns(self, speed) -> dict:
         row = {} if self.field is None else {self.field: self.value}
         m0 = self.varied.rings()[0].mass  # ring 0, the struck ring
         row |= {"n_rings": self.varied.n_rings, "model": self.model, "m_eff_ratio": self.m_eff_ratio,
                 **_striker_columns(self.striker_mass, self.m_eff_ratio * m0, m0),
-                "impact_velocity_m_s": self.speed}  # fmt: skip
+                "impact_velocity_m_s": speed}  # fmt: skip
         if self.drop_height is not None:
             row["drop_height_m"] = self.drop_height
         return row
@@ -313,6 +348,7 @@ def _striker_columns(striker, m_eff: float, m0: float) -> dict:
 
 
 _IMPACT = ("drop_height", "impact_velocity")
+_CHAIN_FIELDS = tuple(f.name for f in fields(Point) if f.name not in _IMPACT)
 
 #: Names a grid may vary (the fields of :class:`Point`).
 AXES = tuple(f.name for f in fields(Point))
@@ -405,16 +441,25 @@ def _dynamics(sensors, runs) -> list[dict]:
                      strict=True)) for b in range(len(runs))]  # fmt: skip
 
 
-def _batch(points, t_end, n_samples, method, solver):
+def _speeds(points) -> list:
+    """The impact speed of each point (m/s; None for a static point), drop heights made speeds in one call
+    (:func:`~ringchain.theory.impact_speed`: the points of a task share their kind of impact)."""
+    heights = [p.drop_height for p in points]
+    if any(h is None for h in heights):
+        return [p.speed for p in points]
+    return [float(u) for u in impact_speed(np.array(heights))]
+
+
+def _batch(points, speeds, t_end, n_samples, method, solver):
     """The chain of points that share one, its duration and the arguments of :func:`simulate_batch`."""
     first = points[0]
     chain = first.chain()
     if t_end is None:
-        t_end = default_t_end(chain, [p.speed for p in points], first.sensors)
+        t_end = default_t_end(chain, speeds, first.sensors)
     if first.drop_height is not None:
         impact = {"drop_heights": [p.drop_height for p in points]}
     else:
-        impact = {"impact_velocities": [p.speed for p in points]}
+        impact = {"impact_velocities": speeds}
     rings = (*first.sensors, chain.n_rings - 1)  # the sensors and the top ring (the support's force)
     if method == SWEEP_METHOD and solver.get("rtol") is None:
         solver = dict(solver, rtol=SWEEP_RTOL)
@@ -436,12 +481,13 @@ def run_points(points, *, t_end=None, n_samples=DEFAULT_SAMPLES, method=SWEEP_ME
     keys = {p.chain_key for p in points}
     if len(keys) != 1:
         raise ValueError("run_points takes points that share one chain")
-    rows = [p.columns() for p in points]
+    speeds = _speeds(points)
+    rows = [p._columns(speed) for p, speed in zip(points, speeds, strict=True)]
     first = points[0]
     if not first.dynamic:
         return rows
     retries = 0 if t_end is not None else MAX_DOUBLINGS
-    chain, t_end, arguments = _batch(points, t_end, n_samples, method, solver)
+    chain, t_end, arguments = _batch(points, speeds, t_end, n_samples, method, solver)
     while True:
         runs = simulate_batch(chain, t_end, **arguments)
         try:
@@ -469,7 +515,7 @@ def estimate_task(points, *, t_end=None, n_samples=DEFAULT_SAMPLES, method=SWEEP
     points = list(points)
     if not points[0].dynamic:
         return None
-    chain, t_end, arguments = _batch(points, t_end, n_samples, method, solver)
+    chain, t_end, arguments = _batch(points, _speeds(points), t_end, n_samples, method, solver)
     for option in ("max_memory", "max_seconds", "max_energy_drift"):
         arguments.pop(option, None)
     return estimate_run(chain, t_end, **arguments)
