@@ -65,6 +65,9 @@ MIN_SAMPLES_PER_WIDTH = 5
 #: it (a relative tolerance of 1e-9 at most gives a wobble of ~1e-9).
 _NO_PULSE_LEVEL = 1e-6
 
+#: Samples of the traces :func:`peak` reads together (a block of traces at a time: its work arrays stay small).
+_BLOCK_SAMPLES = 1 << 20
+
 
 class PulseError(ValueError):
     """A trace from which no leading pulse can be read (see the subclasses)."""
@@ -94,17 +97,18 @@ def _trace(t, y, rows=False):
     return t, y
 
 
-def estimate_baseline(t, y) -> float:
+def estimate_baseline(t, y):
     """The level of a trace before its pulse arrives: the median of its first samples.
 
     Parameters
     ----------
     t, y : array_like, shape (T,)
-        Times (s, increasing) and trace, as in :func:`leading_pulse`.
+        Times (s, increasing) and trace, as in :func:`leading_pulse`; or traces on those times, ``y`` of
+        shape (..., T), each read alone.
 
     Returns
     -------
-    float
+    float, or ndarray of shape ``y.shape[:-1]``
         Median of the first :data:`BASELINE_SAMPLES` samples, in the units of ``y``.
         For a simulated sensor it is the static tension at the sensor; a record that
         starts after the wave has arrived needs its baseline given instead.
@@ -115,8 +119,14 @@ def estimate_baseline(t, y) -> float:
     >>> estimate_baseline(t, 2.0 + np.exp(-((t - 0.5) / 0.05) ** 2))
     2.0
     """
-    t, y = _trace(t, y)
-    return float(np.median(y[:BASELINE_SAMPLES]))
+    t, y = _trace(t, y, rows=True)
+    base = _baseline(y)
+    return float(base) if y.ndim == 1 else base
+
+
+def _baseline(y) -> np.ndarray:
+    """:func:`estimate_baseline` of traces ``y`` (..., T)."""
+    return np.median(y[..., :BASELINE_SAMPLES], axis=-1)
 
 
 @dataclass(frozen=True)
@@ -152,8 +162,8 @@ class _Pulses:
     spacing: np.ndarray  # s, the largest sample spacing across the half-height crossings
     problem: np.ndarray
 
-    def error(self, b: int, label: bool = False) -> PulseError:
-        """The error of trace ``b`` (see :func:`leading_pulse`), naming it by its index if ``label``."""
+    def error(self, b: int, label: bool = False, index: int | None = None) -> PulseError:
+        """The error of trace ``b`` (see :func:`leading_pulse`), naming it by its ``index`` (default b) if ``label``."""
         t, base, top, level = self.t, self.baseline[b], self.top[b], self.level[b]
         tk, yk, code = t[self.k[b]], self.height[b], self.problem[b]
         width = self.t_right[b] - self.t_left[b]
@@ -186,7 +196,7 @@ class _Pulses:
                 f"least {MIN_SAMPLES_PER_WIDTH} per width (a spacing of {width / MIN_SAMPLES_PER_WIDTH:.3g} s or less)"
             )
         if label:
-            error.args = (f"trace {b}: {error.args[0]}",)
+            error.args = (f"trace {b if index is None else index}: {error.args[0]}",)
         return error
 
     def check(self, label: bool = False) -> None:
@@ -224,7 +234,7 @@ def _leading_rows(t, y, threshold=None, baseline=None) -> _Pulses:
     module notes).  ``baseline``: None (each trace's own, :func:`estimate_baseline`) or one per trace (B,)."""
     B, T = y.shape
     rows, index = np.arange(B), np.arange(T)
-    base = np.median(y[:, :BASELINE_SAMPLES], axis=1) if baseline is None else baseline
+    base = _baseline(y) if baseline is None else baseline
     top = y.max(axis=1)
     scale = np.maximum(np.abs(y).max(axis=1), np.abs(base))
     problem = np.where(top - base > _NO_PULSE_LEVEL * scale, 0, _FLAT)
@@ -345,10 +355,15 @@ def peak(t, y, threshold=None, *, baseline=None, errors="raise"):
     t, y = _trace(t, y, rows=True)
     shape, T = y.shape[:-1], t.size
     traces = y.reshape(-1, T)
-    pulses = _leading_rows(t, traces, threshold, None if baseline is None else _levels("baseline", baseline, shape))
-    if errors == "raise":
-        pulses.check(label=bool(shape))
-    rows, k = np.arange(traces.shape[0]), np.clip(pulses.k, 1, T - 2)  # (a trace marked may peak at an end)
+    levels = None if baseline is None else _levels("baseline", baseline, shape)
+    block = max(1, _BLOCK_SAMPLES // T)  # traces read together: a few arrays of block x T samples at a time
+    found = [_leading_rows(t, traces[a : a + block], threshold, None if levels is None else levels[a : a + block])
+             for a in range(0, traces.shape[0], block)]  # fmt: skip
+    problem, k = (np.concatenate([getattr(p, name) for p in found]) for name in ("problem", "k"))
+    if errors == "raise" and np.any(problem):
+        first = int(np.flatnonzero(problem)[0])
+        raise found[first // block].error(first % block, label=bool(shape), index=first)
+    rows, k = np.arange(traces.shape[0]), np.clip(k, 1, T - 2)  # (a trace marked may peak at an end)
     t0, t1, t2 = t[k - 1], t[k], t[k + 1]
     y0, y1, y2 = traces[rows, k - 1], traces[rows, k], traces[rows, k + 1]
     # Vertex of the parabola through three (possibly unevenly spaced) points.
@@ -361,7 +376,7 @@ def peak(t, y, threshold=None, *, baseline=None, errors="raise"):
         bent = curvature < 0
         time = np.where(bent, t1 + shift, t1)
         height = np.where(bent, y1 + slope * shift + curvature * shift**2, y1)
-    failed = pulses.problem != 0
+    failed = problem != 0
     time[failed], height[failed] = np.nan, np.nan
     if not shape:
         return float(time[0]), float(height[0])

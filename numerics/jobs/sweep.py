@@ -9,11 +9,12 @@ at two sensor rings, their arrival times, the time of flight and wave speed, bes
 solitary-wave speed of Eq. (8) at the measured peak force.
 
 Scale.  Points that share a chain (everything but the impact) are integrated together
-by :func:`~ringchain.numerics.simulate_batch`, in chunks of ``batch_size`` runs, so a
-sweep over many drop heights costs little more than a few runs
-(benchmarks/bench_batch.py).  The chunks are independent tasks submitted to a
-:class:`concurrent.futures.Executor`: local processes by default, or a Dask cluster
-without any code change::
+by :func:`~ringchain.numerics.simulate_batch`, in chunks of ``batch_size`` runs, each run
+with its own steps on every core, and the sensors of a chunk's runs are read together
+(:func:`~ringchain.numerics.signals.peak` on the batch's traces); benchmarks/bench_sweep.py
+measures a sweep of 10^4 drop heights.  The chunks are independent tasks submitted to a
+:class:`concurrent.futures.Executor`: by default this process, or local processes when
+they would save more than they cost to start, or a Dask cluster without any code change::
 
     from distributed import Client
     rows = sweep(grid, executor=Client("tcp://scheduler:8786").get_executor())
@@ -67,6 +68,7 @@ __all__ = [
     "DEFAULT_SAMPLES",
     "SWEEP_METHOD",
     "SWEEP_RTOL",
+    "PYTHON_SECONDS_PER_POINT",
 ]
 
 #: Runs integrated together in one task (one :func:`simulate_batch` call).
@@ -76,6 +78,13 @@ DEFAULT_BATCH_SIZE = 64
 #: times of flight read from 1001 samples differ from 8001 by < 1e-4 relative on the
 #: paper's chain.
 DEFAULT_SAMPLES = 1001
+
+#: Seconds of Python a point costs in the process that runs it (its row, its share of making its batch's model and
+#: of reading the batch's sensors), on one core: 0.45 ms measured on a sweep of 2048 drop heights with the load
+#: average at 6.4 on two cores (benchmarks/bench_sweep.py prints it).  The compiled kernels use every core from one
+#: process, so this is all a pool of processes could spread: :func:`sweep` given no executor runs in the calling
+#: process unless that saves more than the pool costs to start (10^4 points: about 2 s against 2.5 s or more).
+PYTHON_SECONDS_PER_POINT = 4.5e-4
 
 #: Integrator of the sweeps: the compiled Dormand-Prince pair, each run of a batch with its own
 #: steps (the runs in parallel over the cores), at :data:`SWEEP_RTOL`.  (The NumPy Verlet of
@@ -542,13 +551,15 @@ def sweep(
         Axes and values, or points (see :func:`expand`; :class:`FilePoint` s too).
     executor : concurrent.futures.Executor, optional
         Where the tasks run: any Executor, e.g. a Dask ``Client(...).get_executor()``.
-        Default: a pool of local processes, shut down at the end.
+        Default: this process, or a pool of local processes (shut down at the end) when it
+        would save more than it costs to start (:data:`PYTHON_SECONDS_PER_POINT`); one line
+        on stderr says which.
     batch_size : int, optional
         Most runs of one chain integrated together in one task.  Part of the grid's
         definition: it fixes the chunks, so changing it may change the last digits.
     max_workers : int, optional
-        Processes of the default pool (default: the number of CPUs); 0 runs every task
-        in this process (:class:`InlineExecutor`).  The pool starts its workers with
+        Processes of the default pool (the number of CPUs: given, the pool is used); 0 runs
+        every task in this process (:class:`InlineExecutor`).  The pool starts its workers with
         "spawn", which imports a calling script again in every worker: in a script, call
         :func:`sweep` under ``if __name__ == "__main__":`` (a call outside it raises
         ``RuntimeError`` before any worker starts; see
@@ -593,9 +604,10 @@ def sweep(
     tasks = [idx[k : k + batch_size] for idx in groups.values() for k in range(0, len(idx), batch_size)]
     options = {"t_end": t_end, "n_samples": n_samples, "method": method, "max_seconds": max_seconds, **solver}
     seconds = _check_work([[points[i] for i in task] for task in tasks], options)
+    serial = PYTHON_SECONDS_PER_POINT * len(points)  # all a pool could spread: the kernels use every core here
     results = run_tasks(run_points, [([points[i] for i in task],) for task in tasks], executor, options=options,
                         max_workers=max_workers, progress=progress, sizes=[len(task) for task in tasks], name="sweep",
-                        unit="point", seconds=seconds)  # fmt: skip
+                        unit="point", seconds=serial + (seconds or 0.0), serial=serial)  # fmt: skip
     rows: list[dict | None] = [None] * len(points)
     for task, result in zip(tasks, results, strict=True):
         for i, row in zip(task, result, strict=True):
