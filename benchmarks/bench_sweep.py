@@ -29,7 +29,7 @@ from pathlib import Path
 
 import numpy as np
 from ringchain.numerics.jobs import sweep as sweep_module
-from ringchain.numerics.jobs.sweep import PYTHON_SECONDS_PER_POINT, expand, sweep, write_csv
+from ringchain.numerics.jobs.sweep import expand, sweep, write_csv
 
 GRID = {"model": "dual-spring", "m_eff_ratio": 0.37}
 GOAL = 8.0  # s, for 10^4 points (issue 30)
@@ -89,9 +89,11 @@ def split(count: int) -> None:
     t_csv = time.perf_counter() - mark
     wall, cpu, main = time.perf_counter() - start, time.process_time() - cpu, time.thread_time() - main
     rest = t_sweep - integration[0]
+    per_point = getattr(sweep_module, "PYTHON_SECONDS_PER_POINT", None)  # (a version before it: None)
+    constant = "" if per_point is None else f"; PYTHON_SECONDS_PER_POINT {per_point * 1e3:.3f} ms"
     print(f"\nin this process, {count} drop heights: {wall:.2f} s wall, {cpu:.2f} s CPU (this thread, Python: "
-          f"{main:.2f} s, {main / count * 1e3:.3f} ms a point; PYTHON_SECONDS_PER_POINT "
-          f"{PYTHON_SECONDS_PER_POINT * 1e3:.3f} ms); load average {loaded} -> {load()}")  # fmt: skip
+          f"{main:.2f} s, {main / count * 1e3:.3f} ms a point{constant}); load average {loaded} -> "
+          f"{load()}")  # fmt: skip
     for name, seconds in (("points (expand)", t_points), ("integration (simulate_batch)", integration[0]),
                           ("estimate, rows and readings", rest), ("CSV", t_csv)):  # fmt: skip
         print(f"  {name:30s} {seconds:7.2f} s  {seconds / wall:6.1%}")
