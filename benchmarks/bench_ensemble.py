@@ -5,9 +5,10 @@ spread by 10 % (R) and 5 % (r), 40 to a chain, hanging, struck by a 5 cm drop an
 ring.  The script prints, each measured in this run on this machine:
 
 - the headline: one :func:`~ringchain.numerics.jobs.ensemble` call of 128 members on ``--workers``
-  local processes (default 2), wall time and time per member (the issue's goal: 10 s with the
-  compiled engine of issue 20); the wall time includes starting the worker processes, which the
-  script measures separately (an ensemble of two members, one per worker);
+  local processes (default 2), wall time and time per member (issue 30's goal: 5 s on a quiet
+  two-core machine); the wall time includes starting the worker processes, which the script
+  measures separately (an ensemble of two members, one per worker); then the same call in this
+  process (``max_workers=0``), its CPU time split into Python on one core and the kernels' threads;
 - the same 128 members as a loop over :func:`~ringchain.numerics.simulate` on one core (the
   issue's "today 6-8 s"), on every ``--subset``-th member scaled up;
 - scaling with the count (16 to 128 members) and with the workers (0: this process, 1, 2) at a
@@ -26,6 +27,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import time
 
 import numpy as np
 from bench_batch import best_of  # the benchmarks' one timer (run from benchmarks/, as each script is)
@@ -62,7 +64,14 @@ def main():
                                                     max_workers=args.workers, **common))  # fmt: skip
     print(f"one ensemble call, {COUNT} members on {args.workers} workers: {wall:.2f} s, {wall / COUNT * 1e3:.1f} ms "
           f"a member ({args.workers} x {wall / COUNT * args.workers * 1e3:.1f} ms of a core); starting the workers "
-          f"and a two-member call: {startup:.2f} s; goal 10 s (compiled engine)")  # fmt: skip
+          f"and a two-member call: {startup:.2f} s; goal 5 s on a quiet machine (issue 30)")  # fmt: skip
+    cpu, main = time.process_time(), time.thread_time()
+    inline, _ = best_of(1, lambda: ensemble(RING, N_RINGS, COUNT, batch_size=args.batch_size, max_workers=0,
+                                            **common))  # fmt: skip
+    cpu, main = time.process_time() - cpu, time.thread_time() - main
+    print(f"the same call in this process: {inline:.2f} s wall, {cpu:.2f} s CPU, of which Python on one core "
+          f"{main:.2f} s (drawing the rings, building the chains, reading the sensors) and the kernels' threads "
+          f"{cpu - main:.2f} s; load average now {os.getloadavg()[0]:.1f}")  # fmt: skip
 
     # The loop the issue starts from: one simulate call per member, one core.
     seeds = member_seeds(0, COUNT)[:: args.subset]

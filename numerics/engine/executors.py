@@ -183,6 +183,7 @@ def run_tasks(
     name: str = "sweep",
     unit: str = "task",
     seconds: float | None = None,
+    serial: float | None = None,
 ) -> list:
     """``function(*task, **options)`` for each task, run through ``executor``; the results in task order.
 
@@ -208,7 +209,12 @@ def run_tasks(
     seconds : float, optional
         The job's work in this process, s (an estimate).  Given no executor and no ``max_workers``, the job
         runs in the calling process when a pool of the CPUs would save less than :data:`POOL_START_SECONDS`
-        (the kernels of a batch use every core from one process anyway); one line on stderr says which.
+        (scaled by the load); one line on stderr says which.
+    serial : float, optional
+        The part of ``seconds`` that runs on one core (Python: making the tasks' models, reading their results),
+        s: all a pool can save, spread over its workers.  The rest, the compiled kernels', already uses every core
+        from one process (a batch's runs on a pool of threads), and a pool's workers only share the cores out
+        again.  Default: all of ``seconds``.
 
     Returns
     -------
@@ -228,11 +234,13 @@ def run_tasks(
     own = executor is None
     if own and max_workers is None and seconds is not None and len(tasks) > 0:
         workers = max(1, min(os.cpu_count() or 1, len(tasks)))
-        saved, cost = seconds * (1.0 - 1.0 / workers), POOL_START_SECONDS * load_factor()
+        single = seconds if serial is None else min(float(serial), seconds)
+        saved, cost = single * (1.0 - 1.0 / workers), POOL_START_SECONDS * load_factor()
         max_workers = 0 if saved < cost else workers
         where = "in this process" if max_workers == 0 else f"on {workers} worker processes"
+        share = "" if serial is None else f", {single:.1f} s of it on one core"
         _kernel_calls.notify(
-            f"{name}: {sum(sizes)} {unit}s {where} (about {seconds:.1f} s of work; a pool of "
+            f"{name}: {sum(sizes)} {unit}s {where} (about {seconds:.1f} s of work{share}; a pool of "
             f"{workers} would save about {saved:.1f} s and costs about {cost:.1f} s to start)"
         )
     if own:

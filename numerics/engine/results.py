@@ -274,8 +274,9 @@ class Simulation(NetworkSimulation):
 
     # -- the sensor helpers (one run) --------------------------------------------------------------
     def sensor(self, ring: int) -> np.ndarray:
-        """Sensor force of ring ``ring`` (index from the impact end), N, shape (T,) (read-only: computed once per
-        ring and shared by the sensor helpers below)."""
+        """Sensor force of ring ``ring`` (index from the impact end), N, shape (T,), or (B, T) for a batch (read-only:
+        computed once per ring and shared by the sensor helpers below, which read a batch's runs at once and
+        give one value per run)."""
         i = self._ring(ring)
         if i not in self._sensors:
             force = self._sensor(np.array([i]))[..., 0]
@@ -351,7 +352,11 @@ class Simulation(NetworkSimulation):
 
 @dataclass(frozen=True, eq=False)
 class BatchSimulation(Simulation):
-    """B runs of one chain: arrays of shape (B, T, ...); ``result[i]`` is run i as a :class:`Simulation`."""
+    """B runs of one chain: arrays of shape (B, T, ...); ``result[i]`` is run i as a :class:`Simulation`.
+
+    The sensor helpers read every run at once (:func:`~ringchain.numerics.signals.peak` on the batch's traces) and
+    give one value per run, shape (B,): ``batch.peak_force(6)[i] == batch[i].peak_force(6)``; a run whose pulse
+    cannot be read raises its error, naming it ("trace i")."""
 
     def __len__(self) -> int:
         return self.x.shape[0]

@@ -65,6 +65,9 @@ MIN_SAMPLES_PER_WIDTH = 5
 #: it (a relative tolerance of 1e-9 at most gives a wobble of ~1e-9).
 _NO_PULSE_LEVEL = 1e-6
 
+#: Samples of the traces :func:`peak` reads together (a block of traces at a time: its work arrays stay small).
+_BLOCK_SAMPLES = 1 << 20
+
 
 class PulseError(ValueError):
     """A trace from which no leading pulse can be read (see the subclasses)."""
@@ -82,27 +85,30 @@ class UnresolvedPulseError(PulseError):
     """The leading pulse is sampled too coarsely to locate its peak."""
 
 
-def _trace(t, y):
+def _trace(t, y, rows=False):
+    """``t`` (T,) and one trace ``y`` (T,); with ``rows``, traces on those times, ``y`` of shape (..., T)."""
     t = v.as_float("t", t)
     y = v.as_float("signal", y)
-    if t.ndim != 1 or y.shape != t.shape:
-        raise ValueError(f"t and the signal must be 1-d of the same length, got shapes {t.shape} and {y.shape}")
+    if t.ndim != 1 or (y.shape[-1:] != t.shape if rows else y.shape != t.shape):
+        what = "the signal (or the signals' last axis)" if rows else "the signal"
+        raise ValueError(f"t and {what} must be 1-d of the same length, got shapes {t.shape} and {y.shape}")
     if t.size < 3 or np.any(np.diff(t) <= 0):
         raise ValueError("t must be increasing, with at least 3 samples")
     return t, y
 
 
-def estimate_baseline(t, y) -> float:
+def estimate_baseline(t, y):
     """The level of a trace before its pulse arrives: the median of its first samples.
 
     Parameters
     ----------
     t, y : array_like, shape (T,)
-        Times (s, increasing) and trace, as in :func:`leading_pulse`.
+        Times (s, increasing) and trace, as in :func:`leading_pulse`; or traces on those times, ``y`` of
+        shape (..., T), each read alone.
 
     Returns
     -------
-    float
+    float, or ndarray of shape ``y.shape[:-1]``
         Median of the first :data:`BASELINE_SAMPLES` samples, in the units of ``y``.
         For a simulated sensor it is the static tension at the sensor; a record that
         starts after the wave has arrived needs its baseline given instead.
@@ -113,8 +119,14 @@ def estimate_baseline(t, y) -> float:
     >>> estimate_baseline(t, 2.0 + np.exp(-((t - 0.5) / 0.05) ** 2))
     2.0
     """
-    t, y = _trace(t, y)
-    return float(np.median(y[:BASELINE_SAMPLES]))
+    t, y = _trace(t, y, rows=True)
+    base = _baseline(y)
+    return float(base) if y.ndim == 1 else base
+
+
+def _baseline(y) -> np.ndarray:
+    """:func:`estimate_baseline` of traces ``y`` (..., T)."""
+    return np.median(y[..., :BASELINE_SAMPLES], axis=-1)
 
 
 @dataclass(frozen=True)
@@ -128,6 +140,78 @@ class _Pulse:
     t_right: float  # s, falling half-height crossing
 
 
+# Why a trace's leading pulse cannot be read (_Pulses.problem; 0: it can).
+_FLAT, _UNREACHED, _EARLY, _UNFINISHED, _BEFORE, _COARSE = range(1, 7)
+
+
+@dataclass(frozen=True)
+class _Pulses:
+    """The leading pulses of B traces on the same times (one a row), as :class:`_Pulse` each, in arrays of shape
+    (B,); ``problem`` says why a trace's cannot be read (0: it can, see :meth:`error`)."""
+
+    t: np.ndarray
+    start: np.ndarray
+    stop: np.ndarray
+    k: np.ndarray
+    baseline: np.ndarray
+    top: np.ndarray
+    level: np.ndarray
+    height: np.ndarray  # the sampled maximum y[k]
+    t_left: np.ndarray
+    t_right: np.ndarray
+    spacing: np.ndarray  # s, the largest sample spacing across the half-height crossings
+    problem: np.ndarray
+
+    def error(self, b: int, label: bool = False, index: int | None = None) -> PulseError:
+        """The error of trace ``b`` (see :func:`leading_pulse`), naming it by its ``index`` (default b) if ``label``."""
+        t, base, top, level = self.t, self.baseline[b], self.top[b], self.level[b]
+        tk, yk, code = t[self.k[b]], self.height[b], self.problem[b]
+        width = self.t_right[b] - self.t_left[b]
+        spacing = self.spacing[b]
+        if code == _FLAT:
+            error = NoPulseError(f"no pulse: the trace never rises above its baseline {base:g} (its maximum is "
+                                 f"{top:g})")  # fmt: skip
+        elif code == _UNREACHED:
+            error = NoPulseError(f"no pulse: the trace never reaches the threshold {level:g} (its maximum is {top:g})")
+        elif code == _EARLY:
+            error = TruncatedPulseError(
+                f"the trace is above the pulse threshold {level:g} at the start of the record (t = {t[0]:g} s): "
+                f"the pulse began before the record, or the baseline {base:g} is not the level before the wave "
+                "(give it as baseline=)"
+            )
+        elif code == _UNFINISHED:
+            error = TruncatedPulseError(
+                f"the leading pulse (sampled peak {yk:g} at t = {tk:g} s) does not fall to half its height "
+                f"within the record, which ends at t = {t[-1]:g} s: it is cut off; record for longer"
+            )
+        elif code == _BEFORE:
+            error = TruncatedPulseError(
+                f"the leading pulse (sampled peak {yk:g} at t = {tk:g} s) is above half its height from the "
+                f"start of the record: it began before t = {t[0]:g} s"
+            )
+        else:
+            error = UnresolvedPulseError(
+                f"the leading pulse is sampled too coarsely to locate its peak: {width / spacing:.1f} samples "
+                f"across its full width at half maximum ({width:.3g} s at a spacing of {spacing:.3g} s); sample at "
+                f"least {MIN_SAMPLES_PER_WIDTH} per width (a spacing of {width / MIN_SAMPLES_PER_WIDTH:.3g} s or less)"
+            )
+        if label:
+            error.args = (f"trace {b if index is None else index}: {error.args[0]}",)
+        return error
+
+    def check(self, label: bool = False) -> None:
+        """Raise the error of the first trace whose pulse cannot be read (see :meth:`error`)."""
+        failed = np.flatnonzero(self.problem)
+        if failed.size:
+            raise self.error(int(failed[0]), label)
+
+    def one(self) -> _Pulse:
+        """The pulse of the only trace (its error raised if it cannot be read)."""
+        self.check()
+        start, stop, k = int(self.start[0]), int(self.stop[0]), int(self.k[0])
+        return _Pulse(slice(start, stop), k, float(self.baseline[0]), float(self.t_left[0]), float(self.t_right[0]))
+
+
 def _level(name, value) -> float:
     value = v.as_float(name, value)
     if value.ndim:
@@ -135,59 +219,62 @@ def _level(name, value) -> float:
     return float(value)
 
 
-def _leading(t, y, threshold=None, baseline=None) -> _Pulse:
-    """Find the leading pulse and check that it can be read (see the module notes)."""
-    t, y = _trace(t, y)
-    base = float(np.median(y[:BASELINE_SAMPLES])) if baseline is None else _level("baseline", baseline)
-    top = float(y.max())
-    scale = max(float(np.abs(y).max()), abs(base))
-    if not top - base > _NO_PULSE_LEVEL * scale:
-        raise NoPulseError(f"no pulse: the trace never rises above its baseline {base:g} (its maximum is {top:g})")
+def _levels(name, value, shape) -> np.ndarray:
+    """A level (one number, or one per trace: ``shape``) as a flat array, one per trace."""
+    if not shape:
+        return np.array([_level(name, value)])
+    value = v.as_float(name, value)
+    if value.ndim and value.shape != shape:
+        raise ValueError(f"{name} must be one number or one per trace (shape {shape}), got shape {value.shape}")
+    return np.broadcast_to(value, shape).ravel()
+
+
+def _leading_rows(t, y, threshold=None, baseline=None) -> _Pulses:
+    """Find the leading pulse of each row of ``y`` (B, T), all at once, and mark those that cannot be read (see the
+    module notes).  ``baseline``: None (each trace's own, :func:`estimate_baseline`) or one per trace (B,)."""
+    B, T = y.shape
+    rows, index = np.arange(B), np.arange(T)
+    base = _baseline(y) if baseline is None else baseline
+    top = y.max(axis=1)
+    scale = np.maximum(np.abs(y).max(axis=1), np.abs(base))
+    problem = np.where(top - base > _NO_PULSE_LEVEL * scale, 0, _FLAT)
     if threshold is None:
         level = base + LEADING_PULSE_THRESHOLD * (top - base)
     else:
-        level = _level("threshold", threshold)
-        if not level > base:
-            raise ValueError(f"the pulse threshold {level:g} must lie above the trace's baseline {base:g}")
-        if level > top:
-            raise NoPulseError(f"no pulse: the trace never reaches the threshold {level:g} (its maximum is {top:g})")
-    above = np.flatnonzero(y >= level)
-    start = int(above[0])
-    if start == 0:
-        raise TruncatedPulseError(
-            f"the trace is above the pulse threshold {level:g} at the start of the record (t = {t[0]:g} s): "
-            f"the pulse began before the record, or the baseline {base:g} is not the level before the wave "
-            "(give it as baseline=)"
-        )
-    below = np.flatnonzero(y[start:] < level)
-    stop = start + int(below[0]) if below.size else y.size
-    k = start + int(np.argmax(y[start:stop]))
-    half = base + 0.5 * (y[k] - base)
-    left = np.flatnonzero(y[:k] < half)
-    right = np.flatnonzero(y[k:] < half)
-    if right.size == 0:
-        raise TruncatedPulseError(
-            f"the leading pulse (sampled peak {y[k]:g} at t = {t[k]:g} s) does not fall to half its height "
-            f"within the record, which ends at t = {t[-1]:g} s: it is cut off; record for longer"
-        )
-    if left.size == 0:
-        raise TruncatedPulseError(
-            f"the leading pulse (sampled peak {y[k]:g} at t = {t[k]:g} s) is above half its height from the "
-            f"start of the record: it began before t = {t[0]:g} s"
-        )
-    i = int(left[-1])  # y[i] < half <= y[i+1]
-    j = k + int(right[0])  # y[j-1] >= half > y[j]
-    t_left = t[i] + (half - y[i]) * (t[i + 1] - t[i]) / (y[i + 1] - y[i])
-    t_right = t[j - 1] + (y[j - 1] - half) * (t[j] - t[j - 1]) / (y[j - 1] - y[j])
-    spacing = float(np.max(np.diff(t[i : j + 1])))
-    width = float(t_right - t_left)
-    if width < MIN_SAMPLES_PER_WIDTH * spacing:
-        raise UnresolvedPulseError(
-            f"the leading pulse is sampled too coarsely to locate its peak: {width / spacing:.1f} samples across "
-            f"its full width at half maximum ({width:.3g} s at a spacing of {spacing:.3g} s); sample at least "
-            f"{MIN_SAMPLES_PER_WIDTH} per width (a spacing of {width / MIN_SAMPLES_PER_WIDTH:.3g} s or less)"
-        )
-    return _Pulse(slice(start, stop), k, base, float(t_left), float(t_right))
+        level = np.full(B, _level("threshold", threshold))
+        low = np.flatnonzero((problem == 0) & ~(level > base))
+        if low.size:
+            which = f" (trace {low[0]})" if B > 1 else ""
+            raise ValueError(f"the pulse threshold {level[0]:g} must lie above the trace's baseline "
+                             f"{base[low[0]]:g}{which}")  # fmt: skip
+        problem = np.where((problem == 0) & (level > top), _UNREACHED, problem)
+    start = np.argmax(y >= level[:, None], axis=1)  # the first sample at or above the level
+    problem = np.where((problem == 0) & (start == 0), _EARLY, problem)
+    after = (y < level[:, None]) & (index > start[:, None])
+    stop = np.where(after.any(axis=1), np.argmax(after, axis=1), T)
+    k = np.argmax(np.where((index >= start[:, None]) & (index < stop[:, None]), y, -np.inf), axis=1)
+    height = y[rows, k]
+    half = base + 0.5 * (height - base)
+    low = y < half[:, None]
+    left, right = low & (index < k[:, None]), low & (index >= k[:, None])
+    problem = np.where((problem == 0) & ~right.any(axis=1), _UNFINISHED, problem)
+    problem = np.where((problem == 0) & ~left.any(axis=1), _BEFORE, problem)
+    i = np.minimum(T - 1 - np.argmax(left[:, ::-1], axis=1), T - 2)  # y[i] < half <= y[i+1]
+    j = np.maximum(np.argmax(right, axis=1), 1)  # y[j-1] >= half > y[j]
+    with np.errstate(divide="ignore", invalid="ignore"):  # only at traces already marked (flat at a crossing)
+        t_left = t[i] + (half - y[rows, i]) * (t[i + 1] - t[i]) / (y[rows, i + 1] - y[rows, i])
+        t_right = t[j - 1] + (y[rows, j - 1] - half) * (t[j] - t[j - 1]) / (y[rows, j - 1] - y[rows, j])
+    across = (index[:-1] >= i[:, None]) & (index[:-1] < j[:, None])
+    spacing = np.where(across, np.diff(t), -np.inf).max(axis=1)
+    problem = np.where((problem == 0) & (t_right - t_left < MIN_SAMPLES_PER_WIDTH * spacing), _COARSE, problem)
+    return _Pulses(t, start, stop, k, base, top, level, height, t_left, t_right, spacing, problem)
+
+
+def _leading(t, y, threshold=None, baseline=None) -> _Pulse:
+    """Find the leading pulse of one trace and check that it can be read (see the module notes)."""
+    t, y = _trace(t, y)
+    base = None if baseline is None else _levels("baseline", baseline, ())
+    return _leading_rows(t, y[None], threshold, base).one()
 
 
 def leading_pulse(t, y, threshold=None, *, baseline=None) -> slice:
@@ -225,13 +312,33 @@ def leading_pulse(t, y, threshold=None, *, baseline=None) -> slice:
     return _leading(t, y, threshold, baseline).run
 
 
-def peak(t, y, threshold=None, *, baseline=None) -> tuple[float, float]:
-    """Time (s) and height of the maximum of the leading pulse of ``y``.
+def peak(t, y, threshold=None, *, baseline=None, errors="raise"):
+    """Time (s) and height of the maximum of the leading pulse of ``y``, or of each of many traces at once.
 
     The sampled maximum is refined by the parabola through it and its two neighbours
     (error O(dt^3) in time for a smooth peak).  ``threshold`` and ``baseline`` are as in
     :func:`leading_pulse`, which also lists the errors raised.  The height is the
     trace's value at the peak (baseline included).
+
+    Parameters
+    ----------
+    t : array_like, shape (T,)
+        Times, s, increasing.
+    y : array_like, shape (T,) or (..., T)
+        One trace, or traces sampled at ``t`` (one per row: the sensors of a batch of runs), read at once;
+        each trace is read exactly as it would be alone.
+    threshold : float, optional
+        As in :func:`leading_pulse` (one level for every trace).
+    baseline : float or array_like of shape ``y.shape[:-1]``, optional
+        As in :func:`leading_pulse`: one level, or one per trace.
+    errors : {"raise", "nan"}, optional
+        A trace whose leading pulse cannot be read raises its :class:`PulseError` (of several traces the first,
+        named by its flat index), or with "nan" reads NaN.
+
+    Returns
+    -------
+    time, height : float, or ndarray of shape ``y.shape[:-1]``
+        s, and the units of ``y``.
 
     Examples
     --------
@@ -239,20 +346,41 @@ def peak(t, y, threshold=None, *, baseline=None) -> tuple[float, float]:
     >>> tp, yp = peak(t, np.clip(1.0 - ((t - 0.33) / 0.1) ** 2, 0.0, None))  # a parabolic bump
     >>> round(tp, 12), round(yp, 12)
     (0.33, 1.0)
+    >>> times, heights = peak(t, [np.exp(-(((t - c) / 0.05) ** 2)) for c in (0.2, 0.5)])
+    >>> np.round(times, 12).tolist()
+    [0.2, 0.5]
     """
-    t, y = _trace(t, y)
-    k = _leading(t, y, threshold, baseline).k
-    t0, t1, t2 = t[k - 1 : k + 2]
-    y0, y1, y2 = y[k - 1 : k + 2]
+    if errors not in ("raise", "nan"):
+        raise ValueError(f'errors must be "raise" or "nan", got {errors!r}')
+    t, y = _trace(t, y, rows=True)
+    shape, T = y.shape[:-1], t.size
+    traces = y.reshape(-1, T)
+    levels = None if baseline is None else _levels("baseline", baseline, shape)
+    block = max(1, _BLOCK_SAMPLES // T)  # traces read together: a few arrays of block x T samples at a time
+    found = [_leading_rows(t, traces[a : a + block], threshold, None if levels is None else levels[a : a + block])
+             for a in range(0, traces.shape[0], block)]  # fmt: skip
+    problem, k = (np.concatenate([getattr(p, name) for p in found]) for name in ("problem", "k"))
+    if errors == "raise" and np.any(problem):
+        first = int(np.flatnonzero(problem)[0])
+        raise found[first // block].error(first % block, label=bool(shape), index=first)
+    rows, k = np.arange(traces.shape[0]), np.clip(k, 1, T - 2)  # (a trace marked may peak at an end)
+    t0, t1, t2 = t[k - 1], t[k], t[k + 1]
+    y0, y1, y2 = traces[rows, k - 1], traces[rows, k], traces[rows, k + 1]
     # Vertex of the parabola through three (possibly unevenly spaced) points.
     d0, d2 = t0 - t1, t2 - t1
     s0, s2 = (y0 - y1) / d0, (y2 - y1) / d2
     curvature = (s2 - s0) / (d2 - d0)
-    if curvature >= 0:
-        return float(t1), float(y1)
-    slope = s0 - curvature * d0
-    shift = -slope / (2.0 * curvature)
-    return float(t1 + shift), float(y1 + slope * shift + curvature * shift**2)
+    with np.errstate(divide="ignore", invalid="ignore"):  # a flat top (curvature 0) is read at its sample
+        slope = s0 - curvature * d0
+        shift = -slope / (2.0 * curvature)
+        bent = curvature < 0
+        time = np.where(bent, t1 + shift, t1)
+        height = np.where(bent, y1 + slope * shift + curvature * shift**2, y1)
+    failed = problem != 0
+    time[failed], height[failed] = np.nan, np.nan
+    if not shape:
+        return float(time[0]), float(height[0])
+    return time.reshape(shape), height.reshape(shape)
 
 
 def arrival_time(t, y, threshold=None, *, baseline=None) -> float:
@@ -296,11 +424,15 @@ def wave_speed(t, y_near, y_far, distance, threshold=None, *, baseline=None) -> 
     return speed_over(distance, time_of_flight(t, y_near, y_far, threshold, baseline=baseline))
 
 
-def speed_over(distance: float, time_of_flight: float) -> float:
-    """``distance`` (m) over a time of flight (s), m/s; a flight that is not positive is refused (no wave from the
-    near sensor to the far one)."""
-    if time_of_flight <= 0:
-        raise ValueError(f"the far trace peaks first (time of flight {time_of_flight:g} s): no wave from near to far")
+def speed_over(distance, time_of_flight):
+    """``distance`` (m) over a time of flight (s), m/s (floats, or arrays of flights); a flight that is not
+    positive is refused (no wave from the near sensor to the far one)."""
+    flights = np.asarray(time_of_flight)
+    bad = np.flatnonzero((flights <= 0).ravel()) if flights.ndim else ([0] if flights <= 0 else [])
+    if len(bad):
+        first = float(flights.ravel()[bad[0]])
+        where = f" (run {bad[0]})" if flights.ndim else ""
+        raise ValueError(f"the far trace peaks first (time of flight {first:g} s){where}: no wave from near to far")
     return distance / time_of_flight
 
 

@@ -158,17 +158,12 @@ def summarize(values, quantiles=DEFAULT_QUANTILES) -> Summary:
 
 
 def _read(sim: Simulation, traces) -> dict:
-    """Peak (N), its time (s) and the static tension (N) of every ring's leading pulse; the traces of ``traces``."""
-    force = sim.sensor_force  # (T, n_rings)
-    n = force.shape[1]
-    peak, arrival, baseline = np.full(n, np.nan), np.full(n, np.nan), np.empty(n)
-    for k in range(n):
-        baseline[k] = signals.estimate_baseline(sim.t, force[:, k])
-        try:
-            arrival[k], peak[k] = signals.peak(sim.t, force[:, k], baseline=baseline[k])
-        except signals.PulseError:
-            pass  # NaN: left out of the summary, counted there
-    return {"peak_force": peak, "arrival": arrival, "baseline": baseline, "traces": force[:, list(traces)].T}
+    """Peak (N), its time (s) and the static tension (N) of every ring's leading pulse of each run of ``sim`` (a
+    batch: x of shape (B, T, n)), every trace read at once; the traces of the rings ``traces``, (B, len(traces), T)."""
+    force = np.moveaxis(sim.sensor_force, -1, -2)  # (B, n_rings, T)
+    baseline = signals.estimate_baseline(sim.t, force)
+    arrival, peak = signals.peak(sim.t, force, baseline=baseline, errors="nan")  # NaN: left out of the summary
+    return {"peak_force": peak, "arrival": arrival, "baseline": baseline, "traces": force[:, list(traces)]}
 
 
 def run_members(ring, n_rings, spread, seeds, *, model, m_eff_ratio, speed, dropped, t_end, traces=(),
@@ -218,12 +213,10 @@ def run_members(ring, n_rings, spread, seeds, *, model, m_eff_ratio, speed, drop
             raise
         seed = seeds[int(run.group(1))].spawn_key
         raise IntegrationError(f"{error} (the member with seed key {seed})") from error
-    readings = [
-        _read(Simulation(t=batch.t, x=batch.x[b], u=batch.u[b], dissipated=batch.dissipated[b], g=batch.g,
-                         chain=chain, impact_velocity=speed), traces)
-        for b, chain in enumerate(chains)
-    ]  # fmt: skip
-    out = {name: np.stack([r[name] for r in readings]) for name in readings[0]}
+    # The members' sensors read together: the stacked network gives each member's links their own laws, and the
+    # members' chains share their sensors' links (one model, one length, one support).
+    out = _read(Simulation(t=batch.t, x=batch.x, u=batch.u, dissipated=batch.dissipated, g=batch.g,
+                           network=batch.network, chain=chains[0], impact_velocity=speed), traces)  # fmt: skip
     out["t"] = batch.t
     out["redrawn"] = np.array([draw.total_redrawn for draw in draws])
     out["spacing"] = np.stack([chain.profile("a") for chain in chains])

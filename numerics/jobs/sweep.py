@@ -9,11 +9,12 @@ at two sensor rings, their arrival times, the time of flight and wave speed, bes
 solitary-wave speed of Eq. (8) at the measured peak force.
 
 Scale.  Points that share a chain (everything but the impact) are integrated together
-by :func:`~ringchain.numerics.simulate_batch`, in chunks of ``batch_size`` runs, so a
-sweep over many drop heights costs little more than a few runs
-(benchmarks/bench_batch.py).  The chunks are independent tasks submitted to a
-:class:`concurrent.futures.Executor`: local processes by default, or a Dask cluster
-without any code change::
+by :func:`~ringchain.numerics.simulate_batch`, in chunks of ``batch_size`` runs, each run
+with its own steps on every core, and the sensors of a chunk's runs are read together
+(:func:`~ringchain.numerics.signals.peak` on the batch's traces); benchmarks/bench_sweep.py
+measures a sweep of 10^4 drop heights.  The chunks are independent tasks submitted to a
+:class:`concurrent.futures.Executor`: by default this process, or local processes when
+they would save more than they cost to start, or a Dask cluster without any code change::
 
     from distributed import Client
     rows = sweep(grid, executor=Client("tcp://scheduler:8786").get_executor())
@@ -67,6 +68,7 @@ __all__ = [
     "DEFAULT_SAMPLES",
     "SWEEP_METHOD",
     "SWEEP_RTOL",
+    "PYTHON_SECONDS_PER_POINT",
 ]
 
 #: Runs integrated together in one task (one :func:`simulate_batch` call).
@@ -76,6 +78,13 @@ DEFAULT_BATCH_SIZE = 64
 #: times of flight read from 1001 samples differ from 8001 by < 1e-4 relative on the
 #: paper's chain.
 DEFAULT_SAMPLES = 1001
+
+#: Seconds of Python a point costs in the process that runs it (its row, its share of making its batch's model and
+#: of reading the batch's sensors), on one core: 0.45 ms measured on a sweep of 2048 drop heights with the load
+#: average at 6.4 on two cores (benchmarks/bench_sweep.py prints it).  The compiled kernels use every core from one
+#: process, so this is all a pool of processes could spread: :func:`sweep` given no executor runs in the calling
+#: process unless that saves more than the pool costs to start (10^4 points: about 2 s against 2.5 s or more).
+PYTHON_SECONDS_PER_POINT = 4.5e-4
 
 #: Integrator of the sweeps: the compiled Dormand-Prince pair, each run of a batch with its own
 #: steps (the runs in parallel over the cores), at :data:`SWEEP_RTOL`.  (The NumPy Verlet of
@@ -147,13 +156,9 @@ class Point:
 
     def __post_init__(self):
         set_ = functools.partial(object.__setattr__, self)
-        set_("striker_mass", striker_convention(self.striker_mass))
-        set_("R_over_r", float(v.positive("R/r", self.R_over_r)))
-        set_("r", float(v.positive("r", self.r, "m")))
-        set_("angle", float(v.as_float("angle", self.angle)))
-        set_("m_eff_ratio", float(v.in_range("m_eff_ratio", self.m_eff_ratio, 0.0, 1.0)))
-        set_("model", v.choice("model", str(self.model), MODELS))
-        set_("n_rings", v.count("n_rings", self.n_rings, 2))
+        chain = ("striker_mass", "R_over_r", "r", "angle", "m_eff_ratio", "model", "n_rings")
+        for name, value in zip(chain, _memo(_checked_chain, *(getattr(self, name) for name in chain)), strict=True):
+            set_(name, value)
         if self.drop_height is not None and self.impact_velocity is not None:
             raise ValueError("give a drop height or an impact velocity, not both")
         for name, unit in (("drop_height", "m"), ("impact_velocity", "m/s")):
@@ -162,11 +167,8 @@ class Point:
                 raise ValueError(f"{name.replace('_', ' ')} must be a number (in {unit}), got {value!r}")
             if value is not None:
                 set_(name, float(v.positive(name.replace("_", " "), value, unit)))
-        set_("sensors", sensor_pair(self.sensors))
-        ring = self.ring  # validates R > 2 r, the angle and the material, with errors that say why
-        if self.dynamic:
-            ring.check_chain()
-            sensor_pair(self.sensors, self.n_rings)
+        set_("sensors", _memo(_checked_sensors, self.sensors, self.R_over_r, self.r, self.material, self.angle,
+                              self.n_rings, self.dynamic))  # fmt: skip
 
     @property
     def ring(self) -> Ring:
@@ -194,10 +196,14 @@ class Point:
     def chain_key(self) -> tuple:
         """What the points integrated together share: all but the impact's size."""
         kind = "drop" if self.drop_height is not None else "velocity" if self.impact_velocity is not None else None
-        return (*(getattr(self, f.name) for f in fields(self) if f.name not in _IMPACT), kind)
+        return (*(getattr(self, name) for name in _CHAIN_FIELDS), kind)
 
     def columns(self) -> dict:
         """The row's columns before the run: the point and the static theory of its contact (Eqs. 1-4)."""
+        return self._columns(self.speed)
+
+    def _columns(self, speed) -> dict:
+        """:meth:`columns`, the impact speed (m/s) given."""
         ring = self.ring
         return {
             "R_over_r": self.R_over_r,
@@ -211,9 +217,44 @@ class Point:
             "m_eff_ratio": self.m_eff_ratio,
             **_striker_columns(self.striker_mass, self.m_eff_ratio * ring.mass, ring.mass),
             "drop_height_m": self.drop_height,
-            "impact_velocity_m_s": self.speed,
+            "impact_velocity_m_s": speed,
             **_contact_theory(ring),
         }
+
+
+# A grid's points share their chain: its fields are checked once per chain, not once per point (a tenth of a
+# millisecond each, a second of a sweep of 10^4 drop heights).
+def _memo(check, *values):
+    """``check(*values)`` through its cache, keyed on the values and their types (1 and True, 20 and 20.0 are
+    checked apart); values that cannot be hashed (a list of sensors) are checked without it."""
+    try:
+        return check(*((type(x), x) for x in values))
+    except TypeError as exc:
+        if "unhashable" not in str(exc):
+            raise
+        return check.__wrapped__(*((type(x), x) for x in values))
+
+
+@functools.lru_cache(maxsize=1024)
+def _checked_chain(*typed) -> tuple:
+    """The chain's fields of a :class:`Point` (striker, R/r, r, angle, m_eff/m0, model, ring count), checked."""
+    striker, R_over_r, r, angle, m_eff_ratio, model, n_rings = (x for _, x in typed)
+    return (striker_convention(striker), float(v.positive("R/r", R_over_r)), float(v.positive("r", r, "m")),
+            float(v.as_float("angle", angle)), float(v.in_range("m_eff_ratio", m_eff_ratio, 0.0, 1.0)),
+            v.choice("model", str(model), MODELS), v.count("n_rings", n_rings, 2))  # fmt: skip
+
+
+@functools.lru_cache(maxsize=1024)
+def _checked_sensors(*typed) -> tuple:
+    """A :class:`Point`'s sensors, checked with its ring (R > 2 r, the angle, the material: errors that say why) and,
+    with an impact, against its chain."""
+    sensors, R_over_r, r, material, angle, n_rings, dynamic = (x for _, x in typed)
+    sensors = sensor_pair(sensors)
+    ring = _ring(R_over_r, r, material, angle)
+    if dynamic:
+        ring.check_chain()
+        sensor_pair(sensors, n_rings)
+    return sensors
 
 
 # The points of a sweep share a few rings: each ring and the static theory of its contact (Eqs. 1-4, a fit of
@@ -296,11 +337,14 @@ class FilePoint:
                 self.striker_mass, kind)  # fmt: skip
 
     def columns(self) -> dict:
+        return self._columns(self.speed)
+
+    def _columns(self, speed) -> dict:
         row = {} if self.field is None else {self.field: self.value}
         m0 = self.varied.rings()[0].mass  # ring 0, the struck ring
         row |= {"n_rings": self.varied.n_rings, "model": self.model, "m_eff_ratio": self.m_eff_ratio,
                 **_striker_columns(self.striker_mass, self.m_eff_ratio * m0, m0),
-                "impact_velocity_m_s": self.speed}  # fmt: skip
+                "impact_velocity_m_s": speed}  # fmt: skip
         if self.drop_height is not None:
             row["drop_height_m"] = self.drop_height
         return row
@@ -313,6 +357,7 @@ def _striker_columns(striker, m_eff: float, m0: float) -> dict:
 
 
 _IMPACT = ("drop_height", "impact_velocity")
+_CHAIN_FIELDS = tuple(f.name for f in fields(Point) if f.name not in _IMPACT)
 
 #: Names a grid may vary (the fields of :class:`Point`).
 AXES = tuple(f.name for f in fields(Point))
@@ -382,36 +427,48 @@ DYNAMIC_COLUMNS = (
 )  # fmt: skip
 
 
-def _dynamics(sensors, run) -> dict:
-    """The :data:`DYNAMIC_COLUMNS` of one run: the sensors read as the paper reads them (Sec. III.A), Eq. (8) at
-    the near sensor's peak force (a uniform chain: its power law, or for the dual-spring chain the one fitted to
-    its springs, Eq. 4), the largest force on the support."""
+def _dynamics(sensors, runs) -> list[dict]:
+    """The :data:`DYNAMIC_COLUMNS` of each run of a batch: the sensors read as the paper reads them (Sec. III.A),
+    every run's at once (:func:`~ringchain.numerics.signals.peak` on the batch's traces), Eq. (8) at the near
+    sensor's peak force (a uniform chain: its power law, or for the dual-spring chain the one fitted to its
+    springs, Eq. 4), the largest force on the support."""
     from ringchain.theory import solitary_wave_speed
 
     near, far = sensors
-    chain = run.chain
-    F_near = run.peak_force(near)
+    chain = runs.chain
+    F_near = runs.peak_force(near)
     V_s = None
     if chain.uniform:
         K, n = (chain.K, chain.n) if chain.model == "power-law" else _fitted_power_law(chain.K_c, chain.K_b)
-        V_s = float(solitary_wave_speed(F_near, K=K, n=n, a=chain.a, m=chain.m))
-    support = run.support_force
-    values = (near, far, F_near, run.peak_force(far), run.arrival_time(near), run.arrival_time(far),
-              run.time_of_flight(near, far), run.wave_speed(near, far), V_s,
-              None if support is None else float(np.max(support)), float(run.t[-1]))  # fmt: skip
-    return dict(zip(DYNAMIC_COLUMNS, values, strict=True))
+        V_s = solitary_wave_speed(F_near, K=K, n=n, a=chain.a, m=chain.m)
+    support = runs.support_force
+    columns = (F_near, runs.peak_force(far), runs.arrival_time(near), runs.arrival_time(far),
+               runs.time_of_flight(near, far), runs.wave_speed(near, far), V_s,
+               None if support is None else np.max(support, axis=-1))  # fmt: skip
+    t_end = float(runs.t[-1])
+    return [dict(zip(DYNAMIC_COLUMNS, (near, far, *(None if c is None else float(c[b]) for c in columns), t_end),
+                     strict=True)) for b in range(len(runs))]  # fmt: skip
 
 
-def _batch(points, t_end, n_samples, method, solver):
+def _speeds(points) -> list:
+    """The impact speed of each point (m/s; None for a static point), drop heights made speeds in one call
+    (:func:`~ringchain.theory.impact_speed`: the points of a task share their kind of impact)."""
+    heights = [p.drop_height for p in points]
+    if any(h is None for h in heights):
+        return [p.speed for p in points]
+    return [float(u) for u in impact_speed(np.array(heights))]
+
+
+def _batch(points, speeds, t_end, n_samples, method, solver):
     """The chain of points that share one, its duration and the arguments of :func:`simulate_batch`."""
     first = points[0]
     chain = first.chain()
     if t_end is None:
-        t_end = default_t_end(chain, [p.speed for p in points], first.sensors)
+        t_end = default_t_end(chain, speeds, first.sensors)
     if first.drop_height is not None:
         impact = {"drop_heights": [p.drop_height for p in points]}
     else:
-        impact = {"impact_velocities": [p.speed for p in points]}
+        impact = {"impact_velocities": speeds}
     rings = (*first.sensors, chain.n_rings - 1)  # the sensors and the top ring (the support's force)
     if method == SWEEP_METHOD and solver.get("rtol") is None:
         solver = dict(solver, rtol=SWEEP_RTOL)
@@ -433,17 +490,17 @@ def run_points(points, *, t_end=None, n_samples=DEFAULT_SAMPLES, method=SWEEP_ME
     keys = {p.chain_key for p in points}
     if len(keys) != 1:
         raise ValueError("run_points takes points that share one chain")
-    rows = [p.columns() for p in points]
+    speeds = _speeds(points)
+    rows = [p._columns(speed) for p, speed in zip(points, speeds, strict=True)]
     first = points[0]
     if not first.dynamic:
         return rows
     retries = 0 if t_end is not None else MAX_DOUBLINGS
-    chain, t_end, arguments = _batch(points, t_end, n_samples, method, solver)
+    chain, t_end, arguments = _batch(points, speeds, t_end, n_samples, method, solver)
     while True:
-        runs = list(simulate_batch(chain, t_end, **arguments))  # each run reads its sensors once
+        runs = simulate_batch(chain, t_end, **arguments)
         try:
-            for run in runs:
-                signals.leading_pulse(run.t, run.sensor(first.sensors[1]))
+            runs.peak_force(first.sensors[1])  # every run's far pulse, read once (the rows use it)
             break
         except (signals.TruncatedPulseError, signals.NoPulseError) as exc:
             # An impact always sends a pulse: none at the far sensor means it has not got there yet.
@@ -454,8 +511,8 @@ def run_points(points, *, t_end=None, n_samples=DEFAULT_SAMPLES, method=SWEEP_ME
                 ) from None
         retries -= 1
         t_end *= 2.0
-    for row, run in zip(rows, runs, strict=True):
-        row.update(_dynamics(first.sensors, run))
+    for row, dynamics in zip(rows, _dynamics(first.sensors, runs), strict=True):
+        row.update(dynamics)
     return rows
 
 
@@ -467,7 +524,7 @@ def estimate_task(points, *, t_end=None, n_samples=DEFAULT_SAMPLES, method=SWEEP
     points = list(points)
     if not points[0].dynamic:
         return None
-    chain, t_end, arguments = _batch(points, t_end, n_samples, method, solver)
+    chain, t_end, arguments = _batch(points, _speeds(points), t_end, n_samples, method, solver)
     for option in ("max_memory", "max_seconds", "max_energy_drift"):
         arguments.pop(option, None)
     return estimate_run(chain, t_end, **arguments)
@@ -494,13 +551,15 @@ def sweep(
         Axes and values, or points (see :func:`expand`; :class:`FilePoint` s too).
     executor : concurrent.futures.Executor, optional
         Where the tasks run: any Executor, e.g. a Dask ``Client(...).get_executor()``.
-        Default: a pool of local processes, shut down at the end.
+        Default: this process, or a pool of local processes (shut down at the end) when it
+        would save more than it costs to start (:data:`PYTHON_SECONDS_PER_POINT`); one line
+        on stderr says which.
     batch_size : int, optional
         Most runs of one chain integrated together in one task.  Part of the grid's
         definition: it fixes the chunks, so changing it may change the last digits.
     max_workers : int, optional
-        Processes of the default pool (default: the number of CPUs); 0 runs every task
-        in this process (:class:`InlineExecutor`).  The pool starts its workers with
+        Processes of the default pool (the number of CPUs: given, the pool is used); 0 runs
+        every task in this process (:class:`InlineExecutor`).  The pool starts its workers with
         "spawn", which imports a calling script again in every worker: in a script, call
         :func:`sweep` under ``if __name__ == "__main__":`` (a call outside it raises
         ``RuntimeError`` before any worker starts; see
@@ -545,9 +604,10 @@ def sweep(
     tasks = [idx[k : k + batch_size] for idx in groups.values() for k in range(0, len(idx), batch_size)]
     options = {"t_end": t_end, "n_samples": n_samples, "method": method, "max_seconds": max_seconds, **solver}
     seconds = _check_work([[points[i] for i in task] for task in tasks], options)
+    serial = PYTHON_SECONDS_PER_POINT * len(points)  # all a pool could spread: the kernels use every core here
     results = run_tasks(run_points, [([points[i] for i in task],) for task in tasks], executor, options=options,
                         max_workers=max_workers, progress=progress, sizes=[len(task) for task in tasks], name="sweep",
-                        unit="point", seconds=seconds)  # fmt: skip
+                        unit="point", seconds=serial + (seconds or 0.0), serial=serial)  # fmt: skip
     rows: list[dict | None] = [None] * len(points)
     for task, result in zip(tasks, results, strict=True):
         for i, row in zip(task, result, strict=True):

@@ -77,7 +77,7 @@ import functools
 from dataclasses import dataclass
 
 import numpy as np
-from ringchain.theory import STANDARD_GRAVITY, Ring, fit_power_law, hertz_stiffness_pair, linear
+from ringchain.theory import STANDARD_GRAVITY, Ring, bending_stiffness, fit_power_law, hertz_stiffness_pair, linear
 from ringchain.theory import _validate as v
 
 from ..engine.integrate import impact_speeds
@@ -134,9 +134,18 @@ def _parameter(name: str, value, length: int, check, unit: str, what: str):
     return array
 
 
-def _per_distinct(evaluate, keys, what: str) -> np.ndarray:
-    """``evaluate(*key)`` for each key, once per distinct key (scalar calls: a uniform chain gets
-    its single ring's numbers exactly); an error names the first ``what`` (formatted with i, j)."""
+def _per_distinct(evaluate, keys, what: str, many=None) -> np.ndarray:
+    """``evaluate(*key)`` for each key, once per distinct key (scalar calls: a uniform chain gets its single ring's
+    numbers exactly); an error names the first ``what`` (formatted with i, j).  ``many(distinct keys)``, given,
+    evaluates several distinct keys in one call, one row each (a disordered chain's rings cost one call, not one
+    each; only where the call gives each key's scalar numbers exactly); an error there is looked for key by key."""
+    distinct = list(dict.fromkeys(keys))
+    if many is not None and len(distinct) > 1:
+        try:
+            values = dict(zip(distinct, np.asarray(many(distinct), dtype=float), strict=True))
+            return np.array([values[key] for key in keys])
+        except ValueError:
+            pass  # found and named below
     values, results = {}, []
     for i, key in enumerate(keys):
         if key not in values:
@@ -146,6 +155,21 @@ def _per_distinct(evaluate, keys, what: str) -> np.ndarray:
                 raise ValueError(f"{what.format(i=i, j=i + 1)}: {error}") from None
         results.append(values[key])
     return np.array(results, dtype=float)
+
+
+def _rings_K_b(distinct) -> np.ndarray:
+    """K_b (Eq. 2, :attr:`Ring.K_b`: elementwise arithmetic) of distinct (ring,) keys, in one call."""
+    rings = [ring for (ring,) in distinct]
+    (thin,) = {ring.thin for ring in rings}  # both settings: a ValueError, and a call per ring instead
+    columns = (np.array([read(q) for q in rings]) for read in (lambda q: q.R, lambda q: q.r, lambda q: q.material.E,
+                                                                lambda q: q.material.nu))  # fmt: skip
+    return bending_stiffness(*columns, thin=thin)
+
+
+def _fits(distinct) -> np.ndarray:
+    """The power laws (K, n) fitted to distinct (K_c, K_b) pairs (Eq. 4), in one call, one row each."""
+    K_c, K_b = (np.array(column) for column in zip(*distinct, strict=True))
+    return np.stack(fit_power_law(K_c=K_c, K_b=K_b), axis=-1)
 
 
 @dataclass(frozen=True, eq=False)
@@ -497,7 +521,7 @@ class Chain:
             [(below, above, float(angle)) for (below, above), angle in zip(pairs, angles, strict=True)],
             "contact of rings {i} and {j}",
         )  # fmt: skip
-        K_b = _per_distinct(lambda ring: ring.K_b, [(ring,) for ring in rings], "ring {i}")
+        K_b = _per_distinct(lambda ring: ring.K_b, [(ring,) for ring in rings], "ring {i}", _rings_K_b)
         m0 = np.array([ring.mass for ring in rings])
         a = np.array([(below.R - below.r) + (above.R - above.r) for below, above in pairs[: n_rings - 1]])
         if model == "dual-spring":
@@ -511,7 +535,8 @@ class Chain:
         # Each period of the chain is a contact in series with the body of the ring below it (Eq. 3).
         below_K_b = np.append(K_b, K_b[-1])[: len(pairs)]
         fits = _per_distinct(lambda kc, kb: tuple(float(x) for x in fit_power_law(K_c=kc, K_b=kb)),
-                             list(zip(K_c.tolist(), below_K_b.tolist(), strict=True)), "contact {i}")  # fmt: skip
+                             list(zip(K_c.tolist(), below_K_b.tolist(), strict=True)), "contact {i}",
+                             _fits)  # fmt: skip
         return cls.power_law(n_rings, fits[:, 0], fits[:, 1], ratio * m0, a, gamma, m0, support=support,
                              striker_mass=striker_mass)  # fmt: skip
 

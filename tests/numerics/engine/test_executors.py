@@ -101,6 +101,14 @@ def test_a_job_smaller_than_a_pools_start_runs_in_this_process_and_says_so(notic
     assert len(notices) == 1 and notices[0].startswith("sweep: 2 points in this process")
 
 
+def test_a_job_whose_one_core_share_is_small_runs_in_this_process_however_long(notices):
+    # 1000 s of work of which 0.1 s on one core (the rest a compiled kernel's, on every core from one process
+    # anyway): a pool of two would save at most 0.05 s, less than its start (POOL_START_SECONDS, 2.5 s or more).
+    assert executors.run_tasks(abs, [(-1,), (2,)], seconds=1000.0, serial=0.1, name="sweep", unit="point") == [1, 2]
+    assert len(notices) == 1 and notices[0].startswith("sweep: 2 points in this process (about 1000.0 s of work, "
+                                                       "0.1 s of it on one core")  # fmt: skip
+
+
 def test_notices_go_to_stderr_unless_silenced(capsys, monkeypatch):
     monkeypatch.undo()  # the suite's notices fixture: back to the package's own notify
     from ringchain.numerics.engine import _kernel_calls

@@ -201,3 +201,104 @@ def test_tail_lies_between_the_leading_pulse_and_the_next():
     assert signals.tail(t, pulse).stop == t.size  # no second pulse: to the end
     with pytest.raises(signals.TruncatedPulseError):  # never falls after its peak: no complete pulse, no tail
         signals.tail(t, t)
+
+
+# -- many traces at once -------------------------------------------------------------------------------
+def reference_peak(t, y, baseline=None):
+    """The leading pulse read as the module notes define it, sample by sample in plain Python (an independent
+    reader): the exception class a reading raises, or (time, height) of the parabola through the sampled maximum."""
+    y = [float(value) for value in y]
+    base = float(np.median(y[:5])) if baseline is None else float(baseline)
+    top = max(y)
+    if not top - base > 1e-6 * max(max(abs(value) for value in y), abs(base)):
+        return signals.NoPulseError
+    level = base + 0.5 * (top - base)
+    start = next(i for i, value in enumerate(y) if value >= level)
+    if start == 0:
+        return signals.TruncatedPulseError
+    stop = next((i for i in range(start, len(y)) if y[i] < level), len(y))
+    k = max(range(start, stop), key=lambda i: (y[i], -i))  # the first sampled maximum of the run
+    half = base + 0.5 * (y[k] - base)
+    right = next((i for i in range(k, len(y)) if y[i] < half), None)
+    left = next((i for i in range(k - 1, -1, -1) if y[i] < half), None)
+    if right is None or left is None:
+        return signals.TruncatedPulseError
+    t_left = t[left] + (half - y[left]) * (t[left + 1] - t[left]) / (y[left + 1] - y[left])
+    t_right = t[right - 1] + (y[right - 1] - half) * (t[right] - t[right - 1]) / (y[right - 1] - y[right])
+    if t_right - t_left < signals.MIN_SAMPLES_PER_WIDTH * max(np.diff(t[left : right + 1])):
+        return signals.UnresolvedPulseError
+    (t0, t1, t2), (y0, y1, y2) = t[k - 1 : k + 2], y[k - 1 : k + 2]
+    a = ((y2 - y1) / (t2 - t1) - (y0 - y1) / (t0 - t1)) / (t2 - t0)  # y = y1 + b (t - t1) + a (t - t1)^2
+    if a >= 0:
+        return t1, y1
+    b = (y0 - y1) / (t0 - t1) - a * (t0 - t1)
+    return t1 - b / (2 * a), y1 - b * b / (4 * a)
+
+
+def random_traces(rng, count):
+    """Traces like a batch of sensors': a static level, one to three pulses of random heights, widths and
+    places (some cut off by the ends, some too narrow to read), noise; a few flat ones."""
+    traces = np.empty((count, T.size))
+    for row in traces:
+        row[:] = rng.uniform(-5.0, 5.0)
+        if rng.random() < 0.05:
+            continue  # static: no pulse
+        row += 1e-3 * rng.standard_normal(T.size)
+        for _ in range(rng.integers(1, 4)):
+            row += bump(rng.uniform(-5e-5, 1.05e-3), rng.uniform(0.1, 10.0), rng.uniform(1e-6, 4e-5))
+    return traces
+
+
+def test_many_traces_are_read_as_the_independent_reader_reads_each():
+    rng = np.random.default_rng(30)
+    traces = random_traces(rng, 300)
+    times, heights = signals.peak(T, traces, errors="nan")
+    expected = [reference_peak(T, y) for y in traces]
+    kinds = {type(e) if isinstance(e, tuple) else e for e in expected}
+    assert {tuple, signals.NoPulseError, signals.TruncatedPulseError, signals.UnresolvedPulseError} <= kinds
+    for b, (y, reading) in enumerate(zip(traces, expected, strict=True)):
+        if isinstance(reading, tuple):
+            # The same rule and the same formulas in another order of operations: rounding only (a few ulps of
+            # the time's size, which the parabola's vertex can amplify by its conditioning).
+            assert (times[b], heights[b]) == pytest.approx(reading, rel=1e-9, abs=0.0), b
+            assert signals.peak(T, y) == (times[b], heights[b])  # one trace alone: the same numbers exactly
+        else:
+            assert np.isnan(times[b]) and np.isnan(heights[b]), b
+            with pytest.raises(reading):
+                signals.peak(T, y)
+
+
+def test_many_traces_raise_the_first_failure_naming_it_and_keep_their_shape():
+    rng = np.random.default_rng(7)
+    good = 2.0 + np.stack([bump(c) for c in rng.uniform(2e-4, 8e-4, 6)])
+    times, heights = signals.peak(T, good.reshape(2, 3, T.size))
+    assert times.shape == heights.shape == (2, 3)
+    assert np.array_equal(times.ravel(), [signals.peak(T, y)[0] for y in good])
+    broken = good.copy()
+    broken[4] = bump(0.999e-3)  # cut off by the end of the record
+    with pytest.raises(signals.TruncatedPulseError, match=r"^trace 4: the leading pulse .* cut off"):
+        signals.peak(T, broken)
+
+
+def test_many_traces_take_a_baseline_each():
+    static = np.array([0.5, 2.5, -1.0])
+    traces = static[:, None] + np.stack([bump(3e-4, 1.6), bump(5e-4, 0.4), bump(6e-4, 3.0)])
+    assert np.array_equal(signals.estimate_baseline(T, traces), [signals.estimate_baseline(T, y) for y in traces])
+    times, heights = signals.peak(T, traces, baseline=static)
+    for b, y in enumerate(traces):
+        assert (times[b], heights[b]) == signals.peak(T, y, baseline=static[b])
+    with pytest.raises(ValueError, match=r"baseline must be one number or one per trace \(shape \(3,\)\)"):
+        signals.peak(T, traces, baseline=[1.0, 2.0])
+
+
+def test_many_traces_on_a_small_block_are_read_alike(monkeypatch):
+    # Traces are read a block at a time (memory); the blocks must not change a reading or the failure named.
+    traces = random_traces(np.random.default_rng(3), 40)
+    whole = signals.peak(T, traces, errors="nan")
+    monkeypatch.setattr(signals, "_BLOCK_SAMPLES", 7 * T.size)
+    assert all(
+        np.array_equal(a, b, equal_nan=True) for a, b in zip(whole, signals.peak(T, traces, errors="nan"), strict=True)
+    )
+    first = int(np.flatnonzero(np.isnan(whole[0]))[0])
+    with pytest.raises(signals.PulseError, match=rf"^trace {first}: "):
+        signals.peak(T, traces)

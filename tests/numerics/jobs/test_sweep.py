@@ -22,7 +22,7 @@ from ringchain.numerics.jobs.sweep import (
     sweep,
     write_csv,
 )
-from ringchain.theory import Ring
+from ringchain.theory import Ring, fit_power_law, solitary_wave_speed
 
 # The module (ringchain.numerics.sweep names the function).
 sweep_module = importlib.import_module("ringchain.numerics.jobs.sweep")
@@ -197,6 +197,33 @@ def test_a_batch_with_an_adaptive_method_matches_single_runs():
     for b, s in zip(batched, single, strict=True):
         for key in ("peak_force_near_N", "peak_force_far_N", "time_of_flight_s"):
             assert b[key] == pytest.approx(s[key], rel=1e-6), key
+
+
+@pytest.mark.parametrize("model", ["power-law", "dual-spring"])
+def test_a_batchs_rows_are_its_runs_read_one_at_a_time(model):
+    # The rows read every run's sensors at once (signals.peak on the batch's traces).  The runs of a batch take their
+    # own steps, so simulating them again and reading each run alone (one Simulation, one trace at a time) must give
+    # the same numbers exactly; Eq. (8) evaluated on the batch's array of forces may differ from its scalar call
+    # in the last bit only (a vectorised power), so 1e-15 relative.
+    from ringchain.numerics import simulate_batch
+    from ringchain.numerics.jobs.sweep import DEFAULT_SAMPLES, SWEEP_RTOL
+
+    points = expand({**SMALL, "model": model, "drop_height": [0.004, 0.03, 0.3]})
+    rows = run_points(points)
+    near, far = SMALL["sensors"]
+    runs = simulate_batch(points[0].chain(), rows[0]["t_end_s"], drop_heights=[p.drop_height for p in points],
+                          rtol=SWEEP_RTOL, n_samples=DEFAULT_SAMPLES,
+                          rings=(near, far, SMALL["n_rings"] - 1))  # fmt: skip
+    for row, run in zip(rows, runs, strict=True):
+        assert row["peak_force_near_N"] == run.peak_force(near) and row["peak_force_far_N"] == run.peak_force(far)
+        assert row["arrival_near_s"] == run.arrival_time(near) and row["arrival_far_s"] == run.arrival_time(far)
+        assert row["time_of_flight_s"] == run.time_of_flight(near, far)
+        assert row["wave_speed_m_s"] == run.wave_speed(near, far)
+        assert row["support_peak_N"] == float(np.max(run.support_force))
+        chain = run.chain
+        K, n = (chain.K, chain.n) if model == "power-law" else fit_power_law(K_c=chain.K_c, K_b=chain.K_b)
+        V_s = float(solitary_wave_speed(run.peak_force(near), K=float(K), n=float(n), a=chain.a, m=chain.m))
+        assert row["V_s_theory_m_s"] == pytest.approx(V_s, rel=1e-15, abs=0.0)
 
 
 def test_run_points_refuses_points_of_different_chains():

@@ -1,5 +1,7 @@
 """Chains that change along their length: per-ring and per-contact parameters, integration, energy."""
 
+import itertools
+
 import numpy as np
 import pytest
 from ringchain.numerics import STANDARD_GRAVITY as G
@@ -357,3 +359,26 @@ def test_stacking_names_what_does_not_fit():
         Network.stack([stack])
     with pytest.raises(ValueError, match="a stack of 2 networks integrates one run each, got n_runs = 3"):
         stack.first_order_rhs(3, G)
+
+
+@pytest.mark.parametrize("model", ["dual-spring", "power-law"])
+def test_a_disordered_chains_numbers_are_each_rings_own(model):
+    # Chain.from_rings evaluates the rings' K_b and the power-law fits once for all of a chain's distinct rings
+    # (arrays); each must be the number the theory gives that ring or contact alone, exactly (elementwise
+    # arithmetic; the contacts' K_c stay one scalar call per distinct contact).
+    from ringchain.numerics import draw_rings
+    from ringchain.theory import bending_stiffness
+
+    rings = draw_rings(Ring.from_aspect_ratio(9.0), 12, {"R": 0.1, "r": 0.05}, 5, model=model).rings
+    assert len(set(rings)) == 12
+    chain = Chain.from_rings(rings, model=model)
+    pairs = [*itertools.pairwise(rings), (rings[-1], rings[-1])]  # the support: a ring like the top one
+    K_c = [float(hertz_stiffness_pair(b.R, b.r, b.material.E, b.material.nu, a.R, a.r, a.material.E,
+                                      a.material.nu, b.angle)) for b, a in pairs]  # fmt: skip
+    K_b = [float(bending_stiffness(q.R, q.r, q.material.E, q.material.nu, thin=q.thin)) for q in rings]
+    if model == "dual-spring":
+        assert chain.profile("K").tolist() == K_c and chain.profile("K_b").tolist() == K_b
+    else:  # each contact with the ring below it
+        fits = [fit_power_law(K_c=kc, K_b=kb) for kc, kb in zip(K_c, K_b, strict=True)]
+        assert chain.profile("K").tolist() == [float(K) for K, _ in fits]
+        assert chain.profile("n").tolist() == [float(n) for _, n in fits]
