@@ -168,7 +168,7 @@ def test_the_scheduler_check_reads_the_greeting_through_distributeds_comm_layer(
 
     monkeypatch.setattr(TCP, "read", spy)
     with LocalCluster(
-        n_workers=0, processes=False, protocol="tcp", host="127.0.0.1", dashboard_address=None
+        n_workers=0, processes=False, protocol="tcp", host="127.0.0.1", dashboard_address=":0"
     ) as cluster:
         executors.check_dask_scheduler(cluster.scheduler_address, timeout=5.0)  # a scheduler: no error
         ours = [peer for peer, loop in reads if loop is not cluster.loop.asyncio_loop]  # not the cluster's own comms

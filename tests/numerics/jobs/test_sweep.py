@@ -271,8 +271,9 @@ def test_same_grid_same_csv_on_a_dask_cluster(reference_csv, tmp_path, capsys):
 
     argv = ["sweep", "--model", "power-law", "--rings", str(SMALL["n_rings"]), "--sensors", "2", "5",
             "--R-over-r", "6", "9", "--drop-height", "0.01", "0.05", "0.2", "--batch-size", "2"]  # fmt: skip
+    # ":0": a free port for the HTTP server (8787, the default, clashes with another test's cluster)
     with (
-        LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster,
+        LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0") as cluster,
         Client(cluster) as client,
     ):
         assert len(client.scheduler_info()["workers"]) == 2
