@@ -507,10 +507,23 @@ def pairs_contacts(centres, orientations, R, r, pairs, n_scan, mode, iterations,
 
 
 # -- minima next to a maximum in overlap ---------------------------------------------------------------------------
+@_jit(inline="always")
+def _share(P_a, P_b, D):
+    """(x, dx/dP_a, dx/dP_b, dx/dD) of the share x = 1 - D / (D + P_a) * P_b / (P_a + P_b) of :func:`fold_weights`
+    (P_a + P_b > 0)."""
+    total = P_a + P_b
+    f = D * P_b / ((D + P_a) * total)
+    d_a = -f / (D + P_a) - f / total
+    d_b = D / ((D + P_a) * total) - f / total
+    d_D = P_b / ((D + P_a) * total) - f / (D + P_a)
+    return 1.0 - f, -d_a, -d_b, -d_D
+
+
 @_jit()
-def fold_weights(c1, q1, R1, r1, c2, q2, R2, r2, rows, count, weights):
+def fold_weights(c1, q1, R1, r1, c2, q2, R2, r2, rows, count, weights, slopes, tops):
     """Weights (count,) in [0, 1] of the contacts ``rows[:count]`` of a pair (minima of the distance of the centre
-    circles), continuous in the pose where a maximum between two minima is itself in overlap.
+    circles), continuous in the pose where a maximum between two minima is itself in overlap; their derivatives
+    over the approaches of the minima and of those maxima; the rows of those maxima.
 
     Where two tubes lie nearly parallel over an arc, the distance can have a minimum next to a maximum, both below
     r_1 + r_2; as the pose changes the two meet and vanish (a fold), and a contact counted with its full force
@@ -519,12 +532,24 @@ def fold_weights(c1, q1, R1, r1, c2, q2, R2, r2, rows, count, weights):
     force (and b likewise), S(x) = 3 x^2 - 2 x^3: none at a fold (P_a -> 0), all of it as its neighbour vanishes
     (P_b -> 0) or the maximum leaves the overlap (delta_M -> 0), half each where twins merge (P_a = P_b -> 0).
     The shares of its two sides multiply.
+
+    Each weight is a function of the approaches delta = -gap of the minima and of the maxima in overlap, and each of
+    these is stationary in the angles on both circles, so its derivative over the pose is that of the distance at
+    fixed angles (a unit force along the row's normal, through its point): a contact energy sum w_a phi_a(delta_a)
+    has the loads of its contacts (weighted) plus dE/d(delta_c) = sum_a phi_a dw_a/d(delta_c) at every minimum and
+    maximum c (:func:`~ringchain.numerics.engine.rings_step.loads`).  ``slopes`` (MAX_CONTACTS, 2 MAX_CONTACTS)
+    receives dw_a/d(delta_c), column c < MAX_CONTACTS for minimum c, MAX_CONTACTS + m for the maximum m after the
+    m-th minimum by angle; ``tops`` (MAX_CONTACTS, FIELDS) the row of that maximum (module notes; its column of
+    ``slopes`` is zero where it is out of overlap, and its row then unwritten).  Where twins merge exactly
+    (P_a = P_b = 0) the derivative depends on the direction (the weights on the ratio P_a / P_b) and is set to zero.
     """
     for i in range(count):
         weights[i] = 1.0
+        for c in range(2 * MAX_CONTACTS):
+            slopes[i, c] = 0.0
     if count < 2:
         return
-    _, _, k, order = _posed(c1, q1, c2, q2, MAX_CONTACTS)
+    M1, M2, k, order = _posed(c1, q1, c2, q2, MAX_CONTACTS)
     for i in range(count):
         order[i] = i
     for i in range(1, count):  # by angle (count <= MAX_CONTACTS: insertion sort)
@@ -551,15 +576,29 @@ def fold_weights(c1, q1, R1, r1, c2, q2, R2, r2, rows, count, weights):
         top = math.sqrt(2.0 * g) - rim  # the gap at the maximum
         if top >= 0.0:
             continue
-        P_a, P_b = max(top - rows[a, 0], 0.0), max(top - rows[b, 0], 0.0)
+        _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, lo, 0.0, tops[i])
+        D = -top
+        P_a, P_b = top - rows[a, 0], top - rows[b, 0]
+        open_a, open_b = P_a > 0.0, P_b > 0.0  # a minimum above its maximum (rounding): P = 0, no derivative
+        P_a, P_b = max(P_a, 0.0), max(P_b, 0.0)
         share_a, share_b = 0.5, 0.5
+        da, db = (0.0, 0.0, 0.0), (0.0, 0.0, 0.0)  # d share / d(delta_a, delta_b, delta_M)
         if P_a + P_b > 0.0:
-            share_a = 1.0 - (-top) / (P_a - top) * P_b / (P_a + P_b)
-            share_b = 1.0 - (-top) / (P_b - top) * P_a / (P_a + P_b)
+            share_a, x_Pa, x_Pb, x_D = _share(P_a, P_b, D)  # P_a = delta_a - delta_M, P_b = delta_b - delta_M
+            da = (x_Pa * open_a, x_Pb * open_b, x_D - x_Pa * open_a - x_Pb * open_b)
+            share_b, x_Pb, x_Pa, x_D = _share(P_b, P_a, D)
+            db = (x_Pa * open_a, x_Pb * open_b, x_D - x_Pa * open_a - x_Pb * open_b)
         # smoothed (3 x^2 - 2 x^3: a half stays a half), so that a minimum that the scan finds or misses a rounding
         # error from its fold carries a share of order (P / delta_M)^2, not P / delta_M
-        weights[a] *= share_a * share_a * (3.0 - 2.0 * share_a)
-        weights[b] *= share_b * share_b * (3.0 - 2.0 * share_b)
+        for m, share, d in ((a, share_a, da), (b, share_b, db)):
+            factor = share * share * (3.0 - 2.0 * share)
+            slope = 6.0 * share * (1.0 - share)  # dS/dx
+            for c in range(2 * MAX_CONTACTS):  # the product rule: w_m := w_m S
+                slopes[m, c] *= factor
+            slopes[m, a] += weights[m] * slope * d[0]
+            slopes[m, b] += weights[m] * slope * d[1]
+            slopes[m, MAX_CONTACTS + i] += weights[m] * slope * d[2]
+            weights[m] *= factor
 
 
 # -- the contact law -------------------------------------------------------------------------------------------
