@@ -94,6 +94,7 @@ __all__ = [
     "hertz_stiffness_curvatures",
     "elliptical_factor_at",
     "contact_force",
+    "stiffness_slopes",
 ]
 
 #: Numbers per contact row (see the module notes).
@@ -661,6 +662,95 @@ def hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, cos_angle, E_star, max_log_ra
         A = B * math.exp(-math.expm1(s))
     gamma = elliptical_factor_at(s, table, step)
     return 4.0 / 3.0 * E_star / math.sqrt(2.0 * A) * gamma
+
+
+@_jit()
+def stiffness_slopes(row, c1, q1, R1, c2, q2, R2, law, table, step, out):
+    """The Hertz stiffness K_c of a contact row (law kind 0, as :func:`contact_force`) and its logarithmic derivative
+    over the pose of ring 1: ``out`` (6,) receives d(ln K_c)/d(c_1) (1/m) and d(ln K_c)/d(theta_1) (rotation vector
+    of ring 1 about its centre, in space; 1/rad), ring 2 held.  Returns K_c (N/m^1.5).
+
+    K_c depends on the pose through the curvature of each tube along its centre circle at the contact,
+    cos_i / (R_i + r_i cos_i) (cos_1 = -n.u_1, cos_2 = n.u_2: u_i the radial of circle i at the contact, n the
+    normal), and the cosine of the angle between the tangents t_1, t_2; these follow the contact angles s_1, s_2,
+    which move with the pose: s_2 as the nearest point of circle 2 to the point p_1 of circle 1
+    (ds_2 = t_2.dp_1 / rho, rho the distance of p_1 from the axis of ring 2), s_1 as the minimum of the distance
+    (the total differential of g'(s_1) = R_1 (p_1 - p_2).t_1 vanishes; its coefficient of ds_1 is g''/R_1).  The
+    derivatives of K_c over its three arguments are central differences of :func:`hertz_stiffness_curvatures`
+    (relative steps of 1e-6: their error about 1e-10 of the derivative).  A contact energy K_c phi(delta) then has
+    the loads of :func:`contact_force` plus -phi dK_c/dpose; ring 2's follow from the invariance of K_c under a
+    rigid motion of both rings (its force the opposite, its torque about its centre minus ring 1's minus
+    (c_1 - c_2) x that force).
+    """
+    M1 = np.empty((3, 3))
+    M2 = np.empty((3, 3))
+    rotation_matrix(q1, M1)
+    rotation_matrix(q2, M2)
+    cap = law[7] if law.size > 7 else 690.0
+    k1a, k1b, k2a, k2b, cosine = row[9], row[10], row[11], row[12], row[13]
+    K = hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, cosine, law[6], cap, table, step)
+    partials = np.empty(3)  # d ln K over k1a, k2a, the cosine
+    for a in range(3):
+        h = 1e-6 * ((abs(k1a) + k1b) if a == 0 else (abs(k2a) + k2b) if a == 1 else 1.0)
+        up = hertz_stiffness_curvatures(k1a + h * (a == 0), k1b, k2a + h * (a == 1), k2b, cosine + h * (a == 2),
+                                        law[6], cap, table, step)  # fmt: skip
+        down = hertz_stiffness_curvatures(k1a - h * (a == 0), k1b, k2a - h * (a == 1), k2b, cosine - h * (a == 2),
+                                          law[6], cap, table, step)  # fmt: skip
+        partials[a] = (up - down) / (2.0 * h * K)
+    C1, S1, C2, S2 = math.cos(row[1]), math.sin(row[1]), math.cos(row[2]), math.sin(row[2])
+    u1, t1, u2, t2, n, lever = np.empty(3), np.empty(3), np.empty(3), np.empty(3), np.empty(3), np.empty(3)
+    for i in range(3):
+        u1[i] = C1 * M1[i, 0] + S1 * M1[i, 1]
+        t1[i] = C1 * M1[i, 1] - S1 * M1[i, 0]
+        u2[i] = C2 * M2[i, 0] + S2 * M2[i, 1]
+        t2[i] = C2 * M2[i, 1] - S2 * M2[i, 0]
+        n[i] = row[6 + i]
+        lever[i] = R1 * u1[i]  # p_1 - c_1
+    f = row[14]
+    d = np.empty(3)  # p_1 - p_2
+    for i in range(3):
+        d[i] = f * n[i]
+    rho = R2 + f * (n[0] * u2[0] + n[1] * u2[1] + n[2] * u2[2])
+    cos1 = -(n[0] * u1[0] + n[1] * u1[1] + n[2] * u1[2])
+    cos2 = n[0] * u2[0] + n[1] * u2[1] + n[2] * u2[2]
+    tt = t1[0] * t2[0] + t1[1] * t2[1] + t1[2] * t2[2]
+    sign = 1.0 if tt >= 0.0 else -1.0
+    r1, r2 = 1.0 / k1b, 1.0 / k2b
+    dk1 = R1 / (R1 + r1 * cos1) ** 2  # d(k1a)/d(cos_1)
+    dk2 = R2 / (R2 + r2 * cos2) ** 2
+    # g''/R_1 = R_1 t_1.P t_1 - d.u_1 with P = I - (R_2/rho) t_2 t_2^T (dp_2 = (R_2/rho) t_2 t_2.dp_1)
+    t1t2 = tt
+    curvature = R1 * (1.0 - (R2 / rho) * t1t2 * t1t2) - (d[0] * u1[0] + d[1] * u1[1] + d[2] * u1[2])
+    a, w, dp1, dd, dn = np.empty(3), np.empty(3), np.empty(3), np.empty(3), np.empty(3)
+    wt1, wu1 = np.empty(3), np.empty(3)  # w x t_1, w x u_1
+    for e in range(6):
+        for i in range(3):
+            w[i] = 1.0 if e == 3 + i else 0.0
+        for i in range(3):  # the move of p_1 at fixed s_1: dc + w x (p_1 - c_1)
+            a[i] = (1.0 if e == i else 0.0) + w[(i + 1) % 3] * lever[(i + 2) % 3] - w[(i + 2) % 3] * lever[(i + 1) % 3]
+        for i in range(3):
+            wt1[i] = w[(i + 1) % 3] * t1[(i + 2) % 3] - w[(i + 2) % 3] * t1[(i + 1) % 3]
+            wu1[i] = w[(i + 1) % 3] * u1[(i + 2) % 3] - w[(i + 2) % 3] * u1[(i + 1) % 3]
+        t2a = t2[0] * a[0] + t2[1] * a[1] + t2[2] * a[2]
+        t1Pa = (t1[0] * a[0] + t1[1] * a[1] + t1[2] * a[2]) - (R2 / rho) * t1t2 * t2a
+        ds1 = -(t1Pa + (d[0] * wt1[0] + d[1] * wt1[1] + d[2] * wt1[2])) / curvature
+        for i in range(3):
+            dp1[i] = a[i] + R1 * t1[i] * ds1
+        ds2 = (t2[0] * dp1[0] + t2[1] * dp1[1] + t2[2] * dp1[2]) / rho
+        for i in range(3):
+            dd[i] = dp1[i] - R2 * t2[i] * ds2
+        nd = n[0] * dd[0] + n[1] * dd[1] + n[2] * dd[2]
+        for i in range(3):
+            dn[i] = (dd[i] - n[i] * nd) / f
+        du1n, dt1t2, du2n = 0.0, 0.0, 0.0
+        for i in range(3):
+            du1 = wu1[i] + t1[i] * ds1
+            dt1 = wt1[i] - u1[i] * ds1
+            du1n += dn[i] * u1[i] + n[i] * du1
+            du2n += dn[i] * u2[i] + n[i] * t2[i] * ds2
+            dt1t2 += dt1 * t2[i] - t1[i] * u2[i] * ds2
+        out[e] = partials[0] * dk1 * (-du1n) + partials[1] * dk2 * du2n + partials[2] * sign * dt1t2
+    return K
 
 
 @_jit()

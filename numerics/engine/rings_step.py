@@ -119,7 +119,7 @@ def _pair(m, k, x, u, R, warm, load, rec, rows, vec, law, search, fold):
         warm[k, 0] = count
         for c in range(count):
             warm[k, 1 + c] = rows[c, 1]
-    weights, slopes, tops, stored_energy = fold
+    weights, slopes, tops, stored_energy, slopes_K = fold
     rings_kernels.fold_weights(c1, x[7 * i + 3 : 7 * i + 7], m.coupling[i, 0], m.coupling[i, 1], c2,
                                x[7 * j + 3 : 7 * j + 7], m.coupling[j, 0], m.coupling[j, 1], rows, count,
                                weights, slopes, tops)  # fmt: skip
@@ -135,6 +135,18 @@ def _pair(m, k, x, u, R, warm, load, rec, rows, vec, law, search, fold):
         power += dashpot + friction
         energy += stored
         stored_energy[c] = stored
+        if law[0] == 0.0 and stored > 0.0:  # Hertz's K_c changes with the pose: the loads of its change too
+            rings_kernels.stiffness_slopes(rows[c], c1, x[7 * i + 3 : 7 * i + 7], m.coupling[i, 0], c2,
+                                           x[7 * j + 3 : 7 * j + 7], m.coupling[j, 0], law, m.inv_top, m.floats[1],
+                                           slopes_K)  # fmt: skip
+            for a in range(3):  # ring 2: the opposite force, and minus ring 1's torque minus (c_1 - c_2) x its force
+                b, d = (a + 1) % 3, (a + 2) % 3
+                load[i, a] -= stored * slopes_K[a]
+                load[j, a] += stored * slopes_K[a]
+                load[i, 3 + a] -= stored * slopes_K[3 + a]
+                load[j, 3 + a] += stored * (
+                    slopes_K[3 + a] + (c1[b] - c2[b]) * slopes_K[d] - (c1[d] - c2[d]) * slopes_K[b]
+                )
         for a in range(3):
             load[i, a] += force[a]
             load[j, a] -= force[a]
@@ -188,7 +200,7 @@ def _fold_work():
     """The work arrays of :func:`_pair` for the shares of contacts by a fold: weights, their slopes, the rows of the
     maxima in overlap (:func:`~ringchain.numerics.engine.rings_kernels.fold_weights`), the stored energies."""
     M = rings_kernels.MAX_CONTACTS
-    return np.empty(M), np.empty((M, 2 * M)), np.empty((M, rings_kernels.FIELDS)), np.empty(M)
+    return np.empty(M), np.empty((M, 2 * M)), np.empty((M, rings_kernels.FIELDS)), np.empty(M), np.empty(6)
 
 
 @jit()
