@@ -57,7 +57,11 @@ its force (:func:`fold_weights`) that vanishes as it meets the maximum and disap
 stay continuous in the pose; elsewhere the share is one.  Without it the force of a contact jumps as the scan
 finds or misses a minimum a rounding error from a fold (met in a 4 x 4 sheet of chain mail under gravity: a
 minimum 1e-8 r below the maximum next to it, both 1e-3 r deep, 2.7 N of force that came and went as the pose
-changed by 1e-18 m), and no static solver can converge.
+changed by 1e-18 m), and no static solver can converge.  The loads of a pair are the gradient of its stored
+energy sum_a w_a K_a delta_a^(n+1)/(n+1): the shares w_a are functions of the approaches of the minima and of the
+maxima in overlap, whose derivatives over the pose are unit forces along their normals (:func:`fold_weights`
+returns the shares' slopes and the maxima's rows), and Hertz's K_a follows the curvatures at its contact
+(:func:`stiffness_slopes`); :func:`~ringchain.numerics.engine.rings_step.loads` adds both.
 
 The module's constants that the kernels read (``MAX_CONTACTS``, ``LINE_POINTS``, the modes of
 :func:`pairs_contacts`) are compiled in as constants, as Numba does with globals.
@@ -768,8 +772,9 @@ def contact_force(row, c1, v1, w1, c2, v2, w2, law, table, step, force, torque_1
     With a constant K (the power law) the elastic force and torques are exactly the gradient of the stored
     energy K delta^(n+1)/(n+1) (the gap is stationary in s_1 and s_2 at the minimum, and the contact point lies
     on the common normal of the centre circles).  The Hertz stiffness of the curvatures changes with the pose
-    (the angle between the tubes, the place round each tube): its force leaves out the pose derivative of K,
-    so the stored energy is then conserved only to that order.  v_reg = 0 is Coulomb's law itself (the friction
+    (the angle between the tubes, the place round each tube): the force here leaves out the pose derivative of
+    K, which :func:`stiffness_slopes` gives (the loads of :func:`~ringchain.numerics.engine.rings_step.loads` add
+    it, and are then the gradient of the stored energy).  v_reg = 0 is Coulomb's law itself (the friction
     force jumps where the slip reverses).
     """
     for i in range(3):

@@ -30,8 +30,12 @@ Contacts.  The geometry and the law are those of :mod:`ringchain.numerics.engine
 minimum of the distance of the two centre circles (warm-started Newton, the cold scan as fallback), the tubes
 overlapping by delta = r_1 + r_2 - d where it is below the sum of the tube radii; the normal force
 [K delta^n + gamma d(delta)/dt]_+ and the regularised Coulomb friction at the contact point, forces and
-torques on both rings.  Their dissipated power (dashpot and friction) is the rate of the state's dissipated
-energy W.  The search (:func:`~ringchain.numerics.engine.rings_kernels.pair_contacts_warm`, with its checks for
+torques on both rings, and the loads of the pose derivatives of Hertz's K_c and of the shares of twin contacts
+by a fold (:func:`~ringchain.numerics.engine.rings_kernels.stiffness_slopes`,
+:func:`~ringchain.numerics.engine.rings_kernels.fold_weights`), so that the elastic loads are the gradient of the
+stored energy (a rattle of four rings with Hertz's law holds its energy to 1.3e-11 of the impact's, 2e-7 without
+them).  Their dissipated power (dashpot and friction) is the rate of the state's dissipated energy W.
+The search (:func:`~ringchain.numerics.engine.rings_kernels.pair_contacts_warm`, with its checks for
 minima that split or are born next to the ones it follows) runs once per accepted step of the Runge-Kutta
 loop, at the first evaluation after it (:func:`normalise` raises the flag); the other stages follow the
 minima from the angles of that search by one Newton step
