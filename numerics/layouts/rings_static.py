@@ -253,23 +253,29 @@ class _Problem:
 def _preconditioner(problem, grad):
     """The solve x -> (H + sigma I)^(-1) x with H the symmetric part of the stiffness matrix at the base pose (its
     gradient there ``grad``), sigma the smallest of 1e-8, 1e-6, ... times its largest diagonal that makes it
-    positive definite (its pivots without pivoting off the diagonal, as _newton)."""
+    positive definite (:func:`_positive_factor`)."""
     from scipy import sparse
-    from scipy.sparse.linalg import splu
 
     matrix = problem.stiffness(grad)
     symmetric = (0.5 * (matrix + matrix.T)).tocsc()
     size = symmetric.shape[0]
     sigma = 1e-8 * max(float(np.max(np.abs(symmetric.diagonal()))), 1.0)
-    while True:
-        try:
-            factor = splu((symmetric + sigma * sparse.identity(size)).tocsc(), permc_spec="MMD_AT_PLUS_A",
-                          diag_pivot_thresh=0.0, options={"SymmetricMode": True})  # fmt: skip
-            if np.all(factor.U.diagonal() > 0.0):
-                return factor.solve
-        except RuntimeError:
-            pass
+    while (factor := _positive_factor(symmetric + sigma * sparse.identity(size))) is None:
         sigma *= 100.0
+    return factor.solve
+
+
+def _positive_factor(matrix):
+    """The sparse LU factors of a symmetric matrix without pivoting off the diagonal (SuperLU), or None where it is
+    not positive definite (a pivot zero or negative: the pivots give its inertia)."""
+    from scipy.sparse.linalg import splu
+
+    try:
+        factor = splu(matrix.tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
+                      options={"SymmetricMode": True})  # fmt: skip
+    except RuntimeError:  # a pivot exactly zero
+        return None
+    return factor if np.all(factor.U.diagonal() > 0.0) else None
 
 
 def _descent(problem, tol, max_iterations):
@@ -367,12 +373,8 @@ def _newton(problem, tol, max_iterations):
             matrix = problem.stiffness(grad)
             symmetric = (0.5 * (matrix + matrix.T)).tocsc()
         shift = sparse.identity(size) / tau
-        try:
-            factor = splu((symmetric + shift).tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
-                          options={"SymmetricMode": True})  # fmt: skip
-        except RuntimeError:  # a pivot exactly zero: not positive definite either
-            factor = None
-        if factor is None or not np.all(factor.U.diagonal() > 0.0):
+        factor = _positive_factor(symmetric + shift)
+        if factor is None:
             tau *= 0.25
             continue
         step = factor.solve(-grad)

@@ -42,13 +42,16 @@ def test_equilibrium_names_a_bad_tolerance():
         Rings.chain(3, RING).equilibrium(force_tol=-1.0)
 
 
+@pytest.mark.parametrize("precondition", [True, False], ids=["preconditioned", "plain"])
 @pytest.mark.parametrize("build", [lambda: Rings.chain(6, RING), lambda: Rings.mail(2, 3, RING)], ids=["chain", "mail"])
-def test_the_first_order_phase_alone_reaches_the_static_state(build, monkeypatch):
+def test_the_first_order_phase_alone_reaches_the_static_state(build, precondition, monkeypatch):
     from ringchain.numerics.layouts import rings_static
 
-    # The first phase (L-BFGS on the energy) handing over only at the tolerance itself: Newton's method runs only
-    # if it stops short, so the phases must all be descents and the state found theirs.
+    # The first phase (L-BFGS on the energy, its initial inverse Hessian the stiffness matrix or s.y / y.y) handing
+    # over only at the tolerance itself: Newton's method runs only if it stops short, so the phases must all be
+    # descents and the state found theirs.
     monkeypatch.setattr(rings_static, "HANDOVER", 0.0)
+    monkeypatch.setattr(rings_static, "PRECONDITION", precondition)
     network, tol = build(), 1e-8
     centres, orientations, phases = rings_static.static_state(network, force_tol=tol)
     assert [phase["phase"] for phase in phases] == ["descent"] * len(rings_static.SOFTENING)
