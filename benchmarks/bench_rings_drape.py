@@ -67,6 +67,8 @@ def main():
     parser.add_argument("--tol", type=float, default=1e-6, help="residual force, in weights m g")
     parser.add_argument("--iterations", type=int, default=30, help="Newton iterations per stage")
     parser.add_argument("--save", help="write the pose reached (centres, m; orientations) to this .npz file")
+    parser.add_argument("--untraced", action="store_true", help="without tracemalloc (it slows the solver's "
+                        "Python several times): no peak of the memory allocated")  # fmt: skip
     args = parser.parse_args()
 
     ring = Ring.from_aspect_ratio(9.0)
@@ -77,16 +79,18 @@ def main():
 
     print(f"{args.rows} x {args.cols} chain mail, {len(sheet.pairs)} candidate pairs, tolerance {args.tol:g} m g")
     print(f"  build and compile or load of the kernels: {warm_up:.1f} s")
-    tracemalloc.start()
+    if not args.untraced:
+        tracemalloc.start()
     start, cpu = time.perf_counter(), time.process_time()
     centres, orientations, phases = static_state(sheet, force_tol=args.tol, max_iterations=args.iterations)
     wall, cpu = time.perf_counter() - start, time.process_time() - cpu
-    _, peak = tracemalloc.get_traced_memory()
+    _, peak = tracemalloc.get_traced_memory()  # (0, 0) when not tracing
     tracemalloc.stop()
     rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 2**10  # kB -> MB (Linux)
     for p in phases:
+        allocated = (p["memory"] or 0) / 2**20
         print(f"  {p['phase']:8s} softening {p['softening']:g}: {p['iterations']} iterations, {p['evaluations']} "
-              f"evaluations, {p['wall']:.1f} s wall, {p['cpu']:.1f} s of CPU, {p['memory'] / 2**20:.1f} MB at peak, "
+              f"evaluations, {p['wall']:.1f} s wall, {p['cpu']:.1f} s of CPU, {allocated:.1f} MB at peak, "
               f"residual {p['residual']:.2e} m g")  # fmt: skip
     print(f"  solve: {wall:.1f} s wall, {cpu:.1f} s of CPU")
     print(f"  memory: {peak / 2**20:.0f} MB allocated at peak during the solve; {rss:.0f} MB resident at peak")

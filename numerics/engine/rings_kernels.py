@@ -57,7 +57,11 @@ its force (:func:`fold_weights`) that vanishes as it meets the maximum and disap
 stay continuous in the pose; elsewhere the share is one.  Without it the force of a contact jumps as the scan
 finds or misses a minimum a rounding error from a fold (met in a 4 x 4 sheet of chain mail under gravity: a
 minimum 1e-8 r below the maximum next to it, both 1e-3 r deep, 2.7 N of force that came and went as the pose
-changed by 1e-18 m), and no static solver can converge.
+changed by 1e-18 m), and no static solver can converge.  The loads of a pair are the gradient of its stored
+energy sum_a w_a K_a delta_a^(n+1)/(n+1): the shares w_a are functions of the approaches of the minima and of the
+maxima in overlap, whose derivatives over the pose are unit forces along their normals (:func:`fold_weights`
+returns the shares' slopes and the maxima's rows), and Hertz's K_a follows the curvatures at its contact
+(:func:`stiffness_slopes`); :func:`~ringchain.numerics.engine.rings_step.loads` adds both.
 
 The module's constants that the kernels read (``MAX_CONTACTS``, ``LINE_POINTS``, the modes of
 :func:`pairs_contacts`) are compiled in as constants, as Numba does with globals.
@@ -94,6 +98,7 @@ __all__ = [
     "hertz_stiffness_curvatures",
     "elliptical_factor_at",
     "contact_force",
+    "stiffness_slopes",
 ]
 
 #: Numbers per contact row (see the module notes).
@@ -507,10 +512,23 @@ def pairs_contacts(centres, orientations, R, r, pairs, n_scan, mode, iterations,
 
 
 # -- minima next to a maximum in overlap ---------------------------------------------------------------------------
+@_jit(inline="always")
+def _share(P_a, P_b, D):
+    """(x, dx/dP_a, dx/dP_b, dx/dD) of the share x = 1 - D / (D + P_a) * P_b / (P_a + P_b) of :func:`fold_weights`
+    (P_a + P_b > 0)."""
+    total = P_a + P_b
+    f = D * P_b / ((D + P_a) * total)
+    d_a = -f / (D + P_a) - f / total
+    d_b = D / ((D + P_a) * total) - f / total
+    d_D = P_b / ((D + P_a) * total) - f / (D + P_a)
+    return 1.0 - f, -d_a, -d_b, -d_D
+
+
 @_jit()
-def fold_weights(c1, q1, R1, r1, c2, q2, R2, r2, rows, count, weights):
+def fold_weights(c1, q1, R1, r1, c2, q2, R2, r2, rows, count, weights, slopes, tops):
     """Weights (count,) in [0, 1] of the contacts ``rows[:count]`` of a pair (minima of the distance of the centre
-    circles), continuous in the pose where a maximum between two minima is itself in overlap.
+    circles), continuous in the pose where a maximum between two minima is itself in overlap; their derivatives
+    over the approaches of the minima and of those maxima; the rows of those maxima.
 
     Where two tubes lie nearly parallel over an arc, the distance can have a minimum next to a maximum, both below
     r_1 + r_2; as the pose changes the two meet and vanish (a fold), and a contact counted with its full force
@@ -519,12 +537,24 @@ def fold_weights(c1, q1, R1, r1, c2, q2, R2, r2, rows, count, weights):
     force (and b likewise), S(x) = 3 x^2 - 2 x^3: none at a fold (P_a -> 0), all of it as its neighbour vanishes
     (P_b -> 0) or the maximum leaves the overlap (delta_M -> 0), half each where twins merge (P_a = P_b -> 0).
     The shares of its two sides multiply.
+
+    Each weight is a function of the approaches delta = -gap of the minima and of the maxima in overlap, and each of
+    these is stationary in the angles on both circles, so its derivative over the pose is that of the distance at
+    fixed angles (a unit force along the row's normal, through its point): a contact energy sum w_a phi_a(delta_a)
+    has the loads of its contacts (weighted) plus dE/d(delta_c) = sum_a phi_a dw_a/d(delta_c) at every minimum and
+    maximum c (:func:`~ringchain.numerics.engine.rings_step.loads`).  ``slopes`` (MAX_CONTACTS, 2 MAX_CONTACTS)
+    receives dw_a/d(delta_c), column c < MAX_CONTACTS for minimum c, MAX_CONTACTS + m for the maximum m after the
+    m-th minimum by angle; ``tops`` (MAX_CONTACTS, FIELDS) the row of that maximum (module notes; its column of
+    ``slopes`` is zero where it is out of overlap, and its row then unwritten).  Where twins merge exactly
+    (P_a = P_b = 0) the derivative depends on the direction (the weights on the ratio P_a / P_b) and is set to zero.
     """
     for i in range(count):
         weights[i] = 1.0
+        for c in range(2 * MAX_CONTACTS):
+            slopes[i, c] = 0.0
     if count < 2:
         return
-    _, _, k, order = _posed(c1, q1, c2, q2, MAX_CONTACTS)
+    M1, M2, k, order = _posed(c1, q1, c2, q2, MAX_CONTACTS)
     for i in range(count):
         order[i] = i
     for i in range(1, count):  # by angle (count <= MAX_CONTACTS: insertion sort)
@@ -551,15 +581,29 @@ def fold_weights(c1, q1, R1, r1, c2, q2, R2, r2, rows, count, weights):
         top = math.sqrt(2.0 * g) - rim  # the gap at the maximum
         if top >= 0.0:
             continue
-        P_a, P_b = max(top - rows[a, 0], 0.0), max(top - rows[b, 0], 0.0)
+        _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, lo, 0.0, tops[i])
+        D = -top
+        P_a, P_b = top - rows[a, 0], top - rows[b, 0]
+        open_a, open_b = P_a > 0.0, P_b > 0.0  # a minimum above its maximum (rounding): P = 0, no derivative
+        P_a, P_b = max(P_a, 0.0), max(P_b, 0.0)
         share_a, share_b = 0.5, 0.5
+        da, db = (0.0, 0.0, 0.0), (0.0, 0.0, 0.0)  # d share / d(delta_a, delta_b, delta_M)
         if P_a + P_b > 0.0:
-            share_a = 1.0 - (-top) / (P_a - top) * P_b / (P_a + P_b)
-            share_b = 1.0 - (-top) / (P_b - top) * P_a / (P_a + P_b)
+            share_a, x_Pa, x_Pb, x_D = _share(P_a, P_b, D)  # P_a = delta_a - delta_M, P_b = delta_b - delta_M
+            da = (x_Pa * open_a, x_Pb * open_b, x_D - x_Pa * open_a - x_Pb * open_b)
+            share_b, x_Pb, x_Pa, x_D = _share(P_b, P_a, D)
+            db = (x_Pa * open_a, x_Pb * open_b, x_D - x_Pa * open_a - x_Pb * open_b)
         # smoothed (3 x^2 - 2 x^3: a half stays a half), so that a minimum that the scan finds or misses a rounding
         # error from its fold carries a share of order (P / delta_M)^2, not P / delta_M
-        weights[a] *= share_a * share_a * (3.0 - 2.0 * share_a)
-        weights[b] *= share_b * share_b * (3.0 - 2.0 * share_b)
+        for m, share, d in ((a, share_a, da), (b, share_b, db)):
+            factor = share * share * (3.0 - 2.0 * share)
+            slope = 6.0 * share * (1.0 - share)  # dS/dx
+            for c in range(2 * MAX_CONTACTS):  # the product rule: w_m := w_m S
+                slopes[m, c] *= factor
+            slopes[m, a] += weights[m] * slope * d[0]
+            slopes[m, b] += weights[m] * slope * d[1]
+            slopes[m, MAX_CONTACTS + i] += weights[m] * slope * d[2]
+            weights[m] *= factor
 
 
 # -- the contact law -------------------------------------------------------------------------------------------
@@ -625,6 +669,95 @@ def hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, cos_angle, E_star, max_log_ra
 
 
 @_jit()
+def stiffness_slopes(row, c1, q1, R1, c2, q2, R2, law, table, step, out):
+    """The Hertz stiffness K_c of a contact row (law kind 0, as :func:`contact_force`) and its logarithmic derivative
+    over the pose of ring 1: ``out`` (6,) receives d(ln K_c)/d(c_1) (1/m) and d(ln K_c)/d(theta_1) (rotation vector
+    of ring 1 about its centre, in space; 1/rad), ring 2 held.  Returns K_c (N/m^1.5).
+
+    K_c depends on the pose through the curvature of each tube along its centre circle at the contact,
+    cos_i / (R_i + r_i cos_i) (cos_1 = -n.u_1, cos_2 = n.u_2: u_i the radial of circle i at the contact, n the
+    normal), and the cosine of the angle between the tangents t_1, t_2; these follow the contact angles s_1, s_2,
+    which move with the pose: s_2 as the nearest point of circle 2 to the point p_1 of circle 1
+    (ds_2 = t_2.dp_1 / rho, rho the distance of p_1 from the axis of ring 2), s_1 as the minimum of the distance
+    (the total differential of g'(s_1) = R_1 (p_1 - p_2).t_1 vanishes; its coefficient of ds_1 is g''/R_1).  The
+    derivatives of K_c over its three arguments are central differences of :func:`hertz_stiffness_curvatures`
+    (relative steps of 1e-6: their error about 1e-10 of the derivative).  A contact energy K_c phi(delta) then has
+    the loads of :func:`contact_force` plus -phi dK_c/dpose; ring 2's follow from the invariance of K_c under a
+    rigid motion of both rings (its force the opposite, its torque about its centre minus ring 1's minus
+    (c_1 - c_2) x that force).
+    """
+    M1 = np.empty((3, 3))
+    M2 = np.empty((3, 3))
+    rotation_matrix(q1, M1)
+    rotation_matrix(q2, M2)
+    cap = law[7] if law.size > 7 else 690.0
+    k1a, k1b, k2a, k2b, cosine = row[9], row[10], row[11], row[12], row[13]
+    K = hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, cosine, law[6], cap, table, step)
+    partials = np.empty(3)  # d ln K over k1a, k2a, the cosine
+    for a in range(3):
+        h = 1e-6 * ((abs(k1a) + k1b) if a == 0 else (abs(k2a) + k2b) if a == 1 else 1.0)
+        up = hertz_stiffness_curvatures(k1a + h * (a == 0), k1b, k2a + h * (a == 1), k2b, cosine + h * (a == 2),
+                                        law[6], cap, table, step)  # fmt: skip
+        down = hertz_stiffness_curvatures(k1a - h * (a == 0), k1b, k2a - h * (a == 1), k2b, cosine - h * (a == 2),
+                                          law[6], cap, table, step)  # fmt: skip
+        partials[a] = (up - down) / (2.0 * h * K)
+    C1, S1, C2, S2 = math.cos(row[1]), math.sin(row[1]), math.cos(row[2]), math.sin(row[2])
+    u1, t1, u2, t2, n, lever = np.empty(3), np.empty(3), np.empty(3), np.empty(3), np.empty(3), np.empty(3)
+    for i in range(3):
+        u1[i] = C1 * M1[i, 0] + S1 * M1[i, 1]
+        t1[i] = C1 * M1[i, 1] - S1 * M1[i, 0]
+        u2[i] = C2 * M2[i, 0] + S2 * M2[i, 1]
+        t2[i] = C2 * M2[i, 1] - S2 * M2[i, 0]
+        n[i] = row[6 + i]
+        lever[i] = R1 * u1[i]  # p_1 - c_1
+    f = row[14]
+    d = np.empty(3)  # p_1 - p_2
+    for i in range(3):
+        d[i] = f * n[i]
+    rho = R2 + f * (n[0] * u2[0] + n[1] * u2[1] + n[2] * u2[2])
+    cos1 = -(n[0] * u1[0] + n[1] * u1[1] + n[2] * u1[2])
+    cos2 = n[0] * u2[0] + n[1] * u2[1] + n[2] * u2[2]
+    tt = t1[0] * t2[0] + t1[1] * t2[1] + t1[2] * t2[2]
+    sign = 1.0 if tt >= 0.0 else -1.0
+    r1, r2 = 1.0 / k1b, 1.0 / k2b
+    dk1 = R1 / (R1 + r1 * cos1) ** 2  # d(k1a)/d(cos_1)
+    dk2 = R2 / (R2 + r2 * cos2) ** 2
+    # g''/R_1 = R_1 t_1.P t_1 - d.u_1 with P = I - (R_2/rho) t_2 t_2^T (dp_2 = (R_2/rho) t_2 t_2.dp_1)
+    t1t2 = tt
+    curvature = R1 * (1.0 - (R2 / rho) * t1t2 * t1t2) - (d[0] * u1[0] + d[1] * u1[1] + d[2] * u1[2])
+    a, w, dp1, dd, dn = np.empty(3), np.empty(3), np.empty(3), np.empty(3), np.empty(3)
+    wt1, wu1 = np.empty(3), np.empty(3)  # w x t_1, w x u_1
+    for e in range(6):
+        for i in range(3):
+            w[i] = 1.0 if e == 3 + i else 0.0
+        for i in range(3):  # the move of p_1 at fixed s_1: dc + w x (p_1 - c_1)
+            a[i] = (1.0 if e == i else 0.0) + w[(i + 1) % 3] * lever[(i + 2) % 3] - w[(i + 2) % 3] * lever[(i + 1) % 3]
+        for i in range(3):
+            wt1[i] = w[(i + 1) % 3] * t1[(i + 2) % 3] - w[(i + 2) % 3] * t1[(i + 1) % 3]
+            wu1[i] = w[(i + 1) % 3] * u1[(i + 2) % 3] - w[(i + 2) % 3] * u1[(i + 1) % 3]
+        t2a = t2[0] * a[0] + t2[1] * a[1] + t2[2] * a[2]
+        t1Pa = (t1[0] * a[0] + t1[1] * a[1] + t1[2] * a[2]) - (R2 / rho) * t1t2 * t2a
+        ds1 = -(t1Pa + (d[0] * wt1[0] + d[1] * wt1[1] + d[2] * wt1[2])) / curvature
+        for i in range(3):
+            dp1[i] = a[i] + R1 * t1[i] * ds1
+        ds2 = (t2[0] * dp1[0] + t2[1] * dp1[1] + t2[2] * dp1[2]) / rho
+        for i in range(3):
+            dd[i] = dp1[i] - R2 * t2[i] * ds2
+        nd = n[0] * dd[0] + n[1] * dd[1] + n[2] * dd[2]
+        for i in range(3):
+            dn[i] = (dd[i] - n[i] * nd) / f
+        du1n, dt1t2, du2n = 0.0, 0.0, 0.0
+        for i in range(3):
+            du1 = wu1[i] + t1[i] * ds1
+            dt1 = wt1[i] - u1[i] * ds1
+            du1n += dn[i] * u1[i] + n[i] * du1
+            du2n += dn[i] * u2[i] + n[i] * t2[i] * ds2
+            dt1t2 += dt1 * t2[i] - t1[i] * u2[i] * ds2
+        out[e] = partials[0] * dk1 * (-du1n) + partials[1] * dk2 * du2n + partials[2] * sign * dt1t2
+    return K
+
+
+@_jit()
 def contact_force(row, c1, v1, w1, c2, v2, w2, law, table, step, force, torque_1, torque_2):
     """Force and torques of one contact row (module notes) between ring 1 and ring 2.
 
@@ -639,8 +772,9 @@ def contact_force(row, c1, v1, w1, c2, v2, w2, law, table, step, force, torque_1
     With a constant K (the power law) the elastic force and torques are exactly the gradient of the stored
     energy K delta^(n+1)/(n+1) (the gap is stationary in s_1 and s_2 at the minimum, and the contact point lies
     on the common normal of the centre circles).  The Hertz stiffness of the curvatures changes with the pose
-    (the angle between the tubes, the place round each tube): its force leaves out the pose derivative of K,
-    so the stored energy is then conserved only to that order.  v_reg = 0 is Coulomb's law itself (the friction
+    (the angle between the tubes, the place round each tube): the force here leaves out the pose derivative of
+    K, which :func:`stiffness_slopes` gives (the loads of :func:`~ringchain.numerics.engine.rings_step.loads` add
+    it, and are then the gradient of the stored energy).  v_reg = 0 is Coulomb's law itself (the friction
     force jumps where the slip reverses).
     """
     for i in range(3):

@@ -20,23 +20,28 @@ stiffness matrix), and its model of the loads holds only over a step of a few ap
 that falls and folds into its drape from the pose it was built in moves far, and Newton's method spends hundreds
 of iterations on the way (a 10 x 10 sheet: 50 iterations in each of the four stages, residual still 3e3 m g).
 
-So each stage (below) runs two phases.  The first, a descent, brings the pose close at one evaluation per step:
-L-BFGS (Liu and Nocedal, Math. Program. 45, 503 (1989); the two-loop recursion of Nocedal and Wright, Numerical
-Optimization, 2nd ed. (2006), Algorithm 7.4) on the energy, the scaled loads its gradient, the spin about each
-ring's axis projected out of both, steps capped at ``STEP``, ``MEMORY`` pairs, the initial inverse Hessian
-s.y / y.y.  A step is halved until the energy falls by Armijo's fraction 1e-4 of its slope or the residual falls
-(``SEARCH`` halvings, then the plain gradient); where neither falls along the gradient (the loads are not quite
-the energy's gradient: below), it follows the loads by overdamped steps of the smallest inverse curvature met, at
-most ``FORCED`` in a row.  Every trial pose searches its contacts from scratch: the warm-started search costs
-little less (30 x 30 sheet: 26 ms against 31 ms an evaluation) and cannot see a minimum born away from the ones
-it follows (searched from scratch only every 25 steps, a ring of a 10 x 10 sheet was found 426 m g deep in a
-neighbour's tube).  It stops at ``HANDOVER`` m g (or the stage's tolerance if larger) or after ``DESCENT`` steps,
-and Newton's method (below) polishes; its pose is kept only where its residual is lower than the descent's.
+So each stage (below) runs two phases.  The first, a descent, brings the pose to the stage's tolerance at one
+evaluation per step when it can: L-BFGS (Liu and Nocedal, Math. Program. 45, 503 (1989); the two-loop recursion of
+Nocedal and Wright, Numerical Optimization, 2nd ed. (2006), Algorithm 7.4) on the energy, the scaled loads its
+gradient, the spin about each ring's axis projected out of both, steps capped at ``STEP``, ``MEMORY`` pairs.  Its
+initial inverse Hessian is the stiffness matrix of Newton's method below (its symmetric part, shifted by the
+smallest multiple of its largest diagonal, 1e-8, 1e-6, ..., that makes it positive definite), rebuilt every
+``REFRESH`` accepted steps (``PRECONDITION``; else s.y / y.y): the matrix carries the stiff contacts, which a plain
+L-BFGS resolves only over thousands of steps, and the pairs carry the change of the matrix between builds (a 4 x 4
+sheet to 1e-6 m g: 18,000 steps and 37 s of CPU without it, 1,000 steps and 3 s with it).  A step is halved until
+the energy falls by Armijo's fraction 1e-4 of its slope or the residual falls (``SEARCH`` halvings, then the plain
+gradient); where neither falls along the gradient (rounding, or the scan finding or missing a minimum next to a
+fold), it follows the loads by overdamped steps of the smallest inverse curvature met, at most ``FORCED`` in a row.
+Every trial pose searches its contacts from scratch: the warm-started search costs little less (30 x 30 sheet: 26 ms
+against 31 ms an evaluation) and cannot see a minimum born away from the ones it follows (searched from scratch only
+every 25 steps, a ring of a 10 x 10 sheet was found 426 m g deep in a neighbour's tube).  It stops at ``HANDOVER``
+m g (or the stage's tolerance if larger) or after ``DESCENT`` steps, and Newton's method (below) polishes what is
+left; its pose is kept only where its residual is lower than the descent's.
 Measured against it: FIRE (Bitzek, Koskinen, Gaehler, Moseler and Gumbsch, Phys. Rev. Lett. 97, 170201 (2006),
 with the parameters of FIRE 2.0, Guenole et al., Comput. Mater. Sci. 175, 109584 (2020)), on the same scaled
 variables with the time step bounded by the stiffest curvature, stalled at 0.4-0.8 m g on a 4 x 4 sheet after
 3,000 steps (its global restart, where the power of the loads turns negative, fires every 10-20 steps on the
-contacts' fast modes and stops the slow swing), where L-BFGS reached 1e-2 m g in 1,600.
+contacts' fast modes and stops the slow swing), where L-BFGS (unpreconditioned) reached 1e-2 m g in 1,600.
 
 The solver: pseudo-transient continuation (Newton's method on the loads with a pseudo-time step tau,
 (H + I / tau) dx = -g, tau grown as the residual falls: Kelley and Keyes, SIAM J. Numer. Anal. 35, 508 (1998)).
@@ -59,12 +64,17 @@ length s changes a contact's approach by about s^2 / (2 R), which must stay belo
 delta ~ (m g / K)^(2/3) -- and each stage starts from the last.  The softest stage keeps the approach under the
 weight of 30 rings below a tenth of a tube radius (the paper's steel ring), so no pair unlinks.
 
-The Hertz law of the curvatures leaves the pose derivative of K_c out of its forces
-(:func:`~ringchain.numerics.engine.rings_kernels.contact_force`), and the share of a contact next to a fold
-(:func:`~ringchain.numerics.engine.rings_kernels.fold_weights`) that of its share: the loads are not quite a
-gradient, so the energy decides the steps far from the solution, and near it (tau >= ``NEWTON``) the step solves
-the unsymmetrised matrix (Newton's for the loads), accepted where the residual falls.  The state found is where the
-forces vanish.
+The loads are the gradient of the energy: the Hertz law's include the derivative of K_c over the pose
+(:func:`~ringchain.numerics.engine.rings_kernels.stiffness_slopes`), and a contact's share next to a fold
+(:func:`~ringchain.numerics.engine.rings_kernels.fold_weights`) enters with its own derivative (the loads of
+:func:`~ringchain.numerics.engine.rings_step.loads`).  Without them (measured before they were added) the loads
+missed the energy's central differences by 6-30 per cent at twin contacts whose maximum is in overlap, no step
+along them lowered the energy there, and the descent of the softest stage of a 30 x 30 sheet stopped at 26-76 m g
+with rings deep in one another's tubes, from which the stiffer stages could not recover.  Near the solution
+(tau >= ``NEWTON``) Newton's step solves the unsymmetrised matrix (symmetric but for its finite differences),
+accepted where the residual falls.  Newton's method alone stalls on a sheet at full stiffness (4 x 4: 2.6e-4 m g
+after 200 iterations): a contact barely closed (Hertz's stiffness grows as delta^(1/2) from zero) makes its model
+fail for steps longer than its approach, which the line search of the descent takes in its stride.
 Converged when the largest residual force on a free ring is below ``force_tol`` m g and the largest torque
 below ``force_tol`` m g R (R the largest major radius), checked at the end by a search of every contact from
 scratch.
@@ -95,11 +105,12 @@ SOFTENING = (1e-3, 1e-2, 1e-1, 1.0)
 #: of the loads (about 1e-10 m g over stiffnesses of 1e4 m g / r).
 DIFFERENCE = 1e-7
 
-#: Accepted steps of the first phase (module notes), L-BFGS on the softest stage.
-DESCENT = 5000
+#: Accepted steps of the first phase of each stage (module notes), preconditioned L-BFGS.
+DESCENT = 20000
 
-#: Largest residual (in weights m g) at which the first phase hands the pose to Newton's method.
-HANDOVER = 1e-2
+#: Largest residual (in weights m g) at which the first phase hands the pose to Newton's method: none above the
+#: stage's tolerance (the preconditioned descent reaches it where Newton's method stalls; module notes).
+HANDOVER = 0.0
 
 #: Pairs (step, change of the gradient) that the first phase keeps.
 MEMORY = 10
@@ -109,6 +120,13 @@ SEARCH = 12
 
 #: Steps in a row that the first phase takes along the loads where neither the energy nor the residual falls.
 FORCED = 200
+
+#: Whether the first phase takes the stiffness matrix (its symmetric part, shifted to be positive definite) as its
+#: initial inverse Hessian, rebuilt every ``REFRESH`` accepted steps.
+PRECONDITION = True
+
+#: Accepted steps of the first phase between two builds of its preconditioner.
+REFRESH = 100
 
 
 def _exp(theta):
@@ -232,6 +250,34 @@ class _Problem:
                                  shape=(size, size))  # fmt: skip
 
 
+def _preconditioner(problem, grad):
+    """The solve x -> (H + sigma I)^(-1) x with H the symmetric part of the stiffness matrix at the base pose (its
+    gradient there ``grad``), sigma the smallest of 1e-8, 1e-6, ... times its largest diagonal that makes it
+    positive definite (:func:`_positive_factor`)."""
+    from scipy import sparse
+
+    matrix = problem.stiffness(grad)
+    symmetric = (0.5 * (matrix + matrix.T)).tocsc()
+    size = symmetric.shape[0]
+    sigma = 1e-8 * max(float(np.max(np.abs(symmetric.diagonal()))), 1.0)
+    while (factor := _positive_factor(symmetric + sigma * sparse.identity(size))) is None:
+        sigma *= 100.0
+    return factor.solve
+
+
+def _positive_factor(matrix):
+    """The sparse LU factors of a symmetric matrix without pivoting off the diagonal (SuperLU), or None where it is
+    not positive definite (a pivot zero or negative: the pivots give its inertia)."""
+    from scipy.sparse.linalg import splu
+
+    try:
+        factor = splu(matrix.tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
+                      options={"SymmetricMode": True})  # fmt: skip
+    except RuntimeError:  # a pivot exactly zero
+        return None
+    return factor if np.all(factor.U.diagonal() > 0.0) else None
+
+
 def _descent(problem, tol, max_iterations):
     """The first phase of the module notes on ``problem``: L-BFGS on the energy, the loads its gradient, until
     max |gradient| <= tol, ``max_iterations`` accepted steps or a line search that finds no lower energy.  Returns
@@ -243,19 +289,24 @@ def _descent(problem, tol, max_iterations):
     rounding = 1e-13 * max(problem.moving.size, 1) * scale  # as in _newton
     memory = []  # the last MEMORY pairs (step s, change of the gradient y, 1 / s.y)
     iterations, forced, gamma = 0, 0, None
+    factor, built = None, -REFRESH  # the preconditioner (module notes) and the step it was built at
     while iterations < max_iterations and size and np.max(np.abs(grad)) > tol:
+        if PRECONDITION and iterations - built >= REFRESH:
+            factor, built = _preconditioner(problem, grad), iterations
         step = -grad
         ratios = []
         for s, y, rho in reversed(memory):  # the two-loop recursion (Nocedal and Wright, Algorithm 7.4)
             ratios.append(rho * (s @ step))
             step -= ratios[-1] * y
-        if memory:
+        if factor is not None:
+            step = factor(step)  # the initial inverse Hessian: the stiffness matrix's
+        elif memory:
             s, y, rho = memory[-1]
             step *= 1.0 / (rho * (y @ y))  # the initial inverse Hessian s.y / y.y
         for (s, y, rho), a in zip(memory, reversed(ratios), strict=True):
             step += (a - rho * (y @ step)) * s
         step = problem.project(step)
-        if not step @ grad < 0.0:  # not downhill (the loads are not quite a gradient): forget the pairs
+        if not step @ grad < 0.0:  # not downhill (a preconditioner or pairs from before a minimum came or went)
             memory.clear()
             step = -grad
         largest = np.max(np.abs(step))
@@ -274,9 +325,9 @@ def _descent(problem, tol, max_iterations):
             if memory:
                 memory.clear()  # try the gradient
                 continue
-            # Neither a lower energy nor a lower residual along the gradient: the loads are not the energy's gradient
-            # here (module notes).  Follow them by a step of the smallest inverse curvature met (overdamped motion,
-            # stable on the stiffest curvature), for at most FORCED steps in a row.
+            # Neither a lower energy nor a lower residual along the gradient (rounding, or a minimum found or missed
+            # next to a fold: module notes).  Follow the loads by a step of the smallest inverse curvature met
+            # (overdamped motion, stable on the stiffest curvature), for at most FORCED steps in a row.
             forced += 1
             if gamma is None or forced > FORCED:
                 break
@@ -322,17 +373,13 @@ def _newton(problem, tol, max_iterations):
             matrix = problem.stiffness(grad)
             symmetric = (0.5 * (matrix + matrix.T)).tocsc()
         shift = sparse.identity(size) / tau
-        try:
-            factor = splu((symmetric + shift).tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
-                          options={"SymmetricMode": True})  # fmt: skip
-        except RuntimeError:  # a pivot exactly zero: not positive definite either
-            factor = None
-        if factor is None or not np.all(factor.U.diagonal() > 0.0):
+        factor = _positive_factor(symmetric + shift)
+        if factor is None:
             tau *= 0.25
             continue
         step = factor.solve(-grad)
-        if tau >= NEWTON:  # near the solution, the step of the matrix itself (the loads of the Hertz law of the
-            try:  # curvatures, and of a contact's share by a fold, are not quite a gradient): Newton's, quadratic
+        if tau >= NEWTON:  # near the solution, the step of the matrix itself (symmetric but for its finite
+            try:  # differences): Newton's, quadratic
                 step = splu((matrix + shift).tocsc()).solve(-grad)
             except RuntimeError:  # a singular factor: keep the symmetric step
                 pass

@@ -42,13 +42,16 @@ def test_equilibrium_names_a_bad_tolerance():
         Rings.chain(3, RING).equilibrium(force_tol=-1.0)
 
 
+@pytest.mark.parametrize("precondition", [True, False], ids=["preconditioned", "plain"])
 @pytest.mark.parametrize("build", [lambda: Rings.chain(6, RING), lambda: Rings.mail(2, 3, RING)], ids=["chain", "mail"])
-def test_the_first_order_phase_alone_reaches_the_static_state(build, monkeypatch):
+def test_the_first_order_phase_alone_reaches_the_static_state(build, precondition, monkeypatch):
     from ringchain.numerics.layouts import rings_static
 
-    # The first phase (L-BFGS on the energy) handing over only at the tolerance itself: Newton's method runs only
-    # if it stops short, so the phases must all be descents and the state found theirs.
+    # The first phase (L-BFGS on the energy, its initial inverse Hessian the stiffness matrix or s.y / y.y) handing
+    # over only at the tolerance itself: Newton's method runs only if it stops short, so the phases must all be
+    # descents and the state found theirs.
     monkeypatch.setattr(rings_static, "HANDOVER", 0.0)
+    monkeypatch.setattr(rings_static, "PRECONDITION", precondition)
     network, tol = build(), 1e-8
     centres, orientations, phases = rings_static.static_state(network, force_tol=tol)
     assert [phase["phase"] for phase in phases] == ["descent"] * len(rings_static.SOFTENING)
@@ -68,3 +71,60 @@ def test_the_phases_are_recorded():
         assert phase["memory"] is None  # tracemalloc is not tracing
     assert phases[-1]["softening"] == 1.0 and phases[-1]["residual"] <= tol
     assert_static(chain.moved(centres, orientations), tol)
+
+
+def _quaternion(rotation):
+    """(w, x, y, z) of a SciPy rotation (which stores x, y, z, w)."""
+    x, y, z, w = rotation.as_quat()
+    return np.array([w, x, y, z])
+
+
+@pytest.mark.parametrize(
+    "law, below, pull",
+    [("power-law", 2.0, 1e-5), ("power-law", 2.0, 3e-5), ("hertz", 2.0, 3e-5), ("hertz", -10.0, 3e-5)],
+)
+def test_the_loads_are_the_gradient_of_the_energy(law, below, pull):
+    """Central differences of the energy of Rings.potential against its forces and torques: at twin contacts whose
+    maximum between them is in overlap (``below`` theta_min by 2 degrees; the shares of rings_kernels.fold_weights
+    depend on the pose) with the power law (a constant K: the shares are the only stiffness that changes with the
+    pose) and with Hertz's law (K_c of the curvatures at each contact changes with the pose too), and with Hertz's
+    law at one contact 10 degrees above theta_min."""
+    from ringchain.numerics.contact.tori import torus_contacts
+    from ringchain.theory import minimum_contact_angle
+    from scipy.spatial.transform import Rotation
+
+    R, r = RING.R, RING.r
+    upright = Rotation.from_rotvec([-np.pi / 2, 0.0, 0.0])  # the ring's axis along y: it stands in the xz plane
+    theta = float(minimum_contact_angle(R, r)) - np.radians(below)
+    turn = Rotation.from_rotvec([0.0, 0.0, theta])
+    tilt = Rotation.from_rotvec(0.002 * np.array([0.2, 0.1, 1.0]) / np.linalg.norm([0.2, 0.1, 1.0]))
+    rotation = tilt * upright  # ring 0 off the symmetric pose, ring 1 crossing it at theta, pulled apart by `pull`
+    centres = np.array([[1e-5, -2e-5, 0.0], [0.0, 0.0, 2 * (R - r) + pull]])
+    orientations = np.array([_quaternion(rotation), _quaternion(turn * upright)])
+    right = np.array([_quaternion(upright), _quaternion(Rotation.from_rotvec([0.0, 0.0, np.pi / 2]) * upright)])
+    pair = Rings.from_rings(centres, right, RING, law=law, fixed=[1])  # built at 90 degrees, posed at theta
+    contacts = torus_contacts(centres[0], orientations[0], RING, centres[1], orientations[1], RING)
+    assert len(contacts) == (2 if below > 0.0 else 1)
+    energy, forces, torques = pair.potential(centres, orientations)
+    if law == "power-law":  # the shares are at work: the energy is below the full energy of both contacts by 1 %
+        K, n = pair.stiffness[0], pair.exponent[0]
+        assert energy < 0.99 * np.sum(K * (-contacts.gap) ** (n + 1) / (n + 1))
+
+    def potential(centre, turned):
+        moved_c, moved_q = centres.copy(), orientations.copy()
+        moved_c[0], moved_q[0] = centre, _quaternion(turned)
+        return pair.potential(moved_c, moved_q)[0]
+
+    # Steps (m, rad): truncation (step / approach)^2 ~ 1e-9 (approaches of 1e-5 m), rounding of the energy (1e-18 J
+    # of some 1e-3 J) over the step ~ 1e-9 N against forces of 1e2-1e4 N.
+    step, angle = 1e-9, 1e-7
+    scale = np.abs(forces[0]).max()
+    for axis in np.eye(3):
+        push = (potential(centres[0] + step * axis, rotation) - potential(centres[0] - step * axis, rotation)) / step
+        twist = potential(centres[0], Rotation.from_rotvec(angle * axis) * rotation)
+        twist = (twist - potential(centres[0], Rotation.from_rotvec(-angle * axis) * rotation)) / angle
+        # 1e-6 of the largest force (torques of it times R): a thousand times the differences' error; without the
+        # derivatives of the shares and of K_c the loads missed them by 6-30 per cent at the twin contacts, and by
+        # 1e-3 of the largest torque (the twist about z) at the single Hertz contact.
+        assert -0.5 * push == pytest.approx(forces[0] @ axis, rel=0, abs=1e-6 * scale)
+        assert -0.5 * twist == pytest.approx(torques[0] @ axis, rel=0, abs=1e-6 * scale * R)
