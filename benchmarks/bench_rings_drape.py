@@ -50,10 +50,13 @@ stalls at 2.6e-4 m g (a contact barely closed makes its model fail for steps lon
 
 What is left.  The contact search (:func:`~ringchain.numerics.engine.rings_kernels.pair_contacts`) must not miss
 a twin minimum that lies within one scan spacing of its maximum while its twin lies beyond it: the check for an
-inflection next to a minimum found could look out to about 1.5 h, and the finer look span 3 h, before the 30 x 30
-sheet is measured again (the descent, which lowers the energy, finds such misses by itself).  Then: carry the
-preconditioner from stage to stage, and rebuild it less often on large sheets (each build costs six evaluations
-per colour of the rings, some 100 on the 30 x 30 sheet).
+inflection next to a minimum found could look out to about 2 h, and the finer look span 3 h, before the 30 x 30
+sheet is measured again (the descent, which lowers the energy, finds such misses by itself).  Tried, not kept: with
+those two changes the stuck pair's search finds both minima, but the finer look then also runs where the coarse scan
+already separates the twins (1.2 degrees below theta_min, where the two gaps then differ by 1.2e-17 m, over the
+1e-17 m of test_tori), and its cost in the dynamics and its effect on the 30 x 30 drape were not measured.
+Then: carry the preconditioner from stage to stage, and rebuild it less often on large sheets (each build costs six
+evaluations per colour of the rings, some 100 on the 30 x 30 sheet).
 
 Run: ``python benchmarks/bench_rings_drape.py [--rows 30] [--cols 30] [--tol 1e-6] [--iterations 30]
 [--save pose.npz] [--untraced]``.
