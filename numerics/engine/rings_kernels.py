@@ -77,6 +77,7 @@ import math
 
 import numba
 import numpy as np
+from ringchain.theory.elliptical import TABLE_MAX_LOG_RATIO
 
 from ._compiled import CACHE
 
@@ -114,7 +115,7 @@ N_SCAN = 64
 #: Parameters of a contact law (a row): kind (0 the Hertz stiffness of the curvatures, 1 a given K),
 #: K (N/m^n, kind 1), n (kind 1), gamma (N s/m), mu, v_reg (m/s), E* (Pa, kind 0).  A row may carry an eighth
 #: number, the largest ln(B/A) of the Hertz ellipse (kind 0; see :func:`hertz_stiffness_curvatures`); without
-#: it the ellipse is capped at the table's end, ln(B/A) = 690.
+#: it the ellipse is capped at the table's end (:data:`ringchain.theory.elliptical.TABLE_MAX_LOG_RATIO`).
 LAW_PARAMETERS = 7
 
 _previous_cache_dir = numba.config.CACHE_DIR
@@ -513,6 +514,12 @@ def pairs_contacts(centres, orientations, R, r, pairs, n_scan, mode, iterations,
 
 # -- minima next to a maximum in overlap ---------------------------------------------------------------------------
 @_jit(inline="always")
+def _ellipse_cap(law):
+    """The largest ln(B/A) of a Hertz law row (:data:`LAW_PARAMETERS`): its eighth number, else the table's end."""
+    return law[7] if law.size > 7 else TABLE_MAX_LOG_RATIO
+
+
+@_jit(inline="always")
 def _share(P_a, P_b, D):
     """(x, dx/dP_a, dx/dP_b, dx/dD) of the share x = 1 - D / (D + P_a) * P_b / (P_a + P_b) of :func:`fold_weights`
     (P_a + P_b > 0)."""
@@ -690,7 +697,7 @@ def stiffness_slopes(row, c1, q1, R1, c2, q2, R2, law, table, step, out):
     M2 = np.empty((3, 3))
     rotation_matrix(q1, M1)
     rotation_matrix(q2, M2)
-    cap = law[7] if law.size > 7 else 690.0
+    cap = _ellipse_cap(law)
     k1a, k1b, k2a, k2b, cosine = row[9], row[10], row[11], row[12], row[13]
     K = hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, cosine, law[6], cap, table, step)
     partials = np.empty(3)  # d ln K over k1a, k2a, the cosine
@@ -785,7 +792,7 @@ def contact_force(row, c1, v1, w1, c2, v2, w2, law, table, step, force, torque_1
     if not delta > 0.0:
         return 0.0, 0.0, 0.0, 0.0
     if law[0] == 0.0:
-        cap = law[7] if law.size > 7 else 690.0
+        cap = _ellipse_cap(law)
         K = hertz_stiffness_curvatures(row[9], row[10], row[11], row[12], row[13], law[6], cap, table, step)
         n = 1.5
     else:
