@@ -312,7 +312,9 @@ def contact_state(m, xs, us, warm, out):
             for slot in range(CONTACTS):
                 for c in range(12):
                     out[k_t, k, slot, c] = 0.0
-            _pair(m, k, x, u, R, warm, load, out[k_t, k], rows, vec, law, True, fold)
+            # search: always; k >= 0 is True typed as a plain bool, as the dopri5 loop's flag, so that _pair
+            # compiles once for both (a literal True is a type of its own: a second compile of _pair, ~10 s)
+            _pair(m, k, x, u, R, warm, load, out[k_t, k], rows, vec, law, k >= 0, fold)
 
 
 # -- velocity Verlet with the free rotor -------------------------------------------------------------------------

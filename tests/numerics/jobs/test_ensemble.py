@@ -334,9 +334,11 @@ def test_command_line_errors_are_one_line(capsys, tmp_path, monkeypatch, extra, 
 def test_the_same_ensemble_on_a_dask_cluster(reference):
     from distributed import Client, LocalCluster
 
-    # ":0": a free port for the HTTP server (8787, the default, clashes with another test's cluster)
+    # ":0": a free port for the HTTP server (8787, the default, clashes with another test's cluster).  One worker
+    # process: the results travel through Dask as with many (that they do not depend on the number of workers
+    # is test_results_do_not_depend_on_the_executor_nor_the_workers); each worker costs ~5 s of CPU to start.
     with (
-        LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0") as cluster,
+        LocalCluster(n_workers=1, threads_per_worker=1, processes=True, dashboard_address=":0") as cluster,
         Client(cluster) as client,
     ):
         dask = ensemble(RING, 10, 6, spread=SPREAD, seed=9, batch_size=2, executor=client.get_executor(), **SMALL)
