@@ -41,6 +41,10 @@ from pathlib import Path
 BOOK = Path(__file__).resolve().parent
 WIDTHS = (1280, 390)  # px: a desktop window and a phone
 VIEWPORT_HEIGHT = 900  # px
+#: Pages whose window (its first VIEWPORT_HEIGHT px, as a reader sees the page on opening it) every check also
+#: captures, into ``out/windows``: the top of their full-page screenshots should show the same (tests/book compares
+#: them; Chromium's own full-page capture once showed most pages scrolled sideways).
+WINDOW_PAGES = ("index", "contact", "fitting")
 MAX_SCREENSHOT_HEIGHT = 30000  # px: Chromium's limit for one capture is larger; a page is far shorter
 
 CHROMIUM_FLAGS = [
@@ -130,8 +134,7 @@ async def _full_page(tools: _DevTools, width: int) -> bytes:
     return base64.b64decode(shot["data"])
 
 
-async def _inspect(port: int, pages: list[str], out: Path, timeout: float, windows: Path | None,
-                   width: int) -> list[dict]:  # fmt: skip
+async def _inspect(port: int, pages: list[str], out: Path, timeout: float, width: int) -> list[dict]:
     """Every page at one window width, in a browser of its own."""
     from tornado.websocket import websocket_connect
 
@@ -170,9 +173,9 @@ async def _inspect(port: int, pages: list[str], out: Path, timeout: float, windo
                 raise RuntimeError(f"{page}: the check script failed: {result['exceptionDetails']}")
             for kind, where, detail in json.loads(result["result"]["value"]):
                 findings.append({"page": page, "width": width, "kind": kind, "where": where, "detail": detail})
-            if windows is not None:  # what the window shows, for comparison with the top of the full page
+            if page in WINDOW_PAGES:  # what the window shows, for comparison with the top of the full page
                 shot = await tools.call("Page.captureScreenshot", format="png")
-                (windows / f"{page}-{width}.png").write_bytes(base64.b64decode(shot["data"]))
+                (out / "windows" / f"{page}-{width}.png").write_bytes(base64.b64decode(shot["data"]))
             (out / f"{page}-{width}.png").write_bytes(await _full_page(tools, width))
         tools.connection.close()
         await asyncio.wait_for(tools.connection.read_message(), 10)  # None once the socket is closed
@@ -186,20 +189,16 @@ async def _inspect(port: int, pages: list[str], out: Path, timeout: float, windo
     return findings
 
 
-async def _every_width(port: int, pages: list[str], out: Path, timeout: float, windows: Path | None) -> list[dict]:
+async def _every_width(port: int, pages: list[str], out: Path, timeout: float) -> list[dict]:
     """The widths side by side, one browser each (the check is the build's last serial step: two browsers
     halve its wall time on two cores); the findings in the order of :data:`WIDTHS`, then of ``pages``."""
-    found = await asyncio.gather(*(_inspect(port, pages, out, timeout, windows, width) for width in WIDTHS))
+    found = await asyncio.gather(*(_inspect(port, pages, out, timeout, width) for width in WIDTHS))
     return [finding for per_width in found for finding in per_width]
 
 
-def check(site: Path, out: Path, pages: list[str] | None = None, timeout: float = 120.0, *,
-          windows: Path | None = None) -> list[dict]:  # fmt: skip
-    """Screenshots of ``pages`` (default: every page of the site) at both widths into ``out``, and the findings.
-
-    ``windows``: a folder for a second capture of each page, of the window alone (its first 900 px), as
-    the reader sees the page on opening it; the top of each full-page screenshot should show the same.
-    """
+def check(site: Path, out: Path, pages: list[str] | None = None, timeout: float = 120.0) -> list[dict]:
+    """Screenshots of ``pages`` (default: every page of the site) at both widths into ``out``, and the findings;
+    of the pages of :data:`WINDOW_PAGES` among them, a second capture of the window alone into ``out/windows``."""
     if chromium() is None:
         raise FileNotFoundError("no chromium on PATH (apt-get install chromium)")
     site, out = Path(site).resolve(), Path(out)
@@ -210,9 +209,8 @@ def check(site: Path, out: Path, pages: list[str] | None = None, timeout: float 
     thread = threading.Thread(target=server.serve_forever, daemon=True)
     thread.start()
     try:
-        if windows is not None:
-            Path(windows).mkdir(parents=True, exist_ok=True)
-        findings = asyncio.run(_every_width(server.server_address[1], pages, out, timeout, windows and Path(windows)))
+        (out / "windows").mkdir(exist_ok=True)
+        findings = asyncio.run(_every_width(server.server_address[1], pages, out, timeout))
     finally:
         server.shutdown()
         server.server_close()
