@@ -163,12 +163,18 @@ def simulate_parameter_sets(chains, speeds, dropped, t_grid, rings, *, rtol=FIT_
               for (chain, r), speed in zip(runs, speeds.ravel(), strict=True)]  # fmt: skip
     x0 = np.concatenate([x for x, _ in states])
     u0 = np.concatenate([u for _, u in states])
-    batch = simulate_batch(Network.stack([chain.network() for chain, _ in runs]), t_grid[-1], initial=(x0, u0),
-                           shared_steps=True, **options)  # fmt: skip
-    for b, (chain, r) in enumerate(runs):
-        sim = Simulation(t=t_grid, x=batch.x[b], u=batch.u[b], dissipated=batch.dissipated[b], g=batch.g, chain=chain,
-                         impact_velocity=float(speeds.flat[b]))  # fmt: skip
-        out[r][b // R] = sim.sensor_force[:, list(rings[r])].T
+    # Only the sites the sensors read are recorded, and every run's sensors are read in one pass over the batch:
+    # the stacked network gives each run its own laws, and the chains share their sensors' links (one layout).
+    sensors = sorted({int(k) for ks in rings for k in ks})
+    layout = chains[0]
+    network = Network.stack([chain.network() for chain, _ in runs])
+    recorded = sorted({int(k) for k in network.rings[layout.recorded_sites(sensors)]})
+    batch = simulate_batch(network, t_grid[-1], initial=(x0, u0), shared_steps=True, rings=recorded, **options)
+    sim = Simulation(t=t_grid, x=batch.x, u=batch.u, dissipated=batch.dissipated, g=batch.g, network=batch.network,
+                     sites=batch.sites, chain=layout, rings=tuple(sensors))  # fmt: skip
+    forces = {k: sim.sensor(k) for k in sensors}  # (P x R, T) each, run b = p R + r
+    for r, ks in enumerate(rings):
+        out[r][:] = np.stack([forces[k][r::R] for k in ks], axis=1)
     return out
 
 
