@@ -155,8 +155,8 @@ def simulate_parameter_sets(chains, speeds, dropped, t_grid, rings, *, rtol=FIT_
         for p, chain in enumerate(chains):
             for r in range(R):
                 x, u = chain.impact_state(np.array([speeds[p, r]]), dropped[r], gravity, g)
-                sim = simulate(chain, t_grid[-1], initial=(x, u), **options)
-                out[r][p] = sim.sensor_force[:, list(rings[r])].T
+                sim = simulate(chain, t_grid[-1], initial=(x, u), rings=rings[r], **options)
+                out[r][p] = [sim.sensor(k) for k in rings[r]]
         return out
     runs = [(chain, r) for chain in chains for r in range(R)]
     states = [chain.impact_state(np.array([speed]), dropped[r], gravity, g)

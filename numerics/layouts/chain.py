@@ -138,7 +138,9 @@ def _per_distinct(evaluate, keys, what: str, many=None) -> np.ndarray:
     """``evaluate(*key)`` for each key, once per distinct key (scalar calls: a uniform chain gets its single ring's
     numbers exactly); an error names the first ``what`` (formatted with i, j).  ``many(distinct keys)``, given,
     evaluates several distinct keys in one call, one row each (a disordered chain's rings cost one call, not one
-    each; only where the call gives each key's scalar numbers exactly); an error there is looked for key by key."""
+    each; only where the call gives each key's scalar numbers, to the last bit at most: the contacts at spread angles
+    differ there in about one in 2000, tests/numerics/layouts/test_hetero.py); an error there is looked for key by
+    key."""
     distinct = list(dict.fromkeys(keys))
     if many is not None and len(distinct) > 1:
         try:
@@ -164,6 +166,29 @@ def _rings_K_b(distinct) -> np.ndarray:
     columns = (np.array([read(q) for q in rings]) for read in (lambda q: q.R, lambda q: q.r, lambda q: q.material.E,
                                                                 lambda q: q.material.nu))  # fmt: skip
     return bending_stiffness(*columns, thin=thin)
+
+
+def _pair_K_c(below, above, angle) -> float:
+    """K_c of the contact of two rings (Ring) at ``angle`` (rad), N/m^1.5 (Eq. 1, App. A), one scalar call."""
+    return float(hertz_stiffness_pair(below.R, below.r, below.material.E, below.material.nu, above.R, above.r,
+                                      above.material.E, above.material.nu, angle))  # fmt: skip
+
+
+def _contacts_K_c(distinct) -> np.ndarray:
+    """K_c of distinct (below, above, angle) keys: the pairs of two different rings in one call (the theory's
+    lambdified functions take arrays), a pair of identical rings (the support's contact) by itself, as a uniform
+    chain's is (hertz_stiffness takes it, whose scalar and array evaluations may differ in the last bit)."""
+    out = np.empty(len(distinct))
+    different = [k for k, (below, above, _) in enumerate(distinct) if below is not above and below != above]
+    for k in sorted(set(range(len(distinct))) - set(different)):
+        out[k] = _pair_K_c(*distinct[k])
+    if different:
+        below = [distinct[k][0] for k in different]
+        above = [distinct[k][1] for k in different]
+        columns = [np.array([read(q) for q in side]) for side in (below, above) for read in (
+            lambda q: q.R, lambda q: q.r, lambda q: q.material.E, lambda q: q.material.nu)]  # fmt: skip
+        out[different] = hertz_stiffness_pair(*columns, np.array([distinct[k][2] for k in different]))
+    return out
 
 
 def _fits(distinct) -> np.ndarray:
@@ -514,13 +539,9 @@ class Chain:
             raise ValueError(f"angles must be one angle or {len(pairs)} (one per contact), got shape {angles.shape}")
         angles = np.broadcast_to(angles, (len(pairs),))
         # One evaluation per distinct contact (a uniform chain's numbers are then the ring's own).
-        K_c = _per_distinct(
-            lambda below, above, angle: float(hertz_stiffness_pair(
-                below.R, below.r, below.material.E, below.material.nu,
-                above.R, above.r, above.material.E, above.material.nu, angle)),
-            [(below, above, float(angle)) for (below, above), angle in zip(pairs, angles, strict=True)],
-            "contact of rings {i} and {j}",
-        )  # fmt: skip
+        K_c = _per_distinct(_pair_K_c, [(below, above, float(angle)) for (below, above), angle in
+                                        zip(pairs, angles, strict=True)], "contact of rings {i} and {j}",
+                            _contacts_K_c)  # fmt: skip
         K_b = _per_distinct(lambda ring: ring.K_b, [(ring,) for ring in rings], "ring {i}", _rings_K_b)
         m0 = np.array([ring.mass for ring in rings])
         a = np.array([(below.R - below.r) + (above.R - above.r) for below, above in pairs[: n_rings - 1]])
