@@ -253,6 +253,8 @@ class _TraceProblem:
         self.n_runs = 0
         self.n_batches = 0
         self._last = None
+        self._run = None  # (what a forward run depends on, its splines): the last single run
+        self._chains = {}  # {values of the free chain parameters: Chain}
         self.suffix = [""] if len(records) == 1 else [f"_{i}" for i in range(len(records))]
         # Grid of the forward runs: the finest measured sampling (median step).
         self.dt_grid = min(float(np.median(np.diff(rec.t))) for rec in records)
@@ -299,8 +301,13 @@ class _TraceProblem:
         return math.sqrt(m * k)
 
     def chain_at(self, values):
-        return dataclasses.replace(self.chain, **{k: values[k] * self.profiles[k] if k in self.profiles else values[k]
-                                                  for k in self.chain_free})  # fmt: skip
+        """The chain at ``values``, made once per set of values (a Jacobian's base point is the residual's last one,
+        and a chain builds its network once)."""
+        key = tuple(values[k] for k in self.chain_free)
+        if key not in self._chains:
+            fields = {k: values[k] * self.profiles[k] if k in self.profiles else values[k] for k in self.chain_free}
+            self._chains[key] = dataclasses.replace(self.chain, **fields)
+        return self._chains[key]
 
     def speeds_at(self, values):
         """Impact speed of each record, m/s: its free v0, sqrt(2 g (h + h0)), or as given."""
@@ -350,11 +357,16 @@ class _TraceProblem:
         return out
 
     def fitted(self, values):
-        """Model of each record (C, T) at ``values`` (one forward run; the last one is cached)."""
+        """Model of each record (C, T) at ``values`` (one forward run; the last one is cached, and its run serves
+        values that differ in the DC offsets only, which do not enter it: the start after :func:`_align`)."""
         key = tuple(sorted(values.items()))
         if self._last is None or self._last[0] != key:
             t0s = self.t0s(values)
-            self._last = key, [m[0] for m in self.model(self.simulate([values], t0s), values, t0s)]
+            run = (tuple(values[name] for name in self.chain_free), tuple(self.speeds_at(values).tolist()),
+                   tuple(t0s))  # fmt: skip
+            if self._run is None or self._run[0] != run:
+                self._run = run, self.simulate([values], t0s)
+            self._last = key, [m[0] for m in self.model(self._run[1], values, t0s)]
         return self._last[1]
 
     # -- lmfit callbacks -------------------------------------------------------------------------------
