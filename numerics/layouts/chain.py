@@ -141,22 +141,25 @@ def _per_distinct(evaluate, keys, what: str, many=None) -> np.ndarray:
     each; only where the call gives each key's scalar numbers, to the last bit at most: the contacts at spread angles
     differ there in about one in 2000, tests/numerics/layouts/test_hetero.py); an error there is looked for key by
     key."""
-    distinct = list(dict.fromkeys(keys))
+    ids: dict = {}  # each key hashed once (a key of rings hashes each ring's fields)
+    index = [ids.setdefault(key, len(ids)) for key in keys]
+    distinct = list(ids)
     if many is not None and len(distinct) > 1:
         try:
-            values = dict(zip(distinct, np.asarray(many(distinct), dtype=float), strict=True))
-            return np.array([values[key] for key in keys])
+            rows = np.asarray(many(distinct), dtype=float)
+            if rows.shape[0] != len(distinct):
+                raise ValueError(f"{len(rows)} rows for {len(distinct)} keys")
+            return rows[index]
         except ValueError:
             pass  # found and named below
-    values, results = {}, []
-    for i, key in enumerate(keys):
-        if key not in values:
+    values = [None] * len(distinct)
+    for i, k in enumerate(index):
+        if values[k] is None:
             try:
-                values[key] = evaluate(*key)
+                values[k] = evaluate(*distinct[k])
             except ValueError as error:
                 raise ValueError(f"{what.format(i=i, j=i + 1)}: {error}") from None
-        results.append(values[key])
-    return np.array(results, dtype=float)
+    return np.array([values[k] for k in index], dtype=float)
 
 
 def _rings_K_b(distinct) -> np.ndarray:
