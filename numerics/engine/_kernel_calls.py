@@ -83,11 +83,12 @@ def verlet_arrays(x0, u0, t_eval, t_end, dt, keep):
 
 def fingerprint(value):
     """What Numba's type of ``value`` depends on, read without Numba (a tuple, hashable), or None where it cannot
-    tell: an array's dtype, dimensions, layout (C, F or any), whether it is writable and aligned; a tuple's type and
-    its items'; the type of a float or a bool; an int's type and whether it fits in int64."""
+    tell: an array's class, dtype, dimensions, layout (C, F or any), whether it is writable and aligned; a tuple's
+    type and its items'; the type of a float or a bool; an int's type and whether it fits in int64."""
     if isinstance(value, np.ndarray):
         flags = value.flags
-        return (value.dtype.str, value.ndim, flags.c_contiguous, flags.f_contiguous, flags.writeable, flags.aligned)
+        return (type(value), value.dtype, value.ndim, flags.c_contiguous, flags.f_contiguous, flags.writeable,
+                flags.aligned)  # fmt: skip
     if isinstance(value, tuple):
         items = tuple(fingerprint(item) for item in value)
         return None if None in items else (type(value), items)

@@ -401,9 +401,11 @@ def test_a_fingerprint_tells_apart_what_numba_types_apart():
     frozen.flags.writeable = False
     grid = np.zeros((4, 6))
     chains = [Chain.power_law(3, 1e6, 1.5, 0.01, 0.04), Chain.dual_spring(3, 7.5e9, 3.3e6, 8.2e-3, 0.04, 1.0)]
+    records = [np.zeros(2, dtype=[(name, kind), ("b", "<f8")]) for name, kind in (("a", "<f8"), ("x", "<i8"))]
     values = [np.zeros(3), np.ones(5), np.zeros(3, dtype=np.int64), frozen, grid, grid.T, grid[:, ::2], grid[::2],
               np.zeros((0, 2)), np.zeros(4, dtype=np.float32), 1.0, 2.5, 3, 2**62, 2**63, True, False, np.float64(1.0),
-              np.int64(3), (np.zeros(2), 1.0), (np.zeros(2), 1), *[pack(c.network()) for c in chains]]  # fmt: skip
+              np.int64(3), (np.zeros(2), 1.0), (np.zeros(2), 1), *[pack(c.network()) for c in chains],
+              *records]  # fmt: skip
     for a in values:
         for b in values:
             if fingerprint(a) == fingerprint(b):
