@@ -18,11 +18,13 @@ rest per-run Python.  What changed: the notice's check of the kernel's compiled 
 argument in Numba each call (10 ms a call: ``_kernel_calls.fingerprint``); the forward model records only the
 sensors' sites and reads every run's sensors in one pass over the batch; a run serves values that differ in the DC
 offsets only (one run fewer: 31 runs in 17 calls); each set of chain values makes its chain once.  The fitted
-values, standard errors and residuals are byte-identical.  One session, load average 4.7-5.0 on 2 cores shared
-with other jobs (before: the commit this work started from): the fit 1.08 -> 0.77 s wall; one Jacobian of 3 runs
-0.076 -> 0.033 s, of 5 runs 0.115 -> 0.049 s; CPU time of a fit (mean of 5, instrumented) 0.53 -> 0.38-0.41 s, of
-which the integrator 0.17-0.20 s (about half; it was about 0.23 s of 0.53 s).  Issue 30's 0.15 s (quiet) is not
-reached: the integrator's own time is now most of a fit, and fewer or cheaper runs change the fit's numbers.
+values, standard errors and residuals are byte-identical.  Two sessions, load average 4.5-5.0 on 2 cores shared
+with other jobs (before: the commit this work started from, the same script): the fit (batched) 1.09 -> 0.63 s wall
+and 0.55 -> 0.33 s CPU (0.60x), 1.08 -> 0.77 s wall in the other session; one run at a time 0.98 -> 0.71 s wall,
+0.53 -> 0.40 s CPU; one Jacobian of 3 runs 0.057 -> 0.052 s (0.076 -> 0.033 s in the other session), of 5 runs
+0.081 -> 0.074 s (0.115 -> 0.049 s).  Of a fit's CPU time the integrator is now about half (0.17-0.20 s,
+instrumented; it was about 0.23 s of 0.53 s).  Issue 30's 0.15 s (quiet) is not shown here, and likely not reached:
+the integrator's own time is now most of a fit, and fewer or cheaper runs change the fit's numbers.
 
 Run: ``python benchmarks/bench_fit.py [--model power-law] [--repeat 3]``.
 """
