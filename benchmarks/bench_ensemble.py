@@ -20,6 +20,18 @@ The integrator is :func:`~ringchain.numerics.simulate_batch`'s default unless ``
 otherwise; every timing is the best of ``--repeat`` (default 1: the runs are long); the load
 average is printed, since the machine is shared.
 
+Measured (issue 30).  Before: 9.6-11.4 s at load 3.8-4.9 (5.8-9.4 s quiet, earlier), bound by Python making the
+chains (a Ring made and checked per drawn ring, a scalar K_c call per contact) and then the kernels.  What changed:
+the drawn rings are checked together (``draw_rings``: hertz_stiffness and bending_stiffness on arrays; 90 % of a
+draw), a chain's contacts of different rings are one ``hertz_stiffness_pair`` call (``Chain.from_rings``; 40 calls
+a chain before), each distinct key hashed once.  The ensemble's CSV (members and summary) is byte-identical.  Two
+sessions at load average 4.9-7.0 on 2 cores shared with other jobs, ``--quick`` (before: the commit this work
+started from, the same script): in this process 11.35 -> 8.48 s CPU (10.18 -> 9.02 s in the other session), of
+which Python on one core 4.42 -> 1.83 s (3.77 -> 2.09 s) and the kernels' threads 6.93 -> 6.65 s (6.41 -> 6.93 s:
+the same work, moved by the load); wall 22.4 -> 17.3 s in this process, 35.6 -> 26.6 s on 2 workers (starting them:
+10-11 s at that load).  The kernels' 6-7 s of CPU, over two threads, is most of what is
+left: on a quiet machine that is 3 s or more of wall before any Python, and issue 30's 5 s is not shown here.
+
 Run: ``python benchmarks/bench_ensemble.py [--model power-law] [--workers 2] [--method odeint] [--quick]``.
 """
 

@@ -31,6 +31,9 @@ COMPILE_SECONDS = {"dopri5": 16.0, "verlet": 8.0}
 
 _announced: set = set()
 
+#: (dispatcher, :func:`fingerprint` of a call's arguments) of the calls whose kernel was found loaded.
+_ready: set = set()
+
 
 def threads() -> int:
     """Threads the kernels may use: Numba's setting (the cores, or ``NUMBA_NUM_THREADS``)."""
@@ -76,6 +79,24 @@ def verlet_arrays(x0, u0, t_eval, t_end, dt, keep):
     out_x, out_u = np.empty((B, T, K)), np.empty((B, T, K))
     status, final_x, final_u = np.zeros(B, dtype=np.int64), np.empty_like(x0), np.empty_like(u0)
     return x0, u0, n_steps, t_end / n_steps, out_x, out_u, status, final_x, final_u
+
+
+def fingerprint(value):
+    """What Numba's type of ``value`` depends on, read without Numba (a tuple, hashable), or None where it cannot
+    tell: an array's class, dtype, dimensions, layout (C, F or any), whether it is writable and aligned; a tuple's
+    type and its items'; the type of a float or a bool; an int's type and whether it fits in int64."""
+    if isinstance(value, np.ndarray):
+        flags = value.flags
+        return (type(value), value.dtype, value.ndim, flags.c_contiguous, flags.f_contiguous, flags.writeable,
+                flags.aligned)  # fmt: skip
+    if isinstance(value, tuple):
+        items = tuple(fingerprint(item) for item in value)
+        return None if None in items else (type(value), items)
+    if isinstance(value, bool | float | np.bool_ | np.floating):
+        return type(value)
+    if isinstance(value, int | np.integer):
+        return type(value), -(2**63) <= int(value) < 2**63
+    return None
 
 
 def signature_of(args) -> tuple:
@@ -125,13 +146,22 @@ def compiled() -> int:
 
 def announce_compile(dispatcher, family: str, folder, args=None) -> None:
     """One line on stderr when ``dispatcher`` is about to be compiled for ``args`` (once per family, kind of
-    model and process: each packed type is compiled on its own)."""
+    model and process: each packed type is compiled on its own).
+
+    A call whose arguments have the :func:`fingerprint` of one already found loaded returns at once: Numba's
+    types of the arguments (:func:`signature_of`) cost some 10 ms a call of a chain's packed model, as much as a
+    short run (a trace fit makes some twenty)."""
+    ready = fingerprint(args)
+    if ready is not None and (dispatcher, ready) in _ready:
+        return
     key = (family, type(args[0]).__name__ if args else None)
     if key in _announced:
         return
     if not will_compile(dispatcher, args):
         if args is not None:
             load_cached(dispatcher, args)
+            if ready is not None:
+                _ready.add((dispatcher, ready))
         return
     _announced.add(key)
     where = f"cached in {folder}" if folder else "not cached: the cache folder is disabled or not writable"

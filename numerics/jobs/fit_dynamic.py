@@ -155,20 +155,26 @@ def simulate_parameter_sets(chains, speeds, dropped, t_grid, rings, *, rtol=FIT_
         for p, chain in enumerate(chains):
             for r in range(R):
                 x, u = chain.impact_state(np.array([speeds[p, r]]), dropped[r], gravity, g)
-                sim = simulate(chain, t_grid[-1], initial=(x, u), **options)
-                out[r][p] = sim.sensor_force[:, list(rings[r])].T
+                sim = simulate(chain, t_grid[-1], initial=(x, u), rings=rings[r], **options)
+                out[r][p] = [sim.sensor(k) for k in rings[r]]
         return out
     runs = [(chain, r) for chain in chains for r in range(R)]
     states = [chain.impact_state(np.array([speed]), dropped[r], gravity, g)
               for (chain, r), speed in zip(runs, speeds.ravel(), strict=True)]  # fmt: skip
     x0 = np.concatenate([x for x, _ in states])
     u0 = np.concatenate([u for _, u in states])
-    batch = simulate_batch(Network.stack([chain.network() for chain, _ in runs]), t_grid[-1], initial=(x0, u0),
-                           shared_steps=True, **options)  # fmt: skip
-    for b, (chain, r) in enumerate(runs):
-        sim = Simulation(t=t_grid, x=batch.x[b], u=batch.u[b], dissipated=batch.dissipated[b], g=batch.g, chain=chain,
-                         impact_velocity=float(speeds.flat[b]))  # fmt: skip
-        out[r][b // R] = sim.sensor_force[:, list(rings[r])].T
+    # Only the sites the sensors read are recorded, and every run's sensors are read in one pass over the batch:
+    # the stacked network gives each run its own laws, and the chains share their sensors' links (one layout).
+    sensors = sorted({int(k) for ks in rings for k in ks})
+    layout = chains[0]
+    network = Network.stack([chain.network() for chain, _ in runs])
+    recorded = sorted({int(k) for k in network.rings[layout.recorded_sites(sensors)]})
+    batch = simulate_batch(network, t_grid[-1], initial=(x0, u0), shared_steps=True, rings=recorded, **options)
+    sim = Simulation(t=t_grid, x=batch.x, u=batch.u, dissipated=batch.dissipated, g=batch.g, network=batch.network,
+                     sites=batch.sites, chain=layout, rings=tuple(sensors))  # fmt: skip
+    forces = {k: sim.sensor(k) for k in sensors}  # (P x R, T) each, run b = p R + r
+    for r, ks in enumerate(rings):
+        out[r][:] = np.stack([forces[k][r::R] for k in ks], axis=1)
     return out
 
 
@@ -247,6 +253,8 @@ class _TraceProblem:
         self.n_runs = 0
         self.n_batches = 0
         self._last = None
+        self._run = None  # (what a forward run depends on, its splines): the last single run
+        self._chains = {}  # {values of the free chain parameters: Chain}
         self.suffix = [""] if len(records) == 1 else [f"_{i}" for i in range(len(records))]
         # Grid of the forward runs: the finest measured sampling (median step).
         self.dt_grid = min(float(np.median(np.diff(rec.t))) for rec in records)
@@ -293,8 +301,13 @@ class _TraceProblem:
         return math.sqrt(m * k)
 
     def chain_at(self, values):
-        return dataclasses.replace(self.chain, **{k: values[k] * self.profiles[k] if k in self.profiles else values[k]
-                                                  for k in self.chain_free})  # fmt: skip
+        """The chain at ``values``, made once per set of values (a Jacobian's base point is the residual's last one,
+        and a chain builds its network once)."""
+        key = tuple(values[k] for k in self.chain_free)
+        if key not in self._chains:
+            fields = {k: values[k] * self.profiles[k] if k in self.profiles else values[k] for k in self.chain_free}
+            self._chains[key] = dataclasses.replace(self.chain, **fields)
+        return self._chains[key]
 
     def speeds_at(self, values):
         """Impact speed of each record, m/s: its free v0, sqrt(2 g (h + h0)), or as given."""
@@ -344,11 +357,16 @@ class _TraceProblem:
         return out
 
     def fitted(self, values):
-        """Model of each record (C, T) at ``values`` (one forward run; the last one is cached)."""
+        """Model of each record (C, T) at ``values`` (one forward run; the last one is cached, and its run serves
+        values that differ in the DC offsets only, which do not enter it: the start after :func:`_align`)."""
         key = tuple(sorted(values.items()))
         if self._last is None or self._last[0] != key:
             t0s = self.t0s(values)
-            self._last = key, [m[0] for m in self.model(self.simulate([values], t0s), values, t0s)]
+            run = (tuple(values[name] for name in self.chain_free), tuple(self.speeds_at(values).tolist()),
+                   tuple(t0s))  # fmt: skip
+            if self._run is None or self._run[0] != run:
+                self._run = run, self.simulate([values], t0s)
+            self._last = key, [m[0] for m in self.model(self._run[1], values, t0s)]
         return self._last[1]
 
     # -- lmfit callbacks -------------------------------------------------------------------------------

@@ -77,13 +77,14 @@ import functools
 from dataclasses import dataclass
 
 import numpy as np
-from ringchain.theory import STANDARD_GRAVITY, Ring, bending_stiffness, fit_power_law, hertz_stiffness_pair, linear
+from ringchain.theory import STANDARD_GRAVITY, Ring, fit_power_law, linear
 from ringchain.theory import _validate as v
 
 from ..engine.integrate import impact_speeds
 from ..engine.laws import LinearSpring, PowerLaw, Thornton
 from ..engine.network import ANCHOR, Links, Network
 from ..engine.results import BatchSimulation
+from ._ring_numbers import contacts_K_c, pair_K_c, per_distinct, power_law_fits, rings_K_b
 from .chain_kinds import GRADING_PROFILES, alternating_chain, graded_chain, joined_chain
 from .disorder import disordered_chain
 from .yielding import yielding_chain
@@ -132,44 +133,6 @@ def _parameter(name: str, value, length: int, check, unit: str, what: str):
         return float(array[0])
     array.flags.writeable = False
     return array
-
-
-def _per_distinct(evaluate, keys, what: str, many=None) -> np.ndarray:
-    """``evaluate(*key)`` for each key, once per distinct key (scalar calls: a uniform chain gets its single ring's
-    numbers exactly); an error names the first ``what`` (formatted with i, j).  ``many(distinct keys)``, given,
-    evaluates several distinct keys in one call, one row each (a disordered chain's rings cost one call, not one
-    each; only where the call gives each key's scalar numbers exactly); an error there is looked for key by key."""
-    distinct = list(dict.fromkeys(keys))
-    if many is not None and len(distinct) > 1:
-        try:
-            values = dict(zip(distinct, np.asarray(many(distinct), dtype=float), strict=True))
-            return np.array([values[key] for key in keys])
-        except ValueError:
-            pass  # found and named below
-    values, results = {}, []
-    for i, key in enumerate(keys):
-        if key not in values:
-            try:
-                values[key] = evaluate(*key)
-            except ValueError as error:
-                raise ValueError(f"{what.format(i=i, j=i + 1)}: {error}") from None
-        results.append(values[key])
-    return np.array(results, dtype=float)
-
-
-def _rings_K_b(distinct) -> np.ndarray:
-    """K_b (Eq. 2, :attr:`Ring.K_b`: elementwise arithmetic) of distinct (ring,) keys, in one call."""
-    rings = [ring for (ring,) in distinct]
-    (thin,) = {ring.thin for ring in rings}  # both settings: a ValueError, and a call per ring instead
-    columns = (np.array([read(q) for q in rings]) for read in (lambda q: q.R, lambda q: q.r, lambda q: q.material.E,
-                                                                lambda q: q.material.nu))  # fmt: skip
-    return bending_stiffness(*columns, thin=thin)
-
-
-def _fits(distinct) -> np.ndarray:
-    """The power laws (K, n) fitted to distinct (K_c, K_b) pairs (Eq. 4), in one call, one row each."""
-    K_c, K_b = (np.array(column) for column in zip(*distinct, strict=True))
-    return np.stack(fit_power_law(K_c=K_c, K_b=K_b), axis=-1)
 
 
 @dataclass(frozen=True, eq=False)
@@ -514,14 +477,10 @@ class Chain:
             raise ValueError(f"angles must be one angle or {len(pairs)} (one per contact), got shape {angles.shape}")
         angles = np.broadcast_to(angles, (len(pairs),))
         # One evaluation per distinct contact (a uniform chain's numbers are then the ring's own).
-        K_c = _per_distinct(
-            lambda below, above, angle: float(hertz_stiffness_pair(
-                below.R, below.r, below.material.E, below.material.nu,
-                above.R, above.r, above.material.E, above.material.nu, angle)),
-            [(below, above, float(angle)) for (below, above), angle in zip(pairs, angles, strict=True)],
-            "contact of rings {i} and {j}",
-        )  # fmt: skip
-        K_b = _per_distinct(lambda ring: ring.K_b, [(ring,) for ring in rings], "ring {i}", _rings_K_b)
+        K_c = per_distinct(pair_K_c, [(below, above, float(angle)) for (below, above), angle in
+                                        zip(pairs, angles, strict=True)], "contact of rings {i} and {j}",
+                            contacts_K_c)  # fmt: skip
+        K_b = per_distinct(lambda ring: ring.K_b, [(ring,) for ring in rings], "ring {i}", rings_K_b)
         m0 = np.array([ring.mass for ring in rings])
         a = np.array([(below.R - below.r) + (above.R - above.r) for below, above in pairs[: n_rings - 1]])
         if model == "dual-spring":
@@ -534,9 +493,9 @@ class Chain:
             raise ValueError("gamma_c and gamma_b belong to the dual-spring model; use gamma")
         # Each period of the chain is a contact in series with the body of the ring below it (Eq. 3).
         below_K_b = np.append(K_b, K_b[-1])[: len(pairs)]
-        fits = _per_distinct(lambda kc, kb: tuple(float(x) for x in fit_power_law(K_c=kc, K_b=kb)),
+        fits = per_distinct(lambda kc, kb: tuple(float(x) for x in fit_power_law(K_c=kc, K_b=kb)),
                              list(zip(K_c.tolist(), below_K_b.tolist(), strict=True)), "contact {i}",
-                             _fits)  # fmt: skip
+                             power_law_fits)  # fmt: skip
         return cls.power_law(n_rings, fits[:, 0], fits[:, 1], ratio * m0, a, gamma, m0, support=support,
                              striker_mass=striker_mass)  # fmt: skip
 

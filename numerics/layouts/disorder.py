@@ -55,7 +55,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
-from ringchain.theory import MIN_CHAIN_ASPECT_RATIO, Ring, hertz_stiffness_pair
+from ringchain.theory import MIN_CHAIN_ASPECT_RATIO, Ring, bending_stiffness, hertz_stiffness, hertz_stiffness_pair
 from ringchain.theory import _validate as v
 
 __all__ = [
@@ -297,6 +297,38 @@ def _bad_contacts(R, r, angles, material, support: str) -> np.ndarray:
     return bad
 
 
+def _drawn_rings(ring, R, r, density) -> tuple:
+    """The drawn rings: ``Ring(R_j, r_j)`` of the nominal ring's material (its density times ``density_j``), angle
+    and bending setting, checked together.
+
+    A Ring checks itself when made (Hertz contact with a ring like itself at its angle, Eq. (1); its bending
+    stiffness, Eq. (2); a finite mass), which costs a tenth of a millisecond a ring, most of a disordered chain's
+    making.  Here :func:`~ringchain.theory.hertz_stiffness` and :func:`~ringchain.theory.bending_stiffness` check
+    all the rings in one call each (they check elementwise), then each ring is the nominal one with its radii and
+    material replaced: the same fields as made one by one (tests/numerics/jobs/test_ensemble.py compares them).
+    Where the arrays fail a check, the rings are made one by one, which raises the first one's error as before.
+    """
+    material = ring.material
+    materials = [material if m_j == 1.0 else dataclasses.replace(material, rho=material.rho * float(m_j))
+                 for m_j in density]  # fmt: skip
+
+    def made(R_j, r_j, material_j):
+        return Ring(float(R_j), float(r_j), material=material_j, angle=ring.angle, thin=ring.thin)
+
+    try:
+        hertz_stiffness(R, r, material.E, material.nu, ring.angle)
+        bending_stiffness(R, r, material.E, material.nu, thin=ring.thin)
+    except ValueError:
+        return tuple(map(made, R, r, materials))
+    nominal = {field.name: getattr(ring, field.name) for field in dataclasses.fields(Ring)}
+    rings = []
+    for R_j, r_j, material_j in zip(R, r, materials, strict=True):
+        drawn = object.__new__(Ring)
+        drawn.__dict__.update(nominal, R=float(R_j), r=float(r_j), material=material_j)
+        rings.append(drawn if np.isfinite(drawn.mass) else made(R_j, r_j, material_j))
+    return tuple(rings)
+
+
 def draw_rings(ring, n_rings, spread, seed, *, model: str = "dual-spring", support: str = "fixed") -> RingDraw:
     """Draw the rings of one disordered chain about ``ring`` (module notes).
 
@@ -394,15 +426,7 @@ def draw_rings(ring, n_rings, spread, seed, *, model: str = "dual-spring", suppo
             f"the spread ({describe_spread(spread)}) makes rings or contacts impossible so often that "
             f"{MAX_REDRAW_ROUNDS} rounds of drawing again left some impossible; give a smaller spread"
         )
-    if not spread:
-        rings = (ring,) * n_rings
-    else:
-        material = ring.material
-        rings = tuple(
-            Ring(float(R_j), float(r_j), material=material if m_j == 1.0 else dataclasses.replace(
-                material, rho=material.rho * float(m_j)), angle=ring.angle, thin=ring.thin)
-            for R_j, r_j, m_j in zip(R, r, factors["m"], strict=True)
-        )  # fmt: skip
+    rings = (ring,) * n_rings if not spread else _drawn_rings(ring, R, r, factors["m"])
     return RingDraw(
         rings=rings,
         angles=angles if "angle" in spread else None,

@@ -388,6 +388,33 @@ def test_an_unwritable_cache_folder_still_runs(tmp_path):
         assert not any(folder.iterdir())  # nothing was written there
 
 
+def test_a_fingerprint_tells_apart_what_numba_types_apart():
+    # announce_compile skips Numba's typeof for arguments whose fingerprint it found loaded: two arguments with one
+    # fingerprint must have one Numba type (else a compile would go unannounced), and the fingerprint must follow
+    # every property Numba's type of an array reads (dtype, dimensions, layout, writable, aligned).
+    import numba
+    from ringchain.numerics.engine._kernel_calls import fingerprint
+    from ringchain.numerics.engine.kernels import pack
+    from ringchain.numerics.layouts.chain import Chain
+
+    frozen = np.zeros(3)
+    frozen.flags.writeable = False
+    grid = np.zeros((4, 6))
+    chains = [Chain.power_law(3, 1e6, 1.5, 0.01, 0.04), Chain.dual_spring(3, 7.5e9, 3.3e6, 8.2e-3, 0.04, 1.0)]
+    records = [np.zeros(2, dtype=[(name, kind), ("b", "<f8")]) for name, kind in (("a", "<f8"), ("x", "<i8"))]
+    values = [np.zeros(3), np.ones(5), np.zeros(3, dtype=np.int64), frozen, grid, grid.T, grid[:, ::2], grid[::2],
+              np.zeros((0, 2)), np.zeros(4, dtype=np.float32), 1.0, 2.5, 3, 2**62, 2**63, True, False, np.float64(1.0),
+              np.int64(3), (np.zeros(2), 1.0), (np.zeros(2), 1), *[pack(c.network()) for c in chains],
+              *records]  # fmt: skip
+    for a in values:
+        for b in values:
+            if fingerprint(a) == fingerprint(b):
+                assert numba.typeof(a) == numba.typeof(b), (a, b)
+    assert fingerprint(grid) != fingerprint(grid.T) != fingerprint(grid[:, ::2])  # layouts C, F, any
+    assert fingerprint(np.zeros(3)) != fingerprint(frozen)
+    assert fingerprint(object()) is None and fingerprint((np.zeros(2), object())) is None  # no fast path
+
+
 def test_a_compile_is_foreseen_per_kind_of_argument():
     # Each packed type compiles its own integrator: the notice must foresee a compile for a type not seen yet
     # even when the kernel already has a version for another one.

@@ -67,6 +67,28 @@ def test_angles_fold_back_below_a_right_angle():
     assert np.pi / 2 - draw.angles.mean() == pytest.approx(0.1 * np.pi / 2 * math.sqrt(2 / np.pi), rel=0.15)
 
 
+@pytest.mark.parametrize("nominal, spread", [
+    (RING, {"R": 0.1, "r": 0.05, "angle": 0.1}),
+    (Ring.from_aspect_ratio(6.0, angle=1.3, thin=True), {"R": 0.1, "m": 0.2}),
+])  # fmt: skip
+def test_drawn_rings_are_the_rings_made_one_by_one(nominal, spread):
+    # draw_rings checks the drawn rings together and makes each from the nominal one: each must be the Ring made
+    # alone from its radii and density (every field, and so every number the chain reads from it).
+    draw = draw_rings(nominal, 40, spread, seed=2, model="power-law")
+    for ring in draw.rings:
+        material = nominal.material if ring.material.rho == nominal.material.rho else ring.material
+        alone = Ring(ring.R, ring.r, material=material, angle=nominal.angle, thin=nominal.thin)
+        assert ring == alone and vars(ring) == vars(alone) and ring.mass == alone.mass and ring.K_b == alone.K_b
+
+
+def test_a_drawn_ring_that_cannot_be_made_says_why_as_ring_does():
+    # At 57 degrees an R/r = 5 ring is near its smallest contact angle: some drawn rings (R down, r up) cannot
+    # touch a ring like themselves there.  The arrays' check fails, and the rings are made one by one: the error is
+    # the first impossible ring's own, Ring's (not the check of a contact of two rings, which draw_rings redraws).
+    with pytest.raises(ValueError, match=r"^angle 1\.0 rad .* is at or below theta_min = "):
+        draw_rings(Ring.from_aspect_ratio(5.0, angle=1.0), 40, {"R": 0.1, "r": 0.05}, seed=member_seeds(3, 1)[0])
+
+
 def test_member_seeds_are_the_children_of_the_ensembles_seed():
     seeds = member_seeds(3, 5)
     children = np.random.SeedSequence(3).spawn(5)

@@ -16,8 +16,11 @@ import sys
 import numpy as np
 import pytest
 from ringchain.numerics import (
+    STANDARD_GRAVITY,
     DataError,
     FitError,
+    Network,
+    Simulation,
     fit_speed_amplitude,
     fit_static,
     fit_traces,
@@ -26,6 +29,7 @@ from ringchain.numerics import (
     read_static,
     read_traces,
     simulate,
+    simulate_batch,
 )
 from ringchain.numerics.jobs.fit_dynamic import FIT_RTOL, simulate_parameter_sets
 from ringchain.theory import Ring, series_displacement, solitary_wave_speed
@@ -395,6 +399,36 @@ def test_forward_model_batched_agrees_with_one_run_at_a_time():
     # Each run is the chain simulate() integrates: ring 3 of record 1 (an impact from equilibrium).
     sim = simulate(chains[2], t[-1], impact_velocity=1.0, t_eval=t, rtol=FIT_RTOL)
     np.testing.assert_allclose(batched[1][2, 0], sim.sensor(3), atol=2e-6 * np.abs(sim.sensor(3)).max())
+
+
+def test_forward_model_reads_the_batch_as_each_run_read_alone():
+    # The forward model records the sensors' sites only and reads every run's sensors in one pass over the stacked
+    # batch; the same batch read run by run, every site recorded, as a Simulation of each chain (the reading the
+    # one-pass path replaced) must give the same forces.  Each force is the same elementwise arithmetic on the same
+    # states; 1e-15 of the peak allows a last bit from NumPy's vector loops over arrays of other shapes.
+    chains = [TRUTH, dataclasses.replace(TRUTH, m=1.01 * TRUTH.m), dataclasses.replace(TRUTH, gamma=0.0)]
+    speeds = np.array([[0.6, 1.0], [0.6, 1.0], [0.62, 1.0]])
+    dropped = [True, False]
+    t = np.linspace(0.0, 1.4e-3, 700)
+    rings = [(6, 12), (3,)]
+    batched = simulate_parameter_sets(chains, speeds, dropped, t, rings)
+    runs = [(chain, r) for chain in chains for r in range(2)]
+    states = [chain.impact_state(np.array([speed]), dropped[r], True, STANDARD_GRAVITY)
+              for (chain, r), speed in zip(runs, speeds.ravel(), strict=True)]  # fmt: skip
+    batch = simulate_batch(Network.stack([chain.network() for chain, _ in runs]), t[-1], t_eval=t, rtol=FIT_RTOL,
+                           atol=FIT_RTOL, initial=(np.concatenate([x for x, _ in states]),
+                                                   np.concatenate([u for _, u in states])),
+                           shared_steps=True, max_energy_drift=None)  # fmt: skip
+    for b, (chain, r) in enumerate(runs):
+        sim = Simulation(t=t, x=batch.x[b], u=batch.u[b], dissipated=batch.dissipated[b], g=batch.g, chain=chain)
+        expected = sim.sensor_force[:, list(rings[r])].T
+        np.testing.assert_allclose(batched[r][b // 2], expected, rtol=0, atol=1e-15 * np.abs(expected).max())
+    # One run alone (the residual's): recorded at its sensors only, against every site recorded.
+    alone = simulate_parameter_sets(chains[:1], speeds[:1, :1], dropped[:1], t, rings[:1])
+    x, u = chains[0].impact_state(speeds[0, :1], True, True, STANDARD_GRAVITY)
+    sim = simulate(chains[0], t[-1], initial=(x, u), t_eval=t, rtol=FIT_RTOL, atol=FIT_RTOL, max_energy_drift=None)
+    expected = sim.sensor_force[:, [6, 12]].T
+    np.testing.assert_allclose(alone[0][0], expected, rtol=0, atol=1e-15 * np.abs(expected).max())
 
 
 def test_power_law_chain_has_the_scaling_symmetry_behind_eq_8():
