@@ -303,6 +303,9 @@ def contact_state(m, xs, us, warm, out):
     vec = np.empty((9, 3))
     rows, law = np.empty((rings_kernels.MAX_CONTACTS, rings_kernels.FIELDS)), np.empty(rings_kernels.LAW_PARAMETERS)
     fold = _fold_work()
+    # Search every time: n >= 0 is True typed as a plain bool, as the dopri5 loop's flag, so that _pair compiles
+    # once for every caller (a literal True is a type of its own: a second compile of _pair, ~6 s of CPU).
+    search = n >= 0
     for k_t in range(xs.shape[0]):
         x, u = xs[k_t], us[k_t]
         for r in range(n):
@@ -312,9 +315,7 @@ def contact_state(m, xs, us, warm, out):
             for slot in range(CONTACTS):
                 for c in range(12):
                     out[k_t, k, slot, c] = 0.0
-            # search: always; k >= 0 is True typed as a plain bool, as the dopri5 loop's flag, so that _pair
-            # compiles once for both (a literal True is a type of its own: a second compile of _pair, ~10 s)
-            _pair(m, k, x, u, R, warm, load, out[k_t, k], rows, vec, law, k >= 0, fold)
+            _pair(m, k, x, u, R, warm, load, out[k_t, k], rows, vec, law, search, fold)
 
 
 # -- velocity Verlet with the free rotor -------------------------------------------------------------------------
@@ -385,7 +386,8 @@ def _verlet_rings_run(m, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u):
     R = np.empty((n, 3, 3))
     load = np.empty((n, 6))
     x_prev, u_prev = np.empty(N), np.empty(N)
-    loads(m, x, u, R, load, True)
+    search = n >= 0  # True, a plain bool: no compile of loads and _pair of their own (see contact_state)
+    loads(m, x, u, R, load, search)
     T = t_eval.size
     j = 0
     while j < T and t_eval[j] / dt - 1e-9 <= 0.0:
@@ -397,7 +399,7 @@ def _verlet_rings_run(m, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u):
             x_prev[c], u_prev[c] = x[c], u[c]
         _kick(m, x, u, R, load, 0.5 * dt, g)
         _drift(m, x, u, R, dt)
-        loads(m, x, u, R, load, True)
+        loads(m, x, u, R, load, search)
         _kick(m, x, u, R, load, 0.5 * dt, g)
         while j < T and math.ceil(t_eval[j] / dt - 1e-9) - 1 == k:  # linear between the step's ends (second order)
             s = t_eval[j] / dt - k
