@@ -347,7 +347,10 @@ def long_wave_speeds_squared(pattern, angle=None):
     tensor = tensor.subs(theta, angle)
 
     def project(left, right):
-        return sp.factor(sp.trigsimp(sp.simplify((left.T * tensor * right)[0, 0])))
+        # Expanded in sin(theta), cos(theta) first (the triangular tensor holds cos(theta + pi/3) and the like):
+        # simplify then needs 0.8 s instead of 5 s, to the same result.
+        product = sp.expand(sp.expand_trig((left.T * tensor * right)[0, 0]))
+        return sp.factor(sp.trigsimp(sp.simplify(product)))
 
     if project(n, t) != 0:
         raise ValueError(f"long waves of the {pattern} sheet along {angle} are not purely longitudinal and transverse")
