@@ -1,7 +1,0 @@
-# ringchain generated code v1 sha256=88e9a64467c26e3394431d0f2134dcdb6e2b6c8857b7c1ad2b836373d39d182c
-# derivation: prestressed._prestress_integrand
-# source key: 10a35615fa68ecdff34f (theory/*.py, sympy 1.14.0, numpy 2.4.6)
-# arguments: x, F_m, F_0, n
-# expression sha256: e1584ad8d2627ef178dbb3cfe209b01ebb1a5a1a3276256068839f4f9b7cbb20 (of its srepr)
-def _lambdifygenerated(x, F_m, F_0, n):
-    return n*x*(n + 1)*numpy.exp((n - 1)*numpy.log1p(x*numpy.expm1(numpy.log(F_0/F_m)/n)))
