@@ -237,7 +237,7 @@ def _site_derivative(pattern, expr):
     _, u0, neighbours, laws = _site_energy(pattern)
     rest = {c: 0 for c in u0}
     rest.update({c: 0 for u, *_ in neighbours for c in u})
-    expr = expr.subs(rest)
+    expr = expr.xreplace(rest)  # plain symbols replaced by 0: xreplace, without subs' pattern matching
     for law, length, k, T in laws:
         expr = _at_pretension(expr, law, length, k, T)
     return sp.simplify(expr)
@@ -264,8 +264,10 @@ def dynamical_matrix(pattern):
     phases = sp.symbols(f"phi_1:{len(fams) + 1}", real=True)
     halves = sp.symbols(f"s_1:{len(fams) + 1}", real=True)  # sin(phase_f/2)
 
+    first = [sp.diff(energy, c) for c in u0]  # dE/du_0, once: each block differentiates it again
+
     def block(u):
-        return sp.Matrix(2, 2, lambda i, j: _site_derivative(pattern, sp.diff(energy, u0[i], u[j])))
+        return sp.Matrix(2, 2, lambda i, j: _site_derivative(pattern, sp.diff(first[i], u[j])))
 
     bloch = block(u0)
     for u, _, index, sign in neighbours:
@@ -345,7 +347,10 @@ def long_wave_speeds_squared(pattern, angle=None):
     tensor = tensor.subs(theta, angle)
 
     def project(left, right):
-        return sp.factor(sp.trigsimp(sp.simplify((left.T * tensor * right)[0, 0])))
+        # Expanded in sin(theta), cos(theta) first (the triangular tensor holds cos(theta + pi/3) and the like):
+        # simplify then needs 0.8 s instead of 5 s, to the same result.
+        product = sp.expand(sp.expand_trig((left.T * tensor * right)[0, 0]))
+        return sp.factor(sp.trigsimp(sp.simplify(product)))
 
     if project(n, t) != 0:
         raise ValueError(f"long waves of the {pattern} sheet along {angle} are not purely longitudinal and transverse")

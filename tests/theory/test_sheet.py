@@ -116,7 +116,12 @@ def test_triangular_long_wave_speeds_are_isotropic_and_obey_cauchy():
 def test_long_wave_tensor_is_the_q_squared_term_of_the_bloch_matrix(pattern):
     """An independent route to the limit: the Taylor series of D(q n) in q, its q^2 coefficient."""
     along = {q_x: q * sp.cos(theta), q_y: q * sp.sin(theta)}
-    series = sheet.dynamical_matrix(pattern).subs(along).applyfunc(lambda e: sp.series(e, q, 0, 3).removeO())
+    # The series of a sum is the sum of the series: term by term (each M_f sin^2(q n.b_f/2)), 2.7 s -> 1.2 s.
+    series = (
+        sheet.dynamical_matrix(pattern)
+        .subs(along)
+        .applyfunc(lambda e: sp.Add(*(sp.series(term, q, 0, 3).removeO() for term in sp.Add.make_args(e))))
+    )
     coefficient = series.applyfunc(lambda e: sp.expand(e).coeff(q, 2))
     assert (sheet.long_wave_tensor(pattern) - coefficient).applyfunc(sp.simplify) == sp.zeros(2, 2)
 

@@ -1,7 +1,0 @@
-# ringchain generated code v1 sha256=f01dac1af27211cd6d81891f5470d49f3ab5569c2b33258b63162c579f5b57d9
-# derivation: attenuation._attenuation_length
-# source key: 0d3b9b67499038ff2889 (theory/*.py, sympy 1.14.0, numpy 2.4.6)
-# arguments: n, a, sigma_Z
-# expression sha256: c006f1ce24c0adab1e8a4c6bcc5c7f23bb75a58176f89fd31cdb04dd7d590c42 (of its srepr)
-def _lambdifygenerated(n, a, sigma_Z):
-    return (1/24)*a*(n - 5)*(n + 1)**2/(sigma_Z**2*(1 - n))

@@ -1,8 +1,0 @@
-# ringchain generated code v1 sha256=b9006e4a1cd8079a8684cd243ebdaebcb26cb65c8b33813397211a14e1a7362e
-# derivation: solitary._speed
-# source key: 0d3b9b67499038ff2889 (theory/*.py, sympy 1.14.0, numpy 2.4.6)
-# arguments: K, n, a, m
-# expression sha256: 213cbf80e4ab25b1c9434c13030bd8f303f8dae9b416347fd8f1f20e27513371 (of its srepr)
-def _lambdifygenerated(K, n, a, m):
-    x0 = (1/2)/n
-    return (x0*numpy.log(K) + numpy.log(a) - 1/2*numpy.log(m) - 1/2*numpy.log(n + 1) + (1/2)*numpy.log(2), x0*(n - 1),)
