@@ -294,26 +294,41 @@ def _scan(k, c1, M1, R1, r1, c2, M2, R2, r2, n_scan, out):
     g_max = -math.inf
     brackets = np.empty((2 * MAX_CONTACTS, 3))  # sample index, g' at both ends
     found = 0
+    dips = np.empty(2 * MAX_CONTACTS)  # sample index of intervals where a minimum may hide between the samples
+    hidden = 0
     gp_first = 0.0
+    gpp_first = 0.0
     gp_prev = 0.0
+    gpp_prev = 0.0
     for j in range(n_scan):
-        g, gp, _ = _profile(k, R1, R2, C, S)
+        g, gp, gpp = _profile(k, R1, R2, C, S)
         g_min = min(g_min, g)
         g_max = max(g_max, g)
         if j == 0:
             gp_first = gp
-        elif gp_prev < 0.0 <= gp and found < brackets.shape[0]:
-            brackets[found, 0] = j - 1
-            brackets[found, 1] = gp_prev
-            brackets[found, 2] = gp
-            found += 1
+            gpp_first = gpp
+        elif gp_prev < 0.0 <= gp:
+            if found < brackets.shape[0]:
+                brackets[found, 0] = j - 1
+                brackets[found, 1] = gp_prev
+                brackets[found, 2] = gp
+                found += 1
+        elif (gp_prev < 0.0) == (gp < 0.0) and hidden < dips.size and _dip_between(gp_prev, gpp_prev, gp, gpp, h):
+            dips[hidden] = j - 1
+            hidden += 1
         gp_prev = gp
+        gpp_prev = gpp
         C, S = C * ch - S * sh, S * ch + C * sh
-    if gp_prev < 0.0 <= gp_first and found < brackets.shape[0]:
-        brackets[found, 0] = n_scan - 1
-        brackets[found, 1] = gp_prev
-        brackets[found, 2] = gp_first
-        found += 1
+    if gp_prev < 0.0 <= gp_first:
+        if found < brackets.shape[0]:
+            brackets[found, 0] = n_scan - 1
+            brackets[found, 1] = gp_prev
+            brackets[found, 2] = gp_first
+            found += 1
+    elif (gp_prev < 0.0) == (gp_first < 0.0) and hidden < dips.size and _dip_between(gp_prev, gpp_prev, gp_first,
+                                                                                      gpp_first, h):  # fmt: skip
+        dips[hidden] = n_scan - 1
+        hidden += 1
     scale = k[0] * k[0] + k[1] * k[1] + k[2] * k[2] + R1 * R1 + R2 * R2
     if g_max - g_min <= 1e-12 * scale:  # a circle of contact: LINE_POINTS rows
         for j in range(LINE_POINTS):
@@ -322,26 +337,88 @@ def _scan(k, c1, M1, R1, r1, c2, M2, R2, r2, n_scan, out):
     iterations = 0
     minima = np.empty(out.shape[0])
     rows = 0
+    fine = h / 32.0
     for i in range(found):
         a = brackets[i, 0] * h
         s, it = _refine(k, R1, R2, a, a + h, brackets[i, 1], brackets[i, 2])
         iterations += it
         rows = _keep(minima, rows, s)
         if _inflection_near(k, R1, R2, s, h):  # a twin may hide next to this minimum: 2 h each side again at h/32
-            fine = h / 32.0
-            a = s - 2.0 * h
-            _, gp_a, _ = _profile(k, R1, R2, math.cos(a), math.sin(a))
-            for _ in range(128):
-                b = a + fine
-                _, gp_b, _ = _profile(k, R1, R2, math.cos(b), math.sin(b))
-                if gp_a < 0.0 <= gp_b:
-                    s_fine, it = _refine(k, R1, R2, a, b, gp_a, gp_b)
-                    iterations += it
-                    rows = _keep(minima, rows, s_fine)
-                a = b
-                gp_a = gp_b
+            rows, it = _fine_look(k, R1, R2, s - 2.0 * h, 128, fine, minima, rows)
+            iterations += it
+    for i in range(hidden):  # after the brackets' minima, so that those keep the angles of their own refinement
+        rows, it = _fine_look(k, R1, R2, dips[i] * h, 32, fine, minima, rows)
+        iterations += it
     for i in range(rows):
         _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, minima[i], 0.0, out[i])
+    return rows, iterations
+
+
+#: How close to zero (in parts of the interval's scale of g') the cubic model of g' between two samples may come
+#: before the samples between them are looked at (:func:`_dip_between`).
+DIP_MARGIN = 0.05
+
+
+@_jit(inline="always")
+def _dip_between(gp_a, gpp_a, gp_b, gpp_b, h):
+    """Whether g' may change sign twice between two samples h apart where it has one sign at both (g'(a) = gp_a,
+    g''(a) = gpp_a, the same at b): a maximum and a minimum hidden between them.
+
+    The cubic Hermite model of g' on the interval (from g' and g'' at both ends) has an interior minimum (both ends
+    >= 0) or maximum (both < 0) that comes within ``DIP_MARGIN`` times the interval's scale max(|g'(a)|, |g'(b)|,
+    h |g''(a)|, h |g''(b)|) of zero.  The model errs by at most h^4 max|g'''''|/384, about (h/l)^3/384 of that scale
+    for a profile varying over the angle l: 0.0026 for l = h; 0.05 covers features down to l = h/2.7 (measured on
+    the 7,538 pairs of a 30 x 30 sheet of chain mail: the model's minimum of g' within 0.0018 of the scale of the
+    sampled one; 80 intervals in all flagged, 57 of them hiding a minimum).  Twins closer than that lie within
+    h/5 of their maximum, and the inflection next to the one found catches them (:func:`_inflection_near`)."""
+    if gp_a >= 0.0:
+        if not (gpp_a < 0.0 or gpp_b > 0.0):  # g' rises from a or falls into b: no interior minimum of the model
+            return False
+        sign = 1.0
+    else:
+        if not (gpp_a > 0.0 or gpp_b < 0.0):
+            return False
+        sign = -1.0
+    # the model p(t) = sign g'(a + t h) on [0, 1]; p'(t) = A t^2 + B t + D
+    u0, u1 = sign * gp_a, sign * gp_b
+    v0, v1 = sign * h * gpp_a, sign * h * gpp_b
+    scale = max(u0, u1, abs(v0), abs(v1))
+    A = 6.0 * (u0 - u1) + 3.0 * (v0 + v1)
+    B = -6.0 * (u0 - u1) - 4.0 * v0 - 2.0 * v1
+    D = v0
+    if A == 0.0:
+        if B <= 0.0:  # p' linear and falling: no interior minimum
+            return False
+        t = -D / B
+    else:
+        disc = B * B - 4.0 * A * D
+        if disc < 0.0:
+            return False
+        t = (-B + math.sqrt(disc)) / (2.0 * A) if A > 0.0 else (-B - math.sqrt(disc)) / (2.0 * A)  # p'' > 0 there
+    if not 0.0 < t < 1.0:
+        return False
+    t2 = t * t
+    t3 = t2 * t
+    p = u0 * (2.0 * t3 - 3.0 * t2 + 1.0) + v0 * (t3 - 2.0 * t2 + t) + u1 * (3.0 * t2 - 2.0 * t3) + v1 * (t3 - t2)
+    return p < DIP_MARGIN * scale
+
+
+@_jit()
+def _fine_look(k, R1, R2, start, count, fine, minima, rows):
+    """Sample g' at ``count`` + 1 points ``fine`` apart from ``start`` and refine every change of sign from - to +
+    into ``minima[:rows]`` (:func:`_keep`); returns (rows, Newton iterations)."""
+    iterations = 0
+    a = start
+    _, gp_a, _ = _profile(k, R1, R2, math.cos(a), math.sin(a))
+    for _ in range(count):
+        b = a + fine
+        _, gp_b, _ = _profile(k, R1, R2, math.cos(b), math.sin(b))
+        if gp_a < 0.0 <= gp_b:
+            s, it = _refine(k, R1, R2, a, b, gp_a, gp_b)
+            iterations += it
+            rows = _keep(minima, rows, s)
+        a = b
+        gp_a = gp_b
     return rows, iterations
 
 
