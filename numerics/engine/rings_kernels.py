@@ -441,6 +441,43 @@ def _inflection_near(k, R1, R2, s, h):
 
 
 @_jit()
+def _twin_near(k, R1, R2, s, h, followed, count, index):
+    """Whether the minimum at s (``followed[index]``, of the ``count`` minima followed, rad) may have an unfollowed twin
+    next to it: a maximum within 2 h of it with no other followed minimum within 4 h on that side, or a maximum and a
+    minimum hidden between s and s + h or s + h and s + 2 h (the same on the other side; :func:`_dip_between`).
+
+    The warm start's check that the cold search would find no twin beyond a maximum next to the minimum it follows
+    (the cold search brackets such a twin, or finds it between two samples by :func:`_dip_between`); without samples,
+    it looks two scan spacings each side, five evaluations of the profile."""
+    C = math.cos(s)
+    S = math.sin(s)
+    ch = math.cos(h)
+    sh = math.sin(h)
+    _, _, gpp_s = _profile(k, R1, R2, C, S)
+    for sign in (-1.0, 1.0):
+        # outwards from the minimum: sign g'(s + sign x) and g''(s + sign x) are the slope and curvature of the
+        # slope in x, and g' = 0 at the minimum itself
+        gp_a, gpp_a = 0.0, gpp_s
+        Cj, Sj = C, S
+        for _ in range(2):
+            Cj, Sj = Cj * ch - sign * Sj * sh, Sj * ch + sign * Cj * sh
+            _, gp, gpp = _profile(k, R1, R2, Cj, Sj)
+            if not sign * gp > 0.0:  # g' has turned: a maximum (or the cusp) between, and a minimum beyond it
+                followed_beyond = False
+                for j in range(count):
+                    ahead = (sign * (followed[j] - s)) % (2.0 * math.pi)
+                    if j != index and 0.0 < ahead <= 4.0 * h:
+                        followed_beyond = True
+                if not followed_beyond:
+                    return True
+                break  # the maximum between two minima followed
+            if _dip_between(gp_a, gpp_a, sign * gp, gpp, h):
+                return True
+            gp_a, gpp_a = sign * gp, gpp
+    return False
+
+
+@_jit()
 def _keep(minima, count, s):
     """Append the angle s to ``minima[:count]`` unless it is within 1e-9 rad of one of them or the array is full."""
     s = s % (2.0 * math.pi)
@@ -502,6 +539,9 @@ def pair_contacts_warm(c1, q1, R1, r1, c2, q2, R2, r2, n_scan, s_previous, n_pre
             ok = False
             break
         if _inflection_near(k, R1, R2, s, h):  # a maximum close by: a twin, or one being born, may be missed
+            ok = False
+            break
+        if _twin_near(k, R1, R2, s, h, s_previous, n_previous, i):  # a twin beyond a maximum within 2 h, unfollowed
             ok = False
             break
         s = s % (2.0 * math.pi)

@@ -237,6 +237,25 @@ def test_twin_minima_between_two_samples_are_both_found(turn):
     assert np.allclose(contacts.distance[order], expected[:, 1], rtol=0, atol=1e-15)
 
 
+def test_warm_start_hands_the_straddled_twin_to_the_cold_search():
+    c1, q1, c2, q2 = TWIN_POSE
+    cold = np.empty((rk.MAX_CONTACTS, rk.FIELDS))
+    rows, _ = rk.pair_contacts(c1, q1, R, r, c2, q2, R, r, rk.N_SCAN, cold)
+    assert rows == 2
+    first = np.argmin(cold[:rows, 1])  # the minimum that the scan brackets; its twin lies between two samples
+    warm = np.empty_like(cold)
+    # following only the first: a maximum 1.35 h from it with no minimum followed beyond, so the cold search runs
+    rows_warm, _, fell_back = rk.pair_contacts_warm(c1, q1, R, r, c2, q2, R, r, rk.N_SCAN, cold[[first], 1].copy(), 1,
+                                                    6, warm)  # fmt: skip
+    assert (rows_warm, fell_back) == (2, 1)
+    assert np.array_equal(warm[:2], cold[:2])  # the same search
+    # following both (the second lies 0.88 h from the maximum, an inflection within h/2 of it: the cold search runs
+    # again, as before), the same two minima to the refinement's tolerance (s to 1e-12 rad; the gap stationary there)
+    rows_warm, _, _ = rk.pair_contacts_warm(c1, q1, R, r, c2, q2, R, r, rk.N_SCAN, cold[:2, 1].copy(), 2, 6, warm)
+    assert rows_warm == 2
+    assert np.allclose(warm[:2, :15], cold[:2, :15], rtol=0, atol=1e-9)
+
+
 # -- rings resting on one another; symmetric poses ----------------------------------------------------------------
 def test_ring_resting_across_an_unlinked_one():
     # ring 2 upright in the xz plane, standing on the top of ring 1's tube (ring 1 flat in the xy plane)
