@@ -237,6 +237,39 @@ def test_twin_minima_between_two_samples_are_both_found(turn):
     assert np.allclose(contacts.distance[order], expected[:, 1], rtol=0, atol=1e-15)
 
 
+#: Two more pairs of that sheet, in another pose, where a minimum and the maximum after it fall between two samples
+#: (g' < 0 at both, the cubic model of g' there with a negative leading coefficient): in the first the hidden minimum
+#: lies 0.013 r apart and the other 0.005 r in overlap; in the second both lie 4.4 r apart.
+MIN_THEN_MAX_POSES = [
+    (
+        np.array([0.49130025165660457, -0.00018933500037956208, -0.14872626410184117]),
+        np.array([0.6996013068889742, -0.6934750031665781, -0.12414826766771271, 0.1193215781720151]),
+        np.array([0.47826633569255067, -0.00011757263842218032, -0.11132213105439388]),
+        np.array([0.6938059932423045, -0.6980608422135318, 0.12307003592982618, -0.12727164085304085]),
+    ),
+    (
+        np.array([0.623626867169433, -0.0011670125413987256, 0.18316533793120965]),
+        np.array([0.6829132329589671, -0.7083482918764797, 0.1281378436131849, -0.1243097207758428]),
+        np.array([0.6704880531709142, -0.0014860846230293678, 0.17979810987347283]),
+        np.array([0.6801261155784489, -0.7119099296296991, 0.11926817027840073, -0.12801493100904213]),
+    ),
+]
+
+
+@pytest.mark.parametrize("pose", MIN_THEN_MAX_POSES, ids=["touching", "apart"])
+def test_a_minimum_and_the_maximum_after_it_between_two_samples_are_found(pose):
+    c1, q1, c2, q2 = pose
+    contacts = torus_contacts(c1, q1, RING, c2, q2, RING, margin=np.inf)
+    rot1, rot2 = (Rotation.from_quat(np.r_[q[1:], q[0]]) for q in (q1, q2))
+    expected = sampled_minima(c1, rot1, R, c2, rot2, R)
+    assert len(expected) == 2  # the independent count
+    assert len(contacts) == len(expected)
+    order = np.argsort(contacts.s_1)
+    # as for the twins above: the refinement's and brentq's tolerances; the rounding of the centres
+    assert np.allclose(contacts.s_1[order], expected[:, 0], rtol=0, atol=1e-12)
+    assert np.allclose(contacts.distance[order], expected[:, 1], rtol=0, atol=1e-15)
+
+
 def test_warm_start_hands_the_straddled_twin_to_the_cold_search():
     c1, q1, c2, q2 = TWIN_POSE
     cold = np.empty((rk.MAX_CONTACTS, rk.FIELDS))
