@@ -313,10 +313,13 @@ def _scan(k, c1, M1, R1, r1, c2, M2, R2, r2, n_scan, out):
     gp_prev = 0.0
     C_prev = 1.0
     S_prev = 0.0
-    for j in range(n_scan):
-        g, gp, _ = _profile(k, R1, R2, C, S)
-        g_min = min(g_min, g)
-        g_max = max(g_max, g)
+    for j in range(n_scan + 1):
+        if j < n_scan:
+            g, gp, _ = _profile(k, R1, R2, C, S)
+            g_min = min(g_min, g)
+            g_max = max(g_max, g)
+        else:  # the first sample again: the interval that closes the circle
+            g, gp, C, S = g_first, gp_first, 1.0, 0.0
         if j == 0:
             g_first = g
             gp_first = gp
@@ -334,15 +337,6 @@ def _scan(k, c1, M1, R1, r1, c2, M2, R2, r2, n_scan, out):
         C_prev = C
         S_prev = S
         C, S = C * ch - S * sh, S * ch + C * sh
-    if gp_prev < 0.0 <= gp_first:
-        if found < brackets.shape[0]:
-            brackets[found, 0] = n_scan - 1
-            brackets[found, 1] = gp_prev
-            brackets[found, 2] = gp_first
-            found += 1
-    elif hidden < dips.size and _dip_hidden(k, R1, R2, C_prev, S_prev, g_prev, gp_prev, 1.0, 0.0, g_first, gp_first, h):
-        dips[hidden] = n_scan - 1
-        hidden += 1
     scale = k[0] * k[0] + k[1] * k[1] + k[2] * k[2] + R1 * R1 + R2 * R2
     if g_max - g_min <= 1e-12 * scale:  # a circle of contact: LINE_POINTS rows
         for j in range(LINE_POINTS):
