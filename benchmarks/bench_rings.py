@@ -35,7 +35,8 @@ With the contact search's look between two samples and the warm start's check fo
 evaluations and peak link force 688.7 N): no difference above the noise.  Searched alone (the linked and resting
 pairs of bench_rings_contact.py, both versions in one process, best of 7, two runs), the cold search costs 2.4-3.4
 us a pair against 2.1-2.7 (12-25 per cent more), the warm start 1.3-1.9 us against 1.1-1.4 (20-32 per cent more:
-four more evaluations of the profile per minimum); the warm search is about a tenth of a dopri5 run.
+four more evaluations of the profile per minimum); the warm search is some 10 per cent of a dopri5 run (999 pairs
+at about 1.2 us, once per step of six evaluations of about 2 ms), so its growth stays within the run's noise.
 
 Run: ``python benchmarks/bench_rings.py [--rings 1000] [--duration 1e-3] [--speed 1.0] [--samples 201]
 [--method dopri5]``.
