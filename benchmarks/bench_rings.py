@@ -29,6 +29,15 @@ Nearly quiet (load 1.3: one other single-threaded job on the two cores), kernels
 wall (16.0 s of CPU; 1101 steps, 6698 evaluations), Verlet 5.7 s wall (5.7 s of CPU, 1508 steps); 42 MB allocated
 at peak, 218 and 255 MB resident.
 
+With the contact search's look between two samples and the warm start's check for a twin beyond a maximum
+(:mod:`ringchain.numerics.engine.rings_kernels`), against the search before them, alternately on a machine at load
+4-9, kernels from the disk cache: dopri5 49.9 and 45.4 s of CPU against 48.9 and 47.1 (the same 1101 steps, 6698
+evaluations and peak link force 688.7 N): no difference above the noise.  Searched alone (the linked and resting
+pairs of bench_rings_contact.py, both versions in one process, best of 7, two runs), the cold search costs 2.4-3.4
+us a pair against 2.1-2.7 (12-25 per cent more), the warm start 1.3-1.9 us against 1.1-1.4 (20-32 per cent more:
+four more evaluations of the profile per minimum); the warm search is some 10 per cent of a dopri5 run (999 pairs
+at about 1.2 us, once per step of six evaluations of about 2 ms), so its growth stays within the run's noise.
+
 Run: ``python benchmarks/bench_rings.py [--rings 1000] [--duration 1e-3] [--speed 1.0] [--samples 201]
 [--method dopri5]``.
 """

@@ -36,7 +36,11 @@ energy's gradient, the descent preconditioned by the stiffness matrix and run to
   spacing h = 2 pi / 64) from the maximum and the first 0.132 rad, farther than the h/2 within which an
   inflection starts the finer look.  Moves of either ring along its loads by 1e-7 r to 1e-3 r, either way, find
   both, and the energy there is 6.1e-5 J higher: the descent has walked into a pose where a contact is missed, and
-  every trial step out of it is rejected.
+  every trial step out of it is rejected.  With the search that looks between two samples where g' may dip
+  (:mod:`ringchain.numerics.engine.rings_kernels`: a minimum and its maximum between the same two samples), that
+  pose's residual is 15.4 m g, every minimum found, and the softest stage's descent moves on from it: 500 steps (in
+  fresh descents of 100: 0.22, 3.0, 0.80, 0.033 and 0.0039 m g after each; 1,527 evaluations, 72 s of CPU, 200 s
+  wall at load 5-9).
 
 The solver before (Newton's method after a descent handed over at 1e-2 m g, the loads missing the derivatives of
 Hertz's K_c and of the shares of twin contacts; traced, ``--iterations 30`` unless said): 4 x 4 (200 iterations
@@ -48,15 +52,19 @@ With the loads the energy's gradient but the descent not preconditioned, a 4 x 4
 descents alone in 37 s of CPU (17,000 steps at full stiffness), and the old Newton's polish of the last stage
 stalls at 2.6e-4 m g (a contact barely closed makes its model fail for steps longer than its approach).
 
-What is left.  The contact search (:func:`~ringchain.numerics.engine.rings_kernels.pair_contacts`) must not miss
-a twin minimum that lies within one scan spacing of its maximum while its twin lies beyond it: the check for an
-inflection next to a minimum found could look out to about 2 h, and the finer look span 3 h, before the 30 x 30
-sheet is measured again (the descent, which lowers the energy, finds such misses by itself).  Tried, not kept: with
-those two changes the stuck pair's search finds both minima, but the finer look then also runs where the coarse scan
-already separates the twins (1.2 degrees below theta_min, where the two gaps then differ by 1.2e-17 m, over the
-1e-17 m of test_tori), and its cost in the dynamics and its effect on the 30 x 30 drape were not measured.
-Then: carry the preconditioner from stage to stage, and rebuild it less often on large sheets (each build costs six
-evaluations per colour of the rings, some 100 on the 30 x 30 sheet).
+The whole 30 x 30 drape again, ``--untraced``, with the search's first version (g'' at every sample, and the
+Hermite test taking the other root where the model's leading coefficient is negative, so that it missed a minimum and
+its maximum between two samples where g' < 0 at both): not solved.  The softest stage's descent ran 16,578 steps
+(40,276 evaluations; 1,895 s of CPU, 4,858 s wall at load 5-9) to 12.5 m g and stopped; the stiffer stages could not
+step from there (1.35e4 m g at the end); 5,011 s wall, 1,972 s of CPU, 606 MB resident at peak.  On the pose where
+it stopped that version misses 10 of the 5,927 minima of the sheet's 3,861 pairs within 2 mm (a profile sampled at
+2^13 points; the version here misses none): the residual there is 32.0 m g with every minimum found, and 200 steps of
+the softest stage's descent from it (fresh descents of 100) reach 5.1 and 5.7 m g.
+
+What is left.  The whole 30 x 30 drape with this version of the search, from the start (some 85 min wall on this
+machine at load 5-9; the descent of the softest stage alone takes thousands of steps).  Then: carry the
+preconditioner from stage to stage, and rebuild it less often on large sheets (each build costs six evaluations per
+colour of the rings, some 100 on the 30 x 30 sheet).
 
 Run: ``python benchmarks/bench_rings_drape.py [--rows 30] [--cols 30] [--tol 1e-6] [--iterations 30]
 [--save pose.npz] [--untraced]``.

@@ -36,9 +36,12 @@ Every trial pose searches its contacts from scratch: the warm-started search cos
 against 31 ms an evaluation) and cannot see a minimum born away from the ones it follows (searched from scratch only
 every 25 steps, a ring of a 10 x 10 sheet was found 426 m g deep in a neighbour's tube).  It stops at ``HANDOVER``
 m g (or the stage's tolerance if larger) or after ``DESCENT`` steps, and Newton's method (below) polishes what is
-left; its pose is kept only where its residual is lower than the descent's.  A 30 x 30 sheet is not solved: its
-softest stage's descent stops at 10.4 m g on a pose where the cold search misses a twin minimum that the steps it
-tries out of it find, 6.1e-5 J higher (benchmarks/bench_rings_drape.py), so the search, not the solver, is what is left.
+left; its pose is kept only where its residual is lower than the descent's.  A 30 x 30 sheet's softest stage once
+stopped at 10.4 m g on a pose where the cold search missed a twin minimum lying with its maximum between two of the
+scan's samples, which the steps tried out of it found, 6.1e-5 J higher; with the search's look between samples
+(:mod:`~ringchain.numerics.engine.rings_kernels`) the descent moves on from that pose, to 3.9e-3 m g in 500 steps.
+The whole drape, run once with an earlier version of that look, stopped again at 12.5 m g, on a pose where that
+version missed 10 minima and the present one none; it is not yet solved (benchmarks/bench_rings_drape.py).
 Measured against it: FIRE (Bitzek, Koskinen, Gaehler, Moseler and Gumbsch, Phys. Rev. Lett. 97, 170201 (2006),
 with the parameters of FIRE 2.0, Guenole et al., Comput. Mater. Sci. 175, 109584 (2020)), on the same scaled
 variables with the time step bounded by the stiffest curvature, stalled at 0.4-0.8 m g on a 4 x 4 sheet after

@@ -175,6 +175,120 @@ def test_both_contacts_are_found_close_to_theta_min(below):
     assert contacts.point[0, 2] == pytest.approx(contacts.point[1, 2], abs=1e-14)
 
 
+# -- twin minima that the coarse scan's samples straddle --------------------------------------------------------------
+#: Two neighbours of a 30 x 30 sheet of chain mail (R/r = 9) where its static solver once stopped: the distance of
+#: their centre circles has twin minima 0.043 r and 0.040 r deep on either side of a maximum 0.039 r deep, the second
+#: 0.88 of the scan's spacing beyond the maximum (centres in m; quaternions (w, x, y, z)).
+TWIN_POSE = (
+    np.array([0.08070779461969348, 0.00328759901605863, 0.5876193261228208]),
+    np.array([0.6655839647893028, -0.7312985065081204, -0.11201527343726425, 0.09824998071816356]),
+    np.array([0.06478191591641538, 0.00336219282038628, 0.6243902440075156]),
+    np.array([0.70895128706511, -0.6693207891535885, 0.01868054284744149, -0.22146961663954376]),
+)
+
+
+def sampled_minima(c1, rot1, R1, c2, rot2, R2, n=2**16):
+    """The local minima (s_1, distance) of the distance from circle 1 to circle 2: 2^16 samples of circle 1 (the
+    nearest point of circle 2 in closed form, the point's projection on its plane scaled to R2), each sampled minimum
+    refined by SciPy's ``brentq`` on the distance's derivative within a sample each side."""
+    from scipy.optimize import brentq
+
+    def point(s):  # circle 1 in ring 2's frame, and its derivative in s
+        s = np.atleast_1d(s)
+        body = R1 * np.column_stack([np.cos(s), np.sin(s), np.zeros_like(s)])
+        tangent = R1 * np.column_stack([-np.sin(s), np.cos(s), np.zeros_like(s)])
+        return rot2.inv().apply(np.asarray(c1) + rot1.apply(body) - c2), rot2.inv().apply(rot1.apply(tangent))
+
+    def distance(s):
+        p, _ = point(s)
+        return np.hypot(np.hypot(p[:, 0], p[:, 1]) - R2, p[:, 2])
+
+    def slope(s):  # d(distance^2/2)/ds
+        p, dp = point(s)
+        rho = np.hypot(p[:, 0], p[:, 1])
+        return ((rho - R2) * (p[:, 0] * dp[:, 0] + p[:, 1] * dp[:, 1]) / rho + p[:, 2] * dp[:, 2])[0]
+
+    s = 2 * np.pi * np.arange(n) / n
+    f = distance(s)
+    step = 2 * np.pi / n
+    found = []
+    for i in np.flatnonzero((f < np.roll(f, 1)) & (f <= np.roll(f, -1))):
+        root = brentq(slope, s[i] - step, s[i] + step, xtol=1e-15, rtol=1e-15)
+        found.append((root % (2 * np.pi), distance(root)[0]))
+    return np.array(sorted(found))
+
+
+@pytest.mark.parametrize("turn", [0.0, 0.25, 0.5, 0.75, 1.0 - 1e-3])
+def test_twin_minima_between_two_samples_are_both_found(turn):
+    # the stuck pair, ring 1 turned about its own axis by a fraction of the scan's spacing h: the samples fall at
+    # every phase of the profile (turn 0: the maximum and the second minimum between two samples, g' > 0 at both)
+    c1, q1, c2, q2 = TWIN_POSE
+    h = 2 * np.pi / rk.N_SCAN
+    rot1 = Rotation.from_quat(np.r_[q1[1:], q1[0]]) * about([0, 0, 1], turn * h)
+    rot2 = Rotation.from_quat(np.r_[q2[1:], q2[0]])
+    contacts = torus_contacts(c1, quaternion(rot1), RING, c2, q2, RING, margin=np.inf)
+    expected = sampled_minima(c1, rot1, R, c2, rot2, R)
+    assert len(expected) == 2  # the twins (the independent count)
+    assert len(contacts) == len(expected)
+    order = np.argsort(contacts.s_1)
+    # the angles: the kernel's refinement stops at steps below 1e-13 rad, brentq at 1e-15 (8e-15 rad apart, measured);
+    # the distances to the rounding of the centres, 0.6 m from the origin (1.1e-16 m a unit in the last place)
+    assert np.allclose(contacts.s_1[order], expected[:, 0], rtol=0, atol=1e-12)
+    assert np.allclose(contacts.distance[order], expected[:, 1], rtol=0, atol=1e-15)
+
+
+#: Two more pairs of that sheet, in another pose, where a minimum and the maximum after it fall between two samples
+#: (g' < 0 at both, the cubic model of g' there with a negative leading coefficient): in the first the hidden minimum
+#: lies 0.013 r apart and the other 0.005 r in overlap; in the second both lie 4.4 r apart.
+MIN_THEN_MAX_POSES = [
+    (
+        np.array([0.49130025165660457, -0.00018933500037956208, -0.14872626410184117]),
+        np.array([0.6996013068889742, -0.6934750031665781, -0.12414826766771271, 0.1193215781720151]),
+        np.array([0.47826633569255067, -0.00011757263842218032, -0.11132213105439388]),
+        np.array([0.6938059932423045, -0.6980608422135318, 0.12307003592982618, -0.12727164085304085]),
+    ),
+    (
+        np.array([0.623626867169433, -0.0011670125413987256, 0.18316533793120965]),
+        np.array([0.6829132329589671, -0.7083482918764797, 0.1281378436131849, -0.1243097207758428]),
+        np.array([0.6704880531709142, -0.0014860846230293678, 0.17979810987347283]),
+        np.array([0.6801261155784489, -0.7119099296296991, 0.11926817027840073, -0.12801493100904213]),
+    ),
+]
+
+
+@pytest.mark.parametrize("pose", MIN_THEN_MAX_POSES, ids=["touching", "apart"])
+def test_a_minimum_and_the_maximum_after_it_between_two_samples_are_found(pose):
+    c1, q1, c2, q2 = pose
+    contacts = torus_contacts(c1, q1, RING, c2, q2, RING, margin=np.inf)
+    rot1, rot2 = (Rotation.from_quat(np.r_[q[1:], q[0]]) for q in (q1, q2))
+    expected = sampled_minima(c1, rot1, R, c2, rot2, R)
+    assert len(expected) == 2  # the independent count
+    assert len(contacts) == len(expected)
+    order = np.argsort(contacts.s_1)
+    # as for the twins above: the refinement's and brentq's tolerances; the rounding of the centres
+    assert np.allclose(contacts.s_1[order], expected[:, 0], rtol=0, atol=1e-12)
+    assert np.allclose(contacts.distance[order], expected[:, 1], rtol=0, atol=1e-15)
+
+
+def test_warm_start_hands_the_straddled_twin_to_the_cold_search():
+    c1, q1, c2, q2 = TWIN_POSE
+    cold = np.empty((rk.MAX_CONTACTS, rk.FIELDS))
+    rows, _ = rk.pair_contacts(c1, q1, R, r, c2, q2, R, r, rk.N_SCAN, cold)
+    assert rows == 2
+    first = np.argmin(cold[:rows, 1])  # the minimum that the scan brackets; its twin lies between two samples
+    warm = np.empty_like(cold)
+    # following only the first: a maximum 1.35 h from it with no minimum followed beyond, so the cold search runs
+    rows_warm, _, fell_back = rk.pair_contacts_warm(c1, q1, R, r, c2, q2, R, r, rk.N_SCAN, cold[[first], 1].copy(), 1,
+                                                    6, warm)  # fmt: skip
+    assert (rows_warm, fell_back) == (2, 1)
+    assert np.array_equal(warm[:2], cold[:2])  # the same search
+    # following both (the second lies 0.88 h from the maximum, an inflection within h/2 of it: the cold search runs
+    # again, as before), the same two minima to the refinement's tolerance (s to 1e-12 rad; the gap stationary there)
+    rows_warm, _, _ = rk.pair_contacts_warm(c1, q1, R, r, c2, q2, R, r, rk.N_SCAN, cold[:2, 1].copy(), 2, 6, warm)
+    assert rows_warm == 2
+    assert np.allclose(warm[:2, :15], cold[:2, :15], rtol=0, atol=1e-9)
+
+
 # -- rings resting on one another; symmetric poses ----------------------------------------------------------------
 def test_ring_resting_across_an_unlinked_one():
     # ring 2 upright in the xz plane, standing on the top of ring 1's tube (ring 1 flat in the xy plane)
