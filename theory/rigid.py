@@ -25,7 +25,7 @@ The derivation, step by step (each step a function returning SymPy objects):
    (:func:`ringchain.theory.contact.carlson_form`).  Between the nodes Gamma is the cubic through the four
    nearest values: the error is about h^4 |Gamma''''|/24 < 1e-12 (the tests measure it against
    :func:`ringchain.theory.hertz_stiffness`, whose table is accurate to 1e-15).  The compiled kernels
-   (:func:`ringchain.numerics.engine.rings_kernels.hertz_stiffness_curvatures`) take the same grid.
+   (:func:`ringchain.numerics.engine.rings_law.hertz_stiffness_curvatures`) take the same grid.
 
 The curvatures at a contact of two tori in any pose (across a tube 1/r; along it cos(phi)/(R + r cos(phi)),
 phi the angle round the tube from the outer equator, -1/(R - r) on the inner one) come from
@@ -222,7 +222,7 @@ def elliptical_factor_grid():
     Notes
     -----
     Step 5 of the module notes: the shape equation of Johnson's elliptical solution (Contact Mechanics,
-    Sec. 4.2) solved at every node; what :func:`ringchain.numerics.engine.rings_kernels.hertz_stiffness_curvatures`
+    Sec. 4.2) solved at every node; what :func:`ringchain.numerics.engine.rings_law.hertz_stiffness_curvatures`
     interpolates (cubic through four nodes, error below 1e-12).
 
     Examples

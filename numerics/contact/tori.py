@@ -10,7 +10,7 @@ The narrow phase (:func:`torus_contacts`).  The tube surfaces touch where the di
 centre circles has a local minimum; each minimum with gap = distance - r_1 - r_2 below ``margin`` is a
 contact.  The search and its degenerate poses are described in :mod:`ringchain.numerics.engine.rings_kernels`;
 the compiled functions there (:func:`~ringchain.numerics.engine.rings_kernels.pair_contacts`, its warm-started
-variant and :func:`~ringchain.numerics.engine.rings_kernels.contact_force`) are what a time loop calls.
+variant and :func:`~ringchain.numerics.engine.rings_law.contact_force`) are what a time loop calls.
 
 How many samples.  The coarse scan brackets a minimum where g' (the slope of the squared distance) turns from
 negative to positive between two samples, h = 2 pi/n_scan apart; a minimum and the maximum beside it that fall

@@ -1,9 +1,9 @@
 """What every compiled kernel module of the engine shares: the folder of the disk cache and the packed model.
 
-The kernels (:mod:`.kernels`, :mod:`.rings_step`, :mod:`.rings_kernels`) call one another, so they must agree on
-one cache folder, keyed on all their sources (:data:`KERNEL_MODULES`), and on the one tuple a model is packed
-into (:class:`Packed`; :class:`PackedRingChain` and :class:`PackedRings` for the other two kinds); they live
-here so that no kernel module imports another in a circle.
+The kernels (:mod:`.kernels`, :mod:`.rings_step`, :mod:`.rings_kernels`, :mod:`.rings_law`) call one another, so
+they must agree on one cache folder, keyed on all their sources (:data:`KERNEL_MODULES`), and on the one tuple a
+model is packed into (:class:`Packed`; :class:`PackedRingChain` and :class:`PackedRings` for the other two kinds);
+they live here so that no kernel module imports another in a circle.
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ import numpy as np
 __all__ = ["CACHE", "KERNEL_MODULES", "Packed", "PackedRingChain", "PackedRings", "jit"]
 
 #: The modules whose compiled kernels call one another (the disk cache is keyed on all their sources).
-KERNEL_MODULES = ("_compiled.py", "kernels.py", "rings_step.py", "rings_kernels.py", "fields.py")
+KERNEL_MODULES = ("_compiled.py", "kernels.py", "rings_step.py", "rings_kernels.py", "rings_law.py", "fields.py")
 
 
 def _cache_folder() -> str | None:

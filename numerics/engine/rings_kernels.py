@@ -1,4 +1,4 @@
-r"""Compiled kernels of rigid rings in space: the contacts of two tori in any pose and the force at a contact.
+r"""Compiled kernels of rigid rings in space: the contacts of two tori in any pose.
 
 Plain Numba functions on float arrays, for the inner loop of a simulation of rigid tori
 (:func:`ringchain.numerics.torus_contacts` is the Python face of the geometry, with the conventions).
@@ -58,21 +58,19 @@ point (along the tube, signed, and across it, 1/r_1; 1/m, convex positive), the 
 cosine of the angle between the two tube tangents (in [0, 1]), the distance f of the centre circles
 (m) and the line flag.
 
-The contact law (:func:`contact_force`): the normal force [K delta^n + gamma delta_dot]_+ from the
-approach delta = -gap (zero for an open contact), with K either given (the lumped power law of paper
-Eq. (4)) or the Hertz stiffness of the two surfaces' curvatures (:func:`hertz_stiffness_curvatures`,
-n = 3/2), and a regularised Coulomb friction mu F_n v_t/sqrt(|v_t|^2 + v_reg^2) opposing the slip
-v_t; the force acts at the contact point on ring 1 and its opposite on ring 2.  Where a maximum of the distance
-between two minima is itself in overlap (tubes lying nearly parallel over an arc), each minimum carries a share of
-its force (:func:`fold_weights`) that vanishes as it meets the maximum and disappears (a fold), so that the loads
-stay continuous in the pose; elsewhere the share is one.  Without it the force of a contact jumps as the scan
-finds or misses a minimum a rounding error from a fold (met in a 4 x 4 sheet of chain mail under gravity: a
-minimum 1e-8 r below the maximum next to it, both 1e-3 r deep, 2.7 N of force that came and went as the pose
-changed by 1e-18 m), and no static solver can converge.  The loads of a pair are the gradient of its stored
-energy sum_a w_a K_a delta_a^(n+1)/(n+1): the shares w_a are functions of the approaches of the minima and of the
-maxima in overlap, whose derivatives over the pose are unit forces along their normals (:func:`fold_weights`
-returns the shares' slopes and the maxima's rows), and Hertz's K_a follows the curvatures at its contact
-(:func:`stiffness_slopes`); :func:`~ringchain.numerics.engine.rings_step.loads` adds both.
+The contact law at a row is :mod:`ringchain.numerics.engine.rings_law`'s
+(:func:`~ringchain.numerics.engine.rings_law.contact_force`). Where a maximum of the distance between two minima is
+itself in overlap (tubes lying nearly parallel over an arc), each minimum carries a share of its force
+(:func:`fold_weights`) that vanishes as it meets the maximum and disappears (a fold), so that the loads stay
+continuous in the pose; elsewhere the share is one. Without it the force of a contact jumps as the scan finds or
+misses a minimum a rounding error from a fold (met in a 4 x 4 sheet of chain mail under gravity: a minimum 1e-8 r
+below the maximum next to it, both 1e-3 r deep, 2.7 N of force that came and went as the pose changed by 1e-18 m),
+and no static solver can converge. The loads of a pair are the gradient of its stored energy sum_a w_a K_a
+delta_a^(n+1)/(n+1): the shares w_a are functions of the approaches of the minima and of the maxima in overlap,
+whose derivatives over the pose are unit forces along their normals (:func:`fold_weights` returns the shares' slopes
+and the maxima's rows), and Hertz's K_a follows the curvatures at its contact
+(:func:`~ringchain.numerics.engine.rings_law.stiffness_slopes`); :func:`~ringchain.numerics.engine.rings_step.loads`
+adds both.
 
 The module's constants that the kernels read (``MAX_CONTACTS``, ``LINE_POINTS``, the modes of
 :func:`pairs_contacts`) are compiled in as constants, as Numba does with globals.
@@ -88,7 +86,6 @@ import math
 
 import numba
 import numpy as np
-from ringchain.theory.elliptical import TABLE_MAX_LOG_RATIO
 
 from ._compiled import CACHE
 
@@ -97,7 +94,6 @@ __all__ = [
     "MAX_CONTACTS",
     "LINE_POINTS",
     "N_SCAN",
-    "LAW_PARAMETERS",
     "rotation_matrix",
     "pair_contacts",
     "pair_contacts_warm",
@@ -107,10 +103,6 @@ __all__ = [
     "COLD",
     "WARM",
     "FOLLOW",
-    "hertz_stiffness_curvatures",
-    "elliptical_factor_at",
-    "contact_force",
-    "stiffness_slopes",
 ]
 
 #: Numbers per contact row (see the module notes).
@@ -123,11 +115,6 @@ MAX_CONTACTS = 8
 LINE_POINTS = 4
 #: Default number of samples of the cold search.
 N_SCAN = 64
-#: Parameters of a contact law (a row): kind (0 the Hertz stiffness of the curvatures, 1 a given K),
-#: K (N/m^n, kind 1), n (kind 1), gamma (N s/m), mu, v_reg (m/s), E* (Pa, kind 0).  A row may carry an eighth
-#: number, the largest ln(B/A) of the Hertz ellipse (kind 0; see :func:`hertz_stiffness_curvatures`); without
-#: it the ellipse is capped at the table's end (:data:`ringchain.theory.elliptical.TABLE_MAX_LOG_RATIO`).
-LAW_PARAMETERS = 7
 
 _previous_cache_dir = numba.config.CACHE_DIR
 if CACHE is not None:
@@ -666,12 +653,6 @@ def pairs_contacts(centres, orientations, R, r, pairs, n_scan, mode, iterations,
 
 # -- minima next to a maximum in overlap ---------------------------------------------------------------------------
 @_jit(inline="always")
-def _ellipse_cap(law):
-    """The largest ln(B/A) of a Hertz law row (:data:`LAW_PARAMETERS`): its eighth number, else the table's end."""
-    return law[7] if law.size > 7 else TABLE_MAX_LOG_RATIO
-
-
-@_jit(inline="always")
 def _share(P_a, P_b, D):
     """(x, dx/dP_a, dx/dP_b, dx/dD) of the share x = 1 - D / (D + P_a) * P_b / (P_a + P_b) of :func:`fold_weights`
     (P_a + P_b > 0)."""
@@ -763,226 +744,6 @@ def fold_weights(c1, q1, R1, r1, c2, q2, R2, r2, rows, count, weights, slopes, t
             slopes[m, b] += weights[m] * slope * d[1]
             slopes[m, MAX_CONTACTS + i] += weights[m] * slope * d[2]
             weights[m] *= factor
-
-
-# -- the contact law -------------------------------------------------------------------------------------------
-@_jit()
-def elliptical_factor_at(s, table, step):
-    """Gamma at s = ln(1 + ln(B/A)) from its values on the uniform grid s_j = j ``step`` (``table``): the cubic
-    through the four nearest values (clamped to the table's ends)."""
-    n = table.size
-    x = s / step
-    j = int(x)
-    if j < 1:
-        j = 1
-    if j > n - 3:
-        j = n - 3
-    t = x - j  # position from node j; the cubic through nodes j - 1 .. j + 2
-    if x >= n - 1:
-        return table[n - 1]
-    a = table[j - 1]
-    b = table[j]
-    c = table[j + 1]
-    d = table[j + 2]
-    return (
-        -a * t * (t - 1.0) * (t - 2.0) / 6.0
-        + b * (t + 1.0) * (t - 1.0) * (t - 2.0) / 2.0
-        - c * (t + 1.0) * t * (t - 2.0) / 2.0
-        + d * (t + 1.0) * t * (t - 1.0) / 6.0
-    )
-
-
-@_jit()
-def hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, cos_angle, E_star, max_log_ratio, table, step):
-    """K_c (N/m^1.5) of two surfaces with principal curvatures (k1a, k1b), (k2a, k2b) (1/m, convex positive)
-    whose first principal directions make the angle with cosine ``cos_angle``; E* in Pa.
-
-    Hertz's sums (App. A, Eqs. (A2a)-(A2b)), K_c = 4/3 E* (2A)^(-1/2) Gamma(B/A) with Gamma from ``table``
-    (:func:`ringchain.theory.elliptical_factor_grid`), as :func:`ringchain.theory.hertz_stiffness_curvatures`.
-    K_c grows without bound as A -> 0 (a minimum about to split: theta_min at a crossing); the ellipse is
-    capped at ln(B/A) = ``max_log_ratio`` (and at the table's end, 690): a smaller A, zero or negative
-    included, is raised to B exp(-max_log_ratio), which keeps K_c finite and continuous.
-    """
-    d1 = k1a - k1b
-    d2 = k2a - k2b
-    total = 0.5 * (k1a + k1b + k2a + k2b)
-    cos2 = 2.0 * cos_angle * cos_angle - 1.0
-    radicand = d1 * d1 + d2 * d2 + 2.0 * d1 * d2 * cos2
-    difference = 0.5 * math.sqrt(radicand) if radicand > 0.0 else 0.0
-    A = 0.5 * (total - difference)
-    B = A + difference
-    cap = math.log1p(max_log_ratio) if max_log_ratio > 0.0 else 0.0
-    top = (table.size - 1) * step
-    if not cap < top:
-        cap = top
-    if A > 0.0 and math.log1p(difference / A) < max_log_ratio:
-        s = math.log1p(math.log1p(difference / A))
-        if s > cap:
-            s = cap
-    else:
-        s = cap
-    if s >= cap:
-        A = B * math.exp(-math.expm1(s))
-    gamma = elliptical_factor_at(s, table, step)
-    return 4.0 / 3.0 * E_star / math.sqrt(2.0 * A) * gamma
-
-
-@_jit()
-def stiffness_slopes(row, c1, q1, R1, c2, q2, R2, law, table, step, out):
-    """The Hertz stiffness K_c of a contact row (law kind 0, as :func:`contact_force`) and its logarithmic derivative
-    over the pose of ring 1: ``out`` (6,) receives d(ln K_c)/d(c_1) (1/m) and d(ln K_c)/d(theta_1) (rotation vector
-    of ring 1 about its centre, in space; 1/rad), ring 2 held.  Returns K_c (N/m^1.5).
-
-    K_c depends on the pose through the curvature of each tube along its centre circle at the contact,
-    cos_i / (R_i + r_i cos_i) (cos_1 = -n.u_1, cos_2 = n.u_2: u_i the radial of circle i at the contact, n the
-    normal), and the cosine of the angle between the tangents t_1, t_2; these follow the contact angles s_1, s_2,
-    which move with the pose: s_2 as the nearest point of circle 2 to the point p_1 of circle 1
-    (ds_2 = t_2.dp_1 / rho, rho the distance of p_1 from the axis of ring 2), s_1 as the minimum of the distance
-    (the total differential of g'(s_1) = R_1 (p_1 - p_2).t_1 vanishes; its coefficient of ds_1 is g''/R_1).  The
-    derivatives of K_c over its three arguments are central differences of :func:`hertz_stiffness_curvatures`
-    (relative steps of 1e-6: their error about 1e-10 of the derivative).  A contact energy K_c phi(delta) then has
-    the loads of :func:`contact_force` plus -phi dK_c/dpose; ring 2's follow from the invariance of K_c under a
-    rigid motion of both rings (its force the opposite, its torque about its centre minus ring 1's minus
-    (c_1 - c_2) x that force).
-    """
-    M1 = np.empty((3, 3))
-    M2 = np.empty((3, 3))
-    rotation_matrix(q1, M1)
-    rotation_matrix(q2, M2)
-    cap = _ellipse_cap(law)
-    k1a, k1b, k2a, k2b, cosine = row[9], row[10], row[11], row[12], row[13]
-    K = hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, cosine, law[6], cap, table, step)
-    partials = np.empty(3)  # d ln K over k1a, k2a, the cosine
-    for a in range(3):
-        h = 1e-6 * ((abs(k1a) + k1b) if a == 0 else (abs(k2a) + k2b) if a == 1 else 1.0)
-        up = hertz_stiffness_curvatures(k1a + h * (a == 0), k1b, k2a + h * (a == 1), k2b, cosine + h * (a == 2),
-                                        law[6], cap, table, step)  # fmt: skip
-        down = hertz_stiffness_curvatures(k1a - h * (a == 0), k1b, k2a - h * (a == 1), k2b, cosine - h * (a == 2),
-                                          law[6], cap, table, step)  # fmt: skip
-        partials[a] = (up - down) / (2.0 * h * K)
-    C1, S1, C2, S2 = math.cos(row[1]), math.sin(row[1]), math.cos(row[2]), math.sin(row[2])
-    u1, t1, u2, t2, n, lever = np.empty(3), np.empty(3), np.empty(3), np.empty(3), np.empty(3), np.empty(3)
-    for i in range(3):
-        u1[i] = C1 * M1[i, 0] + S1 * M1[i, 1]
-        t1[i] = C1 * M1[i, 1] - S1 * M1[i, 0]
-        u2[i] = C2 * M2[i, 0] + S2 * M2[i, 1]
-        t2[i] = C2 * M2[i, 1] - S2 * M2[i, 0]
-        n[i] = row[6 + i]
-        lever[i] = R1 * u1[i]  # p_1 - c_1
-    f = row[14]
-    d = np.empty(3)  # p_1 - p_2
-    for i in range(3):
-        d[i] = f * n[i]
-    rho = R2 + f * (n[0] * u2[0] + n[1] * u2[1] + n[2] * u2[2])
-    cos1 = -(n[0] * u1[0] + n[1] * u1[1] + n[2] * u1[2])
-    cos2 = n[0] * u2[0] + n[1] * u2[1] + n[2] * u2[2]
-    tt = t1[0] * t2[0] + t1[1] * t2[1] + t1[2] * t2[2]
-    sign = 1.0 if tt >= 0.0 else -1.0
-    r1, r2 = 1.0 / k1b, 1.0 / k2b
-    dk1 = R1 / (R1 + r1 * cos1) ** 2  # d(k1a)/d(cos_1)
-    dk2 = R2 / (R2 + r2 * cos2) ** 2
-    # g''/R_1 = R_1 t_1.P t_1 - d.u_1 with P = I - (R_2/rho) t_2 t_2^T (dp_2 = (R_2/rho) t_2 t_2.dp_1)
-    t1t2 = tt
-    curvature = R1 * (1.0 - (R2 / rho) * t1t2 * t1t2) - (d[0] * u1[0] + d[1] * u1[1] + d[2] * u1[2])
-    a, w, dp1, dd, dn = np.empty(3), np.empty(3), np.empty(3), np.empty(3), np.empty(3)
-    wt1, wu1 = np.empty(3), np.empty(3)  # w x t_1, w x u_1
-    for e in range(6):
-        for i in range(3):
-            w[i] = 1.0 if e == 3 + i else 0.0
-        for i in range(3):  # the move of p_1 at fixed s_1: dc + w x (p_1 - c_1)
-            a[i] = (1.0 if e == i else 0.0) + w[(i + 1) % 3] * lever[(i + 2) % 3] - w[(i + 2) % 3] * lever[(i + 1) % 3]
-        for i in range(3):
-            wt1[i] = w[(i + 1) % 3] * t1[(i + 2) % 3] - w[(i + 2) % 3] * t1[(i + 1) % 3]
-            wu1[i] = w[(i + 1) % 3] * u1[(i + 2) % 3] - w[(i + 2) % 3] * u1[(i + 1) % 3]
-        t2a = t2[0] * a[0] + t2[1] * a[1] + t2[2] * a[2]
-        t1Pa = (t1[0] * a[0] + t1[1] * a[1] + t1[2] * a[2]) - (R2 / rho) * t1t2 * t2a
-        ds1 = -(t1Pa + (d[0] * wt1[0] + d[1] * wt1[1] + d[2] * wt1[2])) / curvature
-        for i in range(3):
-            dp1[i] = a[i] + R1 * t1[i] * ds1
-        ds2 = (t2[0] * dp1[0] + t2[1] * dp1[1] + t2[2] * dp1[2]) / rho
-        for i in range(3):
-            dd[i] = dp1[i] - R2 * t2[i] * ds2
-        nd = n[0] * dd[0] + n[1] * dd[1] + n[2] * dd[2]
-        for i in range(3):
-            dn[i] = (dd[i] - n[i] * nd) / f
-        du1n, dt1t2, du2n = 0.0, 0.0, 0.0
-        for i in range(3):
-            du1 = wu1[i] + t1[i] * ds1
-            dt1 = wt1[i] - u1[i] * ds1
-            du1n += dn[i] * u1[i] + n[i] * du1
-            du2n += dn[i] * u2[i] + n[i] * t2[i] * ds2
-            dt1t2 += dt1 * t2[i] - t1[i] * u2[i] * ds2
-        out[e] = partials[0] * dk1 * (-du1n) + partials[1] * dk2 * du2n + partials[2] * sign * dt1t2
-    return K
-
-
-@_jit()
-def contact_force(row, c1, v1, w1, c2, v2, w2, law, table, step, force, torque_1, torque_2):
-    """Force and torques of one contact row (module notes) between ring 1 and ring 2.
-
-    Parameters: ``row`` (FIELDS,); centres c (3,) m, velocities v (3,) m/s and angular velocities w (3,) rad/s,
-    all in space; ``law`` (LAW_PARAMETERS,) or (LAW_PARAMETERS + 1,): kind (0 Hertz of the curvatures, 1 the
-    power law K delta^n), K, n, gamma, mu, v_reg, E*[, the largest ln(B/A)]; ``table``, ``step``: the elliptical
-    factor (kind 0; :func:`ringchain.theory.elliptical_factor_grid`).
-    Writes the force on ring 1 (N; ring 2 gets its opposite) and the torques on rings 1 and 2 about their
-    centres (N m), all in space.  Returns (normal force N, stored energy J, dashpot power W, friction power W):
-    the powers are dissipated (>= 0).
-
-    With a constant K (the power law) the elastic force and torques are exactly the gradient of the stored
-    energy K delta^(n+1)/(n+1) (the gap is stationary in s_1 and s_2 at the minimum, and the contact point lies
-    on the common normal of the centre circles).  The Hertz stiffness of the curvatures changes with the pose
-    (the angle between the tubes, the place round each tube): the force here leaves out the pose derivative of
-    K, which :func:`stiffness_slopes` gives (the loads of :func:`~ringchain.numerics.engine.rings_step.loads` add
-    it, and are then the gradient of the stored energy).  v_reg = 0 is Coulomb's law itself (the friction
-    force jumps where the slip reverses).
-    """
-    for i in range(3):
-        force[i] = 0.0
-        torque_1[i] = 0.0
-        torque_2[i] = 0.0
-    delta = -row[0]
-    if not delta > 0.0:
-        return 0.0, 0.0, 0.0, 0.0
-    if law[0] == 0.0:
-        cap = _ellipse_cap(law)
-        K = hertz_stiffness_curvatures(row[9], row[10], row[11], row[12], row[13], law[6], cap, table, step)
-        n = 1.5
-    else:
-        K = law[1]
-        n = law[2]
-    elastic = K * delta * math.sqrt(delta) if n == 1.5 else K * delta**n
-    energy = elastic * delta / (n + 1.0)
-    # lever arms from the centres, and the velocity of ring 1's material point at the contact relative to ring 2's
-    a1 = (row[3] - c1[0], row[4] - c1[1], row[5] - c1[2])
-    a2 = (row[3] - c2[0], row[4] - c2[1], row[5] - c2[2])
-    rel = (
-        (v1[0] + w1[1] * a1[2] - w1[2] * a1[1]) - (v2[0] + w2[1] * a2[2] - w2[2] * a2[1]),
-        (v1[1] + w1[2] * a1[0] - w1[0] * a1[2]) - (v2[1] + w2[2] * a2[0] - w2[0] * a2[2]),
-        (v1[2] + w1[0] * a1[1] - w1[1] * a1[0]) - (v2[2] + w2[0] * a2[1] - w2[1] * a2[0]),
-    )
-    normal_speed = rel[0] * row[6] + rel[1] * row[7] + rel[2] * row[8]
-    delta_rate = -normal_speed
-    normal = elastic + law[3] * delta_rate
-    if normal < 0.0:
-        normal = 0.0
-    # the dashpot's share of the normal force (with the bracket: normal - elastic) and the power it takes
-    dashpot_power = (normal - elastic) * delta_rate
-    slip = (rel[0] - normal_speed * row[6], rel[1] - normal_speed * row[7], rel[2] - normal_speed * row[8])
-    slip2 = slip[0] * slip[0] + slip[1] * slip[1] + slip[2] * slip[2]
-    mu = law[4]
-    factor = 0.0
-    if mu > 0.0 and slip2 > 0.0:
-        factor = mu * normal / math.sqrt(slip2 + law[5] * law[5])
-    for i in range(3):
-        force[i] = normal * row[6 + i] - factor * slip[i]
-    friction_power = factor * slip2
-    torque_1[0] = a1[1] * force[2] - a1[2] * force[1]
-    torque_1[1] = a1[2] * force[0] - a1[0] * force[2]
-    torque_1[2] = a1[0] * force[1] - a1[1] * force[0]
-    torque_2[0] = -(a2[1] * force[2] - a2[2] * force[1])
-    torque_2[1] = -(a2[2] * force[0] - a2[0] * force[2])
-    torque_2[2] = -(a2[0] * force[1] - a2[1] * force[0])
-    return normal, energy, dashpot_power, friction_power
 
 
 numba.config.CACHE_DIR = _previous_cache_dir

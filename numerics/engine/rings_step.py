@@ -10,7 +10,7 @@ hold (:meth:`~ringchain.numerics.Rings.packed`):
 
 - ``coupling`` (n, 9): per ring [R, r, m, I_1 (a diameter), I_3 (the axis), fixed, reference centre (3, m)];
 - ``li``, ``lj``, ``kind`` (L,): the candidate pairs and their law (the kind of
-  :func:`~ringchain.numerics.engine.rings_kernels.contact_force`: 0 Hertz of the curvatures, 1 F = K delta^n);
+  :func:`~ringchain.numerics.engine.rings_law.contact_force`: 0 Hertz of the curvatures, 1 F = K delta^n);
 - ``par`` (1, L, 4): per pair [K (N/m^n), n, dashpot gamma (N s/m), friction coefficient mu];
 - ``spans`` (L,): per pair the effective modulus E* (Pa) of the Hertz law;
 - ``rest_vectors`` (L, 1 + MAX_CONTACTS): the warm start of each pair's contacts [count, the angles s_1 of
@@ -31,7 +31,7 @@ minimum of the distance of the two centre circles (warm-started Newton, the cold
 overlapping by delta = r_1 + r_2 - d where it is below the sum of the tube radii; the normal force
 [K delta^n + gamma d(delta)/dt]_+ and the regularised Coulomb friction at the contact point, forces and
 torques on both rings, and the loads of the pose derivatives of Hertz's K_c and of the shares of twin contacts
-by a fold (:func:`~ringchain.numerics.engine.rings_kernels.stiffness_slopes`,
+by a fold (:func:`~ringchain.numerics.engine.rings_law.stiffness_slopes`,
 :func:`~ringchain.numerics.engine.rings_kernels.fold_weights`), so that the elastic loads are the gradient of the
 stored energy (a rattle of four rings with Hertz's law holds its energy to 1.3e-11 of the impact's, 2e-7 without
 them).  Their dissipated power (dashpot and friction) is the rate of the state's dissipated energy W.
@@ -59,7 +59,7 @@ import math
 
 import numpy as np
 
-from . import rings_kernels
+from . import rings_kernels, rings_law
 from ._compiled import CACHE, Packed, jit
 from ._kernel_calls import announce_compile, kernel_array, verlet_arrays
 
@@ -97,7 +97,7 @@ def _pair(m, k, x, u, R, warm, load, rec, rows, vec, law, search, fold):
     """Forces and torques of the contacts of pair ``k`` at state (x, u), added to ``load`` (n, 6: force and torque
     about the ring's centre, in space); returns (dissipated power, elastic energy).  The pair's contacts are
     found by :func:`~ringchain.numerics.engine.rings_kernels.pair_contacts_warm` from ``warm[k]`` ([count, angles s_1
-    of the last minima]; updated) and loaded by :func:`~ringchain.numerics.engine.rings_kernels.contact_force`; the
+    of the last minima]; updated) and loaded by :func:`~ringchain.numerics.engine.rings_law.contact_force`; the
     CONTACTS deepest of them are described in ``rec`` (see :func:`contact_state`).  ``rows`` (MAX_CONTACTS,
     FIELDS), ``vec`` (9, 3) and ``law`` (LAW_PARAMETERS,) are work arrays (allocated once per evaluation).  Without
     ``search`` the contacts are followed from ``warm[k]`` by one Newton step
@@ -134,13 +134,13 @@ def _pair(m, k, x, u, R, warm, load, rec, rows, vec, law, search, fold):
         rec[slot, 0] = -np.inf
     for c in range(count):
         law[1], law[6] = m.par[0, k, 0] * weights[c], m.spans[k] * weights[c]  # the share of a contact by a fold
-        normal, stored, dashpot, friction = rings_kernels.contact_force(
+        normal, stored, dashpot, friction = rings_law.contact_force(
             rows[c], c1, v1, w1, c2, v2, w2, law, m.inv_top, m.floats[1], force, t1, t2)  # fmt: skip
         power += dashpot + friction
         energy += stored
         stored_energy[c] = stored
         if law[0] == 0.0 and stored > 0.0:  # Hertz's K_c changes with the pose: the loads of its change too
-            rings_kernels.stiffness_slopes(rows[c], c1, x[7 * i + 3 : 7 * i + 7], m.coupling[i, 0], c2,
+            rings_law.stiffness_slopes(rows[c], c1, x[7 * i + 3 : 7 * i + 7], m.coupling[i, 0], c2,
                                            x[7 * j + 3 : 7 * j + 7], m.coupling[j, 0], law, m.inv_top, m.floats[1],
                                            slopes_K)  # fmt: skip
             for a in range(3):  # ring 2: the opposite force, and minus ring 1's torque minus (c_1 - c_2) x its force
@@ -220,7 +220,7 @@ def loads(m, x, u, R, out, search=True):
             out[r, c] = 0.0
     power, energy = 0.0, 0.0
     rec, vec = np.empty((CONTACTS, 12)), np.empty((9, 3))
-    rows, law = np.empty((rings_kernels.MAX_CONTACTS, rings_kernels.FIELDS)), np.empty(rings_kernels.LAW_PARAMETERS)
+    rows, law = np.empty((rings_kernels.MAX_CONTACTS, rings_kernels.FIELDS)), np.empty(rings_law.LAW_PARAMETERS)
     fold = _fold_work()
     for k in range(m.li.size):
         pk, ek = _pair(m, k, x, u, R, m.rest_vectors, out, rec, rows, vec, law, search, fold)
@@ -301,7 +301,7 @@ def contact_state(m, xs, us, warm, out):
     R = np.empty((n, 3, 3))
     load = np.zeros((n, 6))
     vec = np.empty((9, 3))
-    rows, law = np.empty((rings_kernels.MAX_CONTACTS, rings_kernels.FIELDS)), np.empty(rings_kernels.LAW_PARAMETERS)
+    rows, law = np.empty((rings_kernels.MAX_CONTACTS, rings_kernels.FIELDS)), np.empty(rings_law.LAW_PARAMETERS)
     fold = _fold_work()
     # Search every time: n >= 0 is True typed as a plain bool, as the dopri5 loop's flag, so that _pair compiles
     # once for every caller (a literal True is a type of its own: a second compile of _pair, ~6 s of CPU).

@@ -397,7 +397,7 @@ class RingsDynamics:
         gravity = np.zeros((n, 7))
         gravity[~model.fixed, 2] = 1.0
         ints = np.array([2, 3, 7 * n, int(self.damped), n, L, 1, 0, 0, 0], dtype=np.int64)  # 1: search first
-        # The kind of rings_kernels.contact_force: 0 Hertz of the curvatures at each contact (E* per pair, the
+        # The kind of rings_law.contact_force: 0 Hertz of the curvatures at each contact (E* per pair, the
         # elliptical factor's table), 1 the given law F = K delta^n (Rings.stiffness, exponent).
         hertz = model.law == "hertz"
         kind = np.full(L, 0 if hertz else 1, dtype=np.int64)

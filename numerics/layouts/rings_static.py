@@ -70,7 +70,7 @@ delta ~ (m g / K)^(2/3) -- and each stage starts from the last.  The softest sta
 weight of 30 rings below a tenth of a tube radius (the paper's steel ring), so no pair unlinks.
 
 The loads are the gradient of the energy: the Hertz law's include the derivative of K_c over the pose
-(:func:`~ringchain.numerics.engine.rings_kernels.stiffness_slopes`), and a contact's share next to a fold
+(:func:`~ringchain.numerics.engine.rings_law.stiffness_slopes`), and a contact's share next to a fold
 (:func:`~ringchain.numerics.engine.rings_kernels.fold_weights`) enters with its own derivative (the loads of
 :func:`~ringchain.numerics.engine.rings_step.loads`).  Without them (measured before they were added) the loads
 missed the energy's central differences by 6-30 per cent at twin contacts whose maximum is in overlap, no step

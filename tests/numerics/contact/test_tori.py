@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 from ringchain.numerics.contact.tori import candidate_pairs, linking_number, torus_contacts
 from ringchain.numerics.engine import rings_kernels as rk
+from ringchain.numerics.engine import rings_law as rl
 from ringchain.theory import (
     Ring,
     contact_modulus,
@@ -498,7 +499,7 @@ def test_compiled_stiffness_equals_the_theory_function():
             expected = float(hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, angle, *STEEL, *STEEL))
         except ValueError:  # A <= 0: no single Hertz ellipse
             continue
-        K_c = rk.hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, np.cos(angle), E_star, 690.0, *GRID)
+        K_c = rl.hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, np.cos(angle), E_star, 690.0, *GRID)
         assert K_c == pytest.approx(expected, rel=1e-13)  # the same arithmetic in another order: rounding
 
 
@@ -508,14 +509,14 @@ def test_stiffness_at_a_found_crossing_is_hertz_stiffness(degrees):
     c1, q1, c2, q2 = crossing(theta)
     contacts = torus_contacts(c1, q1, RING, c2, q2, RING, margin=np.inf)
     row = contacts.rows[0]
-    K_c = rk.hertz_stiffness_curvatures(*row[9:14], float(contact_modulus(*STEEL)), 690.0, *GRID)
+    K_c = rl.hertz_stiffness_curvatures(*row[9:14], float(contact_modulus(*STEEL)), 690.0, *GRID)
     # the table's resolution, and the curvatures of the found minimum: s to 1e-13 rad changes cos(phi) by its
     # square, and the tangents' angle by 1e-13 rad
     assert K_c == pytest.approx(float(hertz_stiffness(R, r, *STEEL, theta)), rel=GRID_TOLERANCE + 1e-12)
 
 
 def reference_force(row, c1, v1, w1, c2, v2, w2, K, n, gamma, mu, v_reg):
-    """The law of rings_kernels.contact_force in NumPy, written from its documentation."""
+    """The law of rings_law.contact_force in NumPy, written from its documentation."""
     delta = -row[0]
     point, normal = row[3:6], row[6:9]
     if delta <= 0:
@@ -541,7 +542,7 @@ def test_contact_force_against_the_numpy_reference_and_its_invariants(mu):
     force, torque_1, torque_2 = np.empty(3), np.empty(3), np.empty(3)
     for _ in range(20):
         v1, w1, v2, w2 = rng.normal(size=(4, 3)) * [[0.1], [5.0], [0.1], [5.0]]
-        out = rk.contact_force(row, c1, v1, w1, c2, v2, w2, law, *GRID, force, torque_1, torque_2)
+        out = rl.contact_force(row, c1, v1, w1, c2, v2, w2, law, *GRID, force, torque_1, torque_2)
         F, T1, T2, F_n, energy, dashpot, friction = reference_force(
             row, c1, v1, w1, c2, v2, w2, 3e9, 1.3, 40.0, mu, 1e-3
         )
@@ -567,7 +568,7 @@ def test_contact_force_is_central_without_friction_and_zero_when_open(cap):
     law = np.array(law if cap is None else [*law, cap])  # a circle: no cap of ln(B/A) changes it
     force, torque_1, torque_2 = np.empty(3), np.empty(3), np.empty(3)
     zero = np.zeros(3)
-    F_n, energy, _, _ = rk.contact_force(row, c1, zero, zero, c2, zero, zero, law, *GRID, force, torque_1, torque_2)
+    F_n, energy, _, _ = rl.contact_force(row, c1, zero, zero, c2, zero, zero, law, *GRID, force, torque_1, torque_2)
     # Eq. (1): K_c delta^(3/2) with delta = 1 um, along the chain axis (the contact point on it: no torque)
     K_c = float(hertz_stiffness(R, r, *STEEL))
     assert F_n == pytest.approx(K_c * 1e-9, rel=1e-9)  # delta from the gap: rounding of 1e-6 m against R
@@ -576,7 +577,7 @@ def test_contact_force_is_central_without_friction_and_zero_when_open(cap):
     assert np.allclose(torque_1, 0.0, atol=1e-9 * F_n * R) and np.allclose(torque_2, 0.0, atol=1e-9 * F_n * R)
     row = row.copy()
     row[0] = 1e-9  # open
-    assert rk.contact_force(row, c1, zero, zero, c2, zero, zero, law, *GRID, force, torque_1, torque_2) == (0, 0, 0, 0)
+    assert rl.contact_force(row, c1, zero, zero, c2, zero, zero, law, *GRID, force, torque_1, torque_2) == (0, 0, 0, 0)
     assert not force.any()
 
 
@@ -586,9 +587,9 @@ def test_compiled_stiffness_is_capped_continuously_where_a_vanishes():
     # at the cap: the theory's K_c of the ellipse with ln(B/A) = 10 (surface 1 with curvatures 2A, 2B on a plane)
     at_cap = float(hertz_stiffness_curvatures(2 * B * np.exp(-cap), 2 * B, 0.0, 0.0, 0.0, *STEEL, *STEEL))
     for A in (0.0, -1.0, B * np.exp(-cap) * (1 - 1e-9)):  # degenerate, beyond, and just beyond the cap
-        K_c = rk.hertz_stiffness_curvatures(2 * A, 2 * B, 0.0, 0.0, 1.0, E_star, cap, *GRID)
+        K_c = rl.hertz_stiffness_curvatures(2 * A, 2 * B, 0.0, 0.0, 1.0, E_star, cap, *GRID)
         assert K_c == pytest.approx(at_cap, rel=GRID_TOLERANCE + 1e-9)  # the last: K_c moves by 1e-9 / 2 of A
-    below = rk.hertz_stiffness_curvatures(2 * B * np.exp(-cap) * (1 + 1e-9), 2 * B, 0.0, 0.0, 1.0, E_star, cap, *GRID)
+    below = rl.hertz_stiffness_curvatures(2 * B * np.exp(-cap) * (1 + 1e-9), 2 * B, 0.0, 0.0, 1.0, E_star, cap, *GRID)
     assert below == pytest.approx(at_cap, rel=1e-8)  # continuous through the cap
 
 
@@ -638,7 +639,7 @@ def test_power_law_force_and_torques_are_the_gradient_of_its_energy():
     (row,) = torus_contacts(c1, quaternion(rot1), RING, c2, quaternion(rot2), RING).rows
     force, torque_1, torque_2 = np.empty(3), np.empty(3), np.empty(3)
     zero = np.zeros(3)
-    rk.contact_force(row, c1, zero, zero, c2, zero, zero, law, *GRID, force, torque_1, torque_2)
+    rl.contact_force(row, c1, zero, zero, c2, zero, zero, law, *GRID, force, torque_1, torque_2)
     step, turn = 1e-9, 1e-7  # m, rad: truncation (step/delta)^2 ~ 1e-7 against rounding of the gap (1e-18/1e-15)
     for axis in np.eye(3):
         push = (energy(c1 + step * axis, rot1) - energy(c1 - step * axis, rot1)) / (2 * step)

@@ -153,7 +153,7 @@ def test_conservation_without_losses(law):
     assert sim.link_force.max() > 0.0  # the rings did collide
     # Energy to 1e-8 of the impact energy, momentum to 1e-12, angular momentum to 1e-10 (the issue).  The Hertz law
     # takes K_c from the curvatures at the contact, which change with the pose; its loads include the derivative of
-    # K_c (rings_kernels.stiffness_slopes), so they are the gradient of K_c delta^(5/2)/(5/2) too (measured: 1.3e-11
+    # K_c (rings_law.stiffness_slopes), so they are the gradient of K_c delta^(5/2)/(5/2) too (measured: 1.3e-11
     # of the impact energy; 2e-7 without that derivative).
     assert np.ptp(energy.total) <= 1e-8 * impact
     p = sim.linear_momentum()

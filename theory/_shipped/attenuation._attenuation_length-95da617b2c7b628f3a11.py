@@ -1,7 +1,0 @@
-# ringchain generated code v1 sha256=05e7afdc0ff2c95fa934257673280c1733140efcd25356e804e0303b3c8e842a
-# derivation: attenuation._attenuation_length
-# source key: f3be020559998432f519 (theory/*.py, sympy 1.14.0, numpy 2.4.6)
-# arguments: n, a, sigma_Z
-# expression sha256: c006f1ce24c0adab1e8a4c6bcc5c7f23bb75a58176f89fd31cdb04dd7d590c42 (of its srepr)
-def _lambdifygenerated(n, a, sigma_Z):
-    return (1/24)*a*(n - 5)*(n + 1)**2/(sigma_Z**2*(1 - n))

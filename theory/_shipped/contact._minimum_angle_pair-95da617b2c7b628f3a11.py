@@ -1,7 +1,0 @@
-# ringchain generated code v1 sha256=dffb3ef6dea7801cba6a2991a790ff5c1d576c467751519df9939bf96e0f1c24
-# derivation: contact._minimum_angle_pair
-# source key: f3be020559998432f519 (theory/*.py, sympy 1.14.0, numpy 2.4.6)
-# arguments: R_1, r_1, R_2, r_2
-# expression sha256: 2395f2c0189329a23d57f0db5ed475415e7ad6c0338c8239b1f6d48740869674 (of its srepr)
-def _lambdifygenerated(R_1, r_1, R_2, r_2):
-    return numpy.arcsin(numpy.sqrt(r_1 + r_2)*numpy.sqrt(R_1 + R_2 - r_1 - r_2)/(numpy.sqrt(R_1)*numpy.sqrt(R_2)))

@@ -1,8 +1,0 @@
-# ringchain generated code v1 sha256=a49c103eaad791cd7b5c0513c32fa9a49cebaf55213e72d93e9de3d766aff66c
-# derivation: linear._power_law_top
-# source key: f3be020559998432f519 (theory/*.py, sympy 1.14.0, numpy 2.4.6)
-# arguments: F_0, K, n, m
-# expression sha256: 1608b90f5fab4fef0955b1d13283288848aad2698d39d3b6ad3eb3bc667dd20c (of its srepr)
-def _lambdifygenerated(F_0, K, n, m):
-    x0 = (1/2)/n
-    return 2*F_0**(1/2 - x0)*K**x0*numpy.sqrt(n)/numpy.sqrt(m)

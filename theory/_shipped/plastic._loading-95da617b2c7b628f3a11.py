@@ -1,8 +1,0 @@
-# ringchain generated code v1 sha256=c085bf07a72c8ab10ef22c316a3b30b43e5b7cd2e22c465f03e0ff59998f917a
-# derivation: plastic._loading
-# source key: f3be020559998432f519 (theory/*.py, sympy 1.14.0, numpy 2.4.6)
-# arguments: delta, K_c, delta_y
-# expression sha256: 829c8391ea97190d4556acc8f4b7d238188d1ff2b13e5ed6139d195aee3d7325 (of its srepr)
-def _lambdifygenerated(delta, K_c, delta_y):
-    x0 = K_c*numpy.sqrt(delta_y)
-    return ((1/2)*x0*(3*delta - delta_y), (3/2)*x0,)
