@@ -128,14 +128,19 @@ async def _full_page(tools: _DevTools, width: int) -> bytes:
         await tools.call("Emulation.setDeviceMetricsOverride", width=width, height=height, deviceScaleFactor=1,
                          mobile=False)  # fmt: skip
         await tools.call("Runtime.evaluate", expression=_TWO_FRAMES, awaitPromise=True)
-    shot = await tools.call("Page.captureScreenshot", format="png")
+    # optimizeForSpeed: a faster, larger PNG (measured: a quarter larger, the check's CPU time a tenth less).
+    shot = await tools.call("Page.captureScreenshot", format="png", optimizeForSpeed=True)
     await tools.call("Emulation.setDeviceMetricsOverride", width=width, height=VIEWPORT_HEIGHT, deviceScaleFactor=1,
                      mobile=False)  # fmt: skip
     return base64.b64decode(shot["data"])
 
 
-async def _inspect(port: int, pages: list[str], out: Path, timeout: float, width: int) -> list[dict]:
-    """Every page at one window width, in a browser of its own."""
+async def _inspect(port: int, pages: list[str], out: Path, timeout: float) -> list[dict]:
+    """Every page of ``pages`` at every width of :data:`WIDTHS`, in a browser of its own: each page is loaded once,
+    at the first width, and checked and captured at each width in turn (the window resized in between: the
+    book's layout at a width is its style sheets', which follow the window as it changes).  A page's load (its
+    scripts, MathJax's typesetting, its images) is most of the check's time: one load per page instead of one per
+    width halved the check's CPU time."""
     from tornado.websocket import websocket_connect
 
     profile = tempfile.mkdtemp(prefix="ringchain-chromium-")
@@ -159,24 +164,25 @@ async def _inspect(port: int, pages: list[str], out: Path, timeout: float, width
         url = next(t["webSocketDebuggerUrl"] for t in targets if t["type"] == "page")
         tools = _DevTools(await websocket_connect(url, max_message_size=1 << 30))
         await tools.call("Page.enable")
-        metrics = dict(width=width, height=VIEWPORT_HEIGHT, deviceScaleFactor=1, mobile=False)
-        await tools.call("Emulation.setDeviceMetricsOverride", **metrics)
         for page in pages:
+            await _window(tools, WIDTHS[0])
             tools.events.clear()
             await tools.call("Page.navigate", url=f"http://127.0.0.1:{port}/{page}.html")
             await asyncio.wait_for(tools.event("Page.loadEventFired"), timeout)
-            result = await asyncio.wait_for(
-                tools.call("Runtime.evaluate", expression=CHECK_SCRIPT, awaitPromise=True, returnByValue=True),
-                timeout,
-            )
-            if "exceptionDetails" in result:
-                raise RuntimeError(f"{page}: the check script failed: {result['exceptionDetails']}")
-            for kind, where, detail in json.loads(result["result"]["value"]):
-                findings.append({"page": page, "width": width, "kind": kind, "where": where, "detail": detail})
-            if page in WINDOW_PAGES:  # what the window shows, for comparison with the top of the full page
-                shot = await tools.call("Page.captureScreenshot", format="png")
-                (out / "windows" / f"{page}-{width}.png").write_bytes(base64.b64decode(shot["data"]))
-            (out / f"{page}-{width}.png").write_bytes(await _full_page(tools, width))
+            for width in WIDTHS:
+                await _window(tools, width)
+                result = await asyncio.wait_for(
+                    tools.call("Runtime.evaluate", expression=CHECK_SCRIPT, awaitPromise=True, returnByValue=True),
+                    timeout,
+                )
+                if "exceptionDetails" in result:
+                    raise RuntimeError(f"{page}: the check script failed: {result['exceptionDetails']}")
+                for kind, where, detail in json.loads(result["result"]["value"]):
+                    findings.append({"page": page, "width": width, "kind": kind, "where": where, "detail": detail})
+                if page in WINDOW_PAGES:  # what the window shows, for comparison with the top of the full page
+                    shot = await tools.call("Page.captureScreenshot", format="png")
+                    (out / "windows" / f"{page}-{width}.png").write_bytes(base64.b64decode(shot["data"]))
+                (out / f"{page}-{width}.png").write_bytes(await _full_page(tools, width))
         tools.connection.close()
         await asyncio.wait_for(tools.connection.read_message(), 10)  # None once the socket is closed
     finally:
@@ -189,11 +195,21 @@ async def _inspect(port: int, pages: list[str], out: Path, timeout: float, width
     return findings
 
 
-async def _every_width(port: int, pages: list[str], out: Path, timeout: float) -> list[dict]:
-    """The widths side by side, one browser each (the check is the build's last serial step: two browsers
-    halve its wall time on two cores); the findings in the order of :data:`WIDTHS`, then of ``pages``."""
-    found = await asyncio.gather(*(_inspect(port, pages, out, timeout, width) for width in WIDTHS))
-    return [finding for per_width in found for finding in per_width]
+async def _window(tools: _DevTools, width: int) -> None:
+    """The window ``width`` px wide and :data:`VIEWPORT_HEIGHT` tall, laid out and painted."""
+    await tools.call("Emulation.setDeviceMetricsOverride", width=width, height=VIEWPORT_HEIGHT, deviceScaleFactor=1,
+                     mobile=False)  # fmt: skip
+    await tools.call("Runtime.evaluate", expression=_TWO_FRAMES, awaitPromise=True)
+
+
+async def _every_page(port: int, pages: list[str], out: Path, timeout: float) -> list[dict]:
+    """The pages in two halves side by side, one browser each (the check is the build's last serial step: two
+    browsers halve its wall time on two cores); the findings in the order of :data:`WIDTHS`, then of ``pages``."""
+    halves = [pages[0::2], pages[1::2]]
+    found = await asyncio.gather(*(_inspect(port, half, out, timeout) for half in halves if half))
+    order = {page: i for i, page in enumerate(pages)}
+    findings = [finding for per_half in found for finding in per_half]
+    return sorted(findings, key=lambda f: (WIDTHS.index(f["width"]), order[f["page"]]))
 
 
 def check(site: Path, out: Path, pages: list[str] | None = None, timeout: float = 120.0) -> list[dict]:
@@ -210,7 +226,7 @@ def check(site: Path, out: Path, pages: list[str] | None = None, timeout: float 
     thread.start()
     try:
         (out / "windows").mkdir(exist_ok=True)
-        findings = asyncio.run(_every_width(server.server_address[1], pages, out, timeout))
+        findings = asyncio.run(_every_page(server.server_address[1], pages, out, timeout))
     finally:
         server.shutdown()
         server.server_close()

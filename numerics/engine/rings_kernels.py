@@ -271,7 +271,8 @@ def _pose(c1, q1, c2, q2, M1, M2, k):
 @_jit()
 def _posed(c1, q1, c2, q2, extra):
     """The rotation matrices M1, M2 and the coefficients k of a pose (:func:`_pose`) in a new work array, with
-    ``extra`` numbers more: (M1, M2, k, the extra numbers)."""
+    ``extra`` numbers more: (M1, M2, k, the extra numbers).  Every caller passes MAX_CONTACTS (whether it uses the
+    extra numbers or not): a literal is a Numba type of its own, and two of them would compile it twice."""
     work = np.empty(27 + extra)
     M1 = work[:9].reshape((3, 3))
     M2 = work[9:18].reshape((3, 3))
@@ -331,7 +332,9 @@ def _scan(k, c1, M1, R1, r1, c2, M2, R2, r2, n_scan, out):
         return LINE_POINTS, 0
     iterations = 0
     minima = np.empty(out.shape[0])
-    rows = 0
+    # Ints typed int64, not literals (each literal is a Numba type of its own: _keep and _fine_look would compile
+    # once per literal they are called with).
+    rows = np.int64(0)
     fine = h / 32.0
     for i in range(found):
         a = brackets[i, 0] * h
@@ -339,10 +342,10 @@ def _scan(k, c1, M1, R1, r1, c2, M2, R2, r2, n_scan, out):
         iterations += it
         rows = _keep(minima, rows, s)
         if _inflection_near(k, R1, R2, s, h):  # a twin may hide next to this minimum: 2 h each side again at h/32
-            rows, it = _fine_look(k, R1, R2, s - 2.0 * h, 128, fine, minima, rows)
+            rows, it = _fine_look(k, R1, R2, s - 2.0 * h, np.int64(128), fine, minima, rows)
             iterations += it
     for i in range(hidden):  # after the brackets' minima, so that those keep the angles of their own refinement
-        rows, it = _fine_look(k, R1, R2, dips[i] * h, 32, fine, minima, rows)
+        rows, it = _fine_look(k, R1, R2, dips[i] * h, np.int64(32), fine, minima, rows)
         iterations += it
     for i in range(rows):
         _fields(k, c1, M1, r1, R1, c2, M2, R2, r2, minima[i], 0.0, out[i])
@@ -520,7 +523,7 @@ def pair_contacts(c1, q1, R1, r1, c2, q2, R2, r2, n_scan, out):
     R2, r2 (m); n_scan samples of the scan; ``out`` (MAX_CONTACTS, FIELDS) receives one row per minimum
     (module notes).  Returns (number of rows, Newton iterations spent in the refinement).
     """
-    M1, M2, k, _ = _posed(c1, q1, c2, q2, 0)
+    M1, M2, k, _ = _posed(c1, q1, c2, q2, MAX_CONTACTS)
     return _scan(k, c1, M1, R1, r1, c2, M2, R2, r2, n_scan, out)
 
 
@@ -590,7 +593,7 @@ def pair_contacts_follow(c1, q1, R1, r1, c2, q2, R2, r2, s_previous, n_previous,
     g'' ds^2/2 (second order).  Returns 0 if a Newton step met g'' <= 0 (that minimum is no longer near: search
     again), else 1 (with no Newton step, always 1).
     """
-    M1, M2, k, _ = _posed(c1, q1, c2, q2, 0)
+    M1, M2, k, _ = _posed(c1, q1, c2, q2, MAX_CONTACTS)
     ok = 1
     for i in range(n_previous):
         s = s_previous[i]

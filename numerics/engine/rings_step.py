@@ -112,13 +112,16 @@ def _pair(m, k, x, u, R, warm, load, rec, rows, vec, law, search, fold):
         w1[c] = R[i, c, 0] * u[7 * i + 3] + R[i, c, 1] * u[7 * i + 4] + R[i, c, 2] * u[7 * i + 5]
         w2[c] = R[j, c, 0] * u[7 * j + 3] + R[j, c, 1] * u[7 * j + 4] + R[j, c, 2] * u[7 * j + 5]
     count = int(warm[k, 0])
+    # The ints passed on are typed int64 (np.int64), not as literals: a literal (a module constant, a number) is a
+    # Numba type of its own, and the search (with its scan) would compile again for the batch query's int64 calls.
     if search or count == 0 or rings_kernels.pair_contacts_follow(
         c1, x[7 * i + 3 : 7 * i + 7], m.coupling[i, 0], m.coupling[i, 1], c2, x[7 * j + 3 : 7 * j + 7],
-        m.coupling[j, 0], m.coupling[j, 1], warm[k, 1:], count, 1, rows,
+        m.coupling[j, 0], m.coupling[j, 1], warm[k, 1:], count, np.int64(1), rows,
     ) == 0:  # fmt: skip
         count, _, _ = rings_kernels.pair_contacts_warm(
             c1, x[7 * i + 3 : 7 * i + 7], m.coupling[i, 0], m.coupling[i, 1], c2, x[7 * j + 3 : 7 * j + 7],
-            m.coupling[j, 0], m.coupling[j, 1], rings_kernels.N_SCAN, warm[k, 1:], int(warm[k, 0]), 8, rows,
+            m.coupling[j, 0], m.coupling[j, 1], np.int64(rings_kernels.N_SCAN), warm[k, 1:], int(warm[k, 0]),
+            np.int64(8), rows,
         )  # fmt: skip
         warm[k, 0] = count
         for c in range(count):
