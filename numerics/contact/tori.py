@@ -38,8 +38,9 @@ it follows (such a minimum starts shallower than the followed minimum downhill o
 search every few steps, and whenever a pair has turned by more than about h/4 since its last one.  Within a step
 (the stages of a Runge-Kutta method) :func:`~ringchain.numerics.engine.rings_kernels.pair_contacts_follow` takes one
 Newton step from the step's angles with no check: the gap is stationary at its minimum, so what is left is of second
-order.  Measured processor time per pair (1.5 minima each, R/r = 9, a loaded machine): cold 2.0 us, warm 1.1 us,
-followed 0.6 us.
+order.  Measured processor time per pair (1.5 minima each, R/r = 9, benchmarks/bench_rings_contact.py on a loaded
+machine, with the look between samples of :mod:`~ringchain.numerics.engine.rings_kernels`): cold 2.8 us, warm 1.5 us,
+followed 0.9 us (before that look: 2.0, 1.1 and 0.6 us).
 
 The broad phase (:func:`candidate_pairs`): pairs of rings whose bounding spheres (radius R + r about the
 centre) come within ``skin`` of each other, linked or not, from a k-d tree; rebuilt when a ring has moved
