@@ -258,29 +258,56 @@ class _Problem:
 def _preconditioner(problem, grad):
     """The solve x -> (H + sigma I)^(-1) x with H the symmetric part of the stiffness matrix at the base pose (its
     gradient there ``grad``), sigma the smallest of 1e-8, 1e-6, ... times its largest diagonal that makes it
-    positive definite (:func:`_positive_factor`)."""
+    positive definite (:func:`_factor`), or None where no such shift is found (its matrix not finite)."""
     from scipy import sparse
 
     matrix = problem.stiffness(grad)
     symmetric = (0.5 * (matrix + matrix.T)).tocsc()
     size = symmetric.shape[0]
-    sigma = 1e-8 * max(float(np.max(np.abs(symmetric.diagonal()))), 1.0)
-    while (factor := _positive_factor(symmetric + sigma * sparse.identity(size))) is None:
+    largest = float(np.max(np.abs(symmetric.diagonal()), initial=0.0))
+    if not np.isfinite(largest):  # no shift makes it finite (the checks of _factor refuse it)
+        return None
+    sigma = 1e-8 * max(largest, 1.0)
+    while (factor := _factor(symmetric + sigma * sparse.identity(size))) is None:
         sigma *= 100.0
+        if sigma > 1e8 * max(largest, 1.0):  # the shift dwarfs the matrix: no preconditioner left to keep
+            return None
     return factor.solve
 
 
-def _positive_factor(matrix):
-    """The sparse LU factors of a symmetric matrix without pivoting off the diagonal (SuperLU), or None where it is
-    not positive definite (a pivot zero or negative: the pivots give its inertia)."""
-    from scipy.sparse.linalg import splu
+#: Largest normwise backward error of a solve by the factors of :func:`_factor` (its check): far above the rounding
+#: of a stable factorisation (a small multiple of the machine's epsilon, at most its size times it: 1e-12 for 5,000
+#: unknowns), far below that of factors SuperLU spoilt (of order one).
+BACKWARD = 1e-8
 
+
+def _factor(matrix, positive=True):
+    """The sparse LU factors (SuperLU) of a matrix, or None where they are not to be trusted.
+
+    ``positive``: the matrix is symmetric, factorised without pivoting off the diagonal, and refused where it is not
+    positive definite (a pivot zero or negative: the pivots give its inertia); else with SuperLU's partial pivoting.
+    Refused too: a matrix with an entry not finite, and factors whose solve of a probe (b = A 1) is not finite or
+    has a backward error above ``BACKWARD``.  SuperLU does not check: on such a matrix its triangular solves pass
+    BLAS an illegal leading dimension (its BLAS prints "On entry to DTRSV parameter number 6 had an illegal value"
+    and returns), and the solution is garbage."""
+    from scipy.sparse.linalg import norm, splu
+
+    matrix = matrix.tocsc()
+    if not np.all(np.isfinite(matrix.data)):
+        return None
+    options = {"permc_spec": "MMD_AT_PLUS_A", "diag_pivot_thresh": 0.0, "options": {"SymmetricMode": True}}
     try:
-        factor = splu(matrix.tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
-                      options={"SymmetricMode": True})  # fmt: skip
+        factor = splu(matrix, **(options if positive else {}))
     except RuntimeError:  # a pivot exactly zero
         return None
-    return factor if np.all(factor.U.diagonal() > 0.0) else None
+    if positive and not np.all(factor.U.diagonal() > 0.0):
+        return None
+    probe = matrix @ np.ones(matrix.shape[0])
+    solution = factor.solve(probe)
+    if not np.all(np.isfinite(solution)):
+        return None
+    scale = norm(matrix, np.inf) * np.max(np.abs(solution), initial=0.0) + np.max(np.abs(probe), initial=0.0)
+    return factor if np.max(np.abs(matrix @ solution - probe), initial=0.0) <= BACKWARD * scale else None
 
 
 def _descent(problem, tol, max_iterations):
@@ -305,6 +332,8 @@ def _descent(problem, tol, max_iterations):
             step -= ratios[-1] * y
         if factor is not None:
             step = factor(step)  # the initial inverse Hessian: the stiffness matrix's
+            if not np.all(np.isfinite(step)):  # factors that passed their probe but fail here: dropped till the
+                factor, step = None, -grad  # next build (the step below then goes along the gradient)
         elif memory:
             s, y, rho = memory[-1]
             step *= 1.0 / (rho * (y @ y))  # the initial inverse Hessian s.y / y.y
@@ -363,7 +392,6 @@ def _newton(problem, tol, max_iterations):
     """The pseudo-transient Newton iterations of the module notes on ``problem`` until max |gradient| <= tol; returns
     the number of iterations (accepted or not)."""
     from scipy import sparse
-    from scipy.sparse.linalg import splu
 
     size = 6 * problem.moving.size
     energy, grad = problem.evaluate(np.zeros(size))
@@ -378,16 +406,16 @@ def _newton(problem, tol, max_iterations):
             matrix = problem.stiffness(grad)
             symmetric = (0.5 * (matrix + matrix.T)).tocsc()
         shift = sparse.identity(size) / tau
-        factor = _positive_factor(symmetric + shift)
+        factor = _factor(symmetric + shift)
         if factor is None:
             tau *= 0.25
             continue
         step = factor.solve(-grad)
         if tau >= NEWTON:  # near the solution, the step of the matrix itself (symmetric but for its finite
-            try:  # differences): Newton's, quadratic
-                step = splu((matrix + shift).tocsc()).solve(-grad)
-            except RuntimeError:  # a singular factor: keep the symmetric step
-                pass
+            # differences): Newton's, quadratic; where its factors are refused, the symmetric step
+            unsymmetric = _factor(matrix + shift, positive=False)
+            newton = unsymmetric.solve(-grad) if unsymmetric is not None else step
+            step = newton if np.all(np.isfinite(newton)) else step
         largest = np.max(np.abs(step))
         if not np.isfinite(largest):
             tau *= 0.25
