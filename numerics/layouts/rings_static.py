@@ -110,6 +110,12 @@ SOFTENING = (1e-3, 1e-2, 1e-1, 1.0)
 #: of the loads (about 1e-10 m g over stiffnesses of 1e4 m g / r).
 DIFFERENCE = 1e-7
 
+#: Largest mismatch of the energy's change over a finite difference of the stiffness matrix and the trapezoid rule on
+#: its gradients, as a fraction of their size, below which the difference is taken as a derivative
+#: (:meth:`_Problem.difference`): a smooth energy meets it to 1e-4 or better at ``DIFFERENCE`` (measured next to a
+#: contact whose stiffness grows a hundredfold within 1e-4 r: 1.4e-4), a cliff of Hertz's stiffness misses by about 1.
+SMOOTH = 0.1
+
 #: Accepted steps of the first phase of each stage (module notes), preconditioned L-BFGS.
 DESCENT = 20000
 
@@ -170,6 +176,9 @@ class _Problem:
         self.centres, self.orientations = (network.centres.copy(), network.orientations.copy()) if start is None \
             else start  # fmt: skip
         self.evaluations = 0  # of the loads, counted for the record of the phases
+        # Energies closer than this differ by rounding (1e-13 of a weight lifted by a tube radius, per free ring), J.
+        self.rounding = 1e-13 * max(self.moving.size, 1) * self.weight * self.length
+        self.dropped = 0  # columns of the stiffness matrices left out (both differences across a cliff: stiffness)
 
     def axes(self):
         """The axes (free rings, 3) of the free rings in space at the base pose."""
@@ -213,8 +222,26 @@ class _Problem:
         self.centres, self.orientations = self.pose(x)
         self.orientations /= np.linalg.norm(self.orientations, axis=1, keepdims=True)
 
+    def difference(self, x, energy, grad):
+        """The change of the gradient over the small move x from the base pose (energy there ``energy``, J, and
+        gradient ``grad``, on the followed contacts), divided by ``DIFFERENCE``: forward, or backward where the
+        forward move crosses a cliff of the energy; None where both do.
+
+        A cliff: the energy's change differs from the trapezoid rule on the two gradients, (g_0 + g_1).x / 2, by more
+        than ``SMOOTH`` of its size (and the rounding), which a smooth energy meets to O(|x|^3).  Hertz's stiffness of
+        the curvatures jumps there by up to 1e140 (module notes), and a difference across it is no derivative."""
+        scale = self.weight * self.length  # J per unit of gradient times move
+        for sign in (1.0, -1.0):
+            moved_energy, moved = self.evaluate(sign * x, cold=False)
+            change = moved_energy - energy
+            trapezoid = 0.5 * scale * float((grad + moved) @ (sign * x))
+            if abs(change - trapezoid) <= SMOOTH * (abs(change) + abs(trapezoid)) + self.rounding:
+                return sign * (moved - grad) / DIFFERENCE
+        return None
+
     def stiffness(self, grad):
-        """The sparse stiffness matrix d(grad)/dx at the base pose (grad its gradient there)."""
+        """The sparse stiffness matrix d(grad)/dx at the base pose (grad its gradient there), by differences of the
+        gradient on the followed contacts (:meth:`difference`)."""
         from scipy import sparse
 
         free = self.moving
@@ -230,11 +257,15 @@ class _Problem:
                 neighbours[index[j]].add(index[i])
         rows, cols, values = [], [], []
         offsets = np.arange(6)
+        energy, _ = self.evaluate(np.zeros(6 * free.size), cold=False)  # the base's energy on the followed contacts
         for group in _colours(neighbours):
             for d in range(6):
                 x = np.zeros((free.size, 6))
                 x[group, d] = DIFFERENCE
-                column = (self.evaluate(x.ravel(), cold=False)[1] - grad) / DIFFERENCE
+                column = self.difference(x.ravel(), energy, grad)
+                if column is None:  # a cliff either side (both within DIFFERENCE of the base): left out
+                    self.dropped += 1
+                    continue
                 for i in group:
                     near = np.fromiter((i, *neighbours[i]), dtype=np.int64)
                     r = (6 * near[:, None] + offsets).ravel()
@@ -318,7 +349,7 @@ def _descent(problem, tol, max_iterations):
     energy, grad = problem.evaluate(np.zeros(size))
     grad = problem.project(grad)
     scale = problem.weight * problem.length  # J per unit of gradient times step
-    rounding = 1e-13 * max(problem.moving.size, 1) * scale  # as in _newton
+    rounding = problem.rounding
     memory = []  # the last MEMORY pairs (step s, change of the gradient y, 1 / s.y)
     iterations, forced, gamma = 0, 0, None
     factor, built = None, -REFRESH  # the preconditioner (module notes) and the step it was built at
@@ -395,8 +426,7 @@ def _newton(problem, tol, max_iterations):
 
     size = 6 * problem.moving.size
     energy, grad = problem.evaluate(np.zeros(size))
-    # Energies below this differ by rounding (1e-13 of a weight lifted by a tube radius, per free ring).
-    rounding = 1e-13 * max(problem.moving.size, 1) * problem.weight * problem.length
+    rounding = problem.rounding
     tau, matrix = 1.0, None  # pseudo-time step: (I / tau + H) dx = -g
     residual = np.linalg.norm(grad)
     for iteration in range(max_iterations):

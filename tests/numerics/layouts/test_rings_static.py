@@ -241,3 +241,62 @@ def test_the_preconditioner_of_a_matrix_not_finite_is_none():
     matrix = _positive_definite(20, seed=9).tolil()
     matrix[4, 4] = np.nan
     assert rings_static._preconditioner(_Matrix(matrix.tocsc()), None) is None
+
+
+def _cliff(problem, dof, sides):
+    """Wrap the loads of ``problem`` with a cliff of the energy (1e100 J, its gradient 1e110) where the move of ``dof``
+    passes half the finite-difference step, on the given sides (+1, -1): a stand-in for Hertz's stiffness of the
+    curvatures capped at ln(B/A) = 690, which jumps by some 1e140 where a contact's sum A of curvatures turns
+    negative."""
+    from ringchain.numerics.layouts import rings_static
+
+    evaluate = problem.evaluate
+
+    def cliffed(x, cold=True):
+        energy, grad = evaluate(x, cold)
+        if any(side * x[dof] > 0.5 * rings_static.DIFFERENCE for side in sides):
+            grad = grad.copy()
+            grad[dof] += 1e110
+            energy += 1e100
+        return energy, grad
+
+    problem.evaluate = cliffed
+
+
+@pytest.fixture(scope="module")
+def hanging():
+    """A chain of four rings hanging at rest, its contacts closed under the weights (the rest pose of a chain
+    just touches them: a difference there is one-sided by nature, Hertz's force growing from zero)."""
+    return Rings.chain(4, RING).equilibrium(force_tol=1e-6)
+
+
+@pytest.mark.parametrize("dof", [0, 2, 4, 7])
+def test_the_stiffness_matrix_takes_no_difference_across_a_cliff(dof, hanging):
+    from ringchain.numerics.layouts import rings_static
+
+    chain = hanging
+    plain = rings_static._Problem(chain, STANDARD_GRAVITY)
+    size = 6 * plain.moving.size
+    expected = plain.stiffness(plain.evaluate(np.zeros(size))[1]).toarray()
+    cliffed = rings_static._Problem(chain, STANDARD_GRAVITY)
+    _cliff(cliffed, dof, sides=(1.0,))
+    matrix = cliffed.stiffness(cliffed.evaluate(np.zeros(size))[1]).toarray()
+    assert cliffed.dropped == 0
+    # The forward and backward differences of a smooth gradient agree to DIFFERENCE over the length on which the
+    # stiffness changes (the approach of a contact, some 1e-3 r): 1e-4 of the largest entry; the difference across
+    # the cliff would put 1e117 in the matrix.
+    np.testing.assert_allclose(matrix, expected, rtol=0, atol=1e-3 * np.abs(expected).max())
+
+
+def test_the_stiffness_matrix_leaves_out_a_column_with_a_cliff_either_side(hanging):
+    from ringchain.numerics.layouts import rings_static
+
+    chain = hanging
+    problem = rings_static._Problem(chain, STANDARD_GRAVITY)
+    size = 6 * problem.moving.size
+    plain = problem.stiffness(problem.evaluate(np.zeros(size))[1]).toarray()
+    _cliff(problem, 2, sides=(1.0, -1.0))  # a translation (along z) of the lowest ring
+    matrix = problem.stiffness(problem.evaluate(np.zeros(size))[1]).toarray()
+    assert problem.dropped == 1
+    assert np.all(matrix[:, 2] == 0.0)  # left out, not the difference across the cliff
+    assert np.any(plain[:, 2] != 0.0)  # (where the plain matrix has a column: the ring rests on its neighbour)
