@@ -63,6 +63,23 @@ residuals after an accepted step and shrinks fourfold after a rejected one.  The
 every contact from scratch (the warm start cannot see a minimum born away from those it follows, and a step
 moves rings far); the finite differences follow them.
 
+Cliffs and spoilt factors.  Hertz's stiffness of the curvatures grows as A^(-1/2) where a contact's smaller sum of
+relative curvatures A falls to zero, and the compiled law
+(:func:`~ringchain.numerics.engine.rings_law.hertz_stiffness_curvatures`, its ellipse capped at ln(B/A) = 690 where
+the law's row gives no cap of its own, as the rows of rigid rings do not) raises an A <= 0 to B e^-690: K_c some
+1e150 times its size, a cliff of the energy.  On the 30 x 30 sheet's softest stage the descent's trial poses meet it
+(energies of 1e132-1e144 J, loads up to 1e149 m g; the line search rejects them) and so did the finite differences
+of the stiffness matrix: at a base pose where the energy was smooth to 1e-5 r (its change over 1e-7 r matching the
+trapezoid rule on the loads to 1.4e-4), the cliff lay 1e-4 r away (2.5e142 J), and a difference across one put
+4.6e148 in the matrix, which the pin of the spins (above) copied into every ring's block: the preconditioner's
+shifts began at 1e140, and Newton's steps shrank to nothing, each accepted at the cost of a new matrix.  So a
+difference whose change of the energy misses the trapezoid rule by more than ``SMOOTH`` of its size is taken
+backward, and left out where both miss (:meth:`_Problem.difference`).  And every factorisation (:func:`_factor`) is
+refused where its matrix has an entry not finite or its solve of a probe fails (not finite, or a backward error
+above ``BACKWARD``), the callers shifting as for a matrix not positive definite: SuperLU checks neither, and the
+whole drape before these checks printed BLAS's complaints of an illegal leading dimension from inside it (DTRSV,
+DGEMV) and went on.
+
 Stages.  The contacts are first softened (:data:`SOFTENING`: every stiffness, K of the power law or E* of
 Hertz's, scaled down), which widens the region where Newton's model holds -- a step along a floppy mode of
 length s changes a contact's approach by about s^2 / (2 R), which must stay below the approach
