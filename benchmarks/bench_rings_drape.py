@@ -61,10 +61,37 @@ it stopped that version misses 10 of the 5,927 minima of the sheet's 3,861 pairs
 2^13 points; the version here misses none): the residual there is 32.0 m g with every minimum found, and 200 steps of
 the softest stage's descent from it (fresh descents of 100) reach 5.1 and 5.7 m g.
 
-What is left.  The whole 30 x 30 drape with this version of the search, from the start (some 85 min wall on this
-machine at load 5-9; the descent of the softest stage alone takes thousands of steps).  Then: carry the
-preconditioner from stage to stage, and rebuild it less often on large sheets (each build costs six evaluations per
-colour of the rings, some 100 on the 30 x 30 sheet).
+The whole 30 x 30 drape with this version of the search, from the start, ``--untraced``: stopped after some 39 min of
+CPU (613 MB resident) on BLAS's complaints from inside SuperLU ("On entry to DTRSV parameter number 6 had an illegal
+value", and DGEMV's parameter 2: an illegal leading dimension and a negative row count, which its BLAS prints and
+ignores).  Run again with every factorisation and every evaluation checked (finite entries, size, largest and smallest
+diagonal, the factor's fill, a probe solve; the pose and matrix saved): no matrix had an entry not finite, but from
+677 s of CPU on (the softest stage's Newton iterations, its descent having stopped at about 5 m g) every stiffness
+matrix held entries of 4.6e148 (builds 70-79, till that run was stopped at 790 s).  Their cause: Hertz's stiffness of
+the curvatures, whose ellipse the compiled law caps at ln(B/A) = 690 when a law's row gives no cap (the rows of rigid
+rings give none), so that a contact whose smaller curvature sum A turns negative gets K_c some 1e150 times its size: a
+cliff of the energy.  Trial poses of the descent met such cliffs from its first minute (energies of 1e132-1e144 J, loads
+up to 1e149 m g; rejected by the line search), and a finite difference of the stiffness matrix across one put (1e141 m
+g) / (1e-7 r) into the matrix; the pin of the spins copied it into every ring's block, the shifts of the preconditioner
+began at 1e140 and Newton's steps shrank to nothing, each accepted and each costing a new matrix (builds 70-79 at one
+pose).  At an earlier base pose (build 6) the contact of rings 726 and 756, its A/B = 4.3e-5 at a crossing of 38.7
+degrees, gave the matrix a real 5.8e8 (the energy's change over 1e-9 to 1e-6 r matching the trapezoid rule on the loads
+to 1e-4 or better), with a cliff 1e-4 r away (2.5e142 J).  No small matrix reproduced the BLAS errors (NaN or infinite
+entries anywhere, entries up to 1e300, the saved 5,220-unknown matrix with its spins pinned at 1e100-1e156: SuperLU
+reports a singular factor or solves), so the path from these matrices to the errors is inferred, not shown.  Now
+(rings_static module notes): a finite difference whose change of the energy misses the trapezoid rule is taken
+backward, or left out; and a factorisation is refused where its matrix or its probe solve is not finite or the probe's
+backward error exceeds 1e-8, the callers shifting as for a matrix not positive definite.
+
+The whole drape with these checks, from the start, ``--untraced`` (load 4-7 beside the suite's run): no matrix with an
+entry not finite or above 1e8 (the largest of every 20th build: 7.7e4), no probe solve not finite, no message of BLAS,
+no difference left out.  RESULTS
+
+What is left.  The cliffs themselves: a cap of the ellipse in the rigid rings' law rows (or a law that stays finite as A
+-> 0), in the engine; Newton's steps accepted where the 2-norm of the residual falls though the energy rises (after the
+softest stage's Newton iterations the largest residual, 1.0 m g, was that of rings of the lowest rows 3e-3 r clear of
+every neighbour, each feeling its weight alone).  Then: carry the preconditioner from stage to stage, and rebuild it
+less often on large sheets (each build costs six evaluations per colour of the rings, some 100 on the 30 x 30 sheet).
 
 Run: ``python benchmarks/bench_rings_drape.py [--rows 30] [--cols 30] [--tol 1e-6] [--iterations 30]
 [--save pose.npz] [--untraced]``.
