@@ -131,6 +131,8 @@ DIFFERENCE = 1e-7
 #: its gradients, as a fraction of their size, below which the difference is taken as a derivative
 #: (:meth:`_Problem.difference`): a smooth energy meets it to 1e-4 or better at ``DIFFERENCE`` (measured next to a
 #: contact whose stiffness grows a hundredfold within 1e-4 r: 1.4e-4), a cliff of Hertz's stiffness misses by about 1.
+#: A lone contact closing within the step (Hertz's force growing from zero) misses by 0.11, and its backward difference
+#: is taken, a one-sided derivative as good as the other.
 SMOOTH = 0.1
 
 #: Accepted steps of the first phase of each stage (module notes), preconditioned L-BFGS.
