@@ -249,7 +249,8 @@ class _Problem:
 
         A cliff: the energy's change differs from the trapezoid rule on the two gradients, (g_0 + g_1).x / 2, by more
         than ``SMOOTH`` of its size (and the rounding), which a smooth energy meets to O(|x|^3).  Hertz's stiffness of
-        the curvatures jumps there by up to 1e140 (module notes), and a difference across it is no derivative."""
+        the curvatures jumps there to some 1e150 times its size (module notes), and a difference across it is no
+        derivative."""
         scale = self.weight * self.length  # J per unit of gradient times move
         for sign in (1.0, -1.0):
             moved_energy, moved = self.evaluate(sign * x, cold=False)
@@ -338,9 +339,9 @@ def _factor(matrix, positive=True):
     ``positive``: the matrix is symmetric, factorised without pivoting off the diagonal, and refused where it is not
     positive definite (a pivot zero or negative: the pivots give its inertia); else with SuperLU's partial pivoting.
     Refused too: a matrix with an entry not finite, and factors whose solve of a probe (b = A 1) is not finite or
-    has a backward error above ``BACKWARD``.  SuperLU does not check: on such a matrix its triangular solves pass
-    BLAS an illegal leading dimension (its BLAS prints "On entry to DTRSV parameter number 6 had an illegal value"
-    and returns), and the solution is garbage."""
+    has a backward error above ``BACKWARD``.  SuperLU checks neither: the 30 x 30 drape before these checks drew
+    from inside it BLAS's complaints of an illegal leading dimension ("On entry to DTRSV parameter number 6 had an
+    illegal value"), which BLAS prints and ignores, and went on with what it returned (module notes)."""
     from scipy.sparse.linalg import norm, splu
 
     matrix = matrix.tocsc()
