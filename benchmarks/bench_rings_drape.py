@@ -16,7 +16,23 @@ torque on a free ring (from a search of every contact from scratch) with the ver
 against the weight of the free ones.
 
 Measured on a 2-core machine shared with other jobs (load average 4-7), the solver of this version (the loads the
-energy's gradient, the descent preconditioned by the stiffness matrix and run to each stage's tolerance):
+energy's gradient, the descent preconditioned by the stiffness matrix and run to each stage's tolerance; its finite
+differences and factorisations checked, below):
+
+- 4 x 4, ``--untraced``: 1.7 s wall and of CPU, 189 MB resident; residual 9.2e-7 m g (torque 1.3e-7 m g R); the
+  descents take 651, 14, 13 and 32 steps (1,639, 77, 76 and 100 evaluations).
+- 10 x 10, ``--untraced``: 19.7 s wall, 19.5 s of CPU, 206 MB resident; residual 7.8e-7 m g (torque 6.1e-7 m g R),
+  the fixed row carrying 90.000002 of the 90 weights; the descents 1,634, 40, 18 and 58 steps (4,431, 133, 111 and
+  162 evaluations).
+- 30 x 30 (7,538 pairs), ``--untraced``, the whole drape from the start: solved, residual 7.8e-7 m g (torque
+  4.3e-7 m g R), the fixed row carrying 870.000000 of the 870 weights; 2,546 s wall (load 4-7), 1,647 s of CPU,
+  464 MB resident at peak (with the checks of the run described below wrapped round the solver, which cost little
+  beside the evaluations).  The softest stage's descent runs 6,094 steps (18,966 evaluations; 711 s of CPU) to
+  16.6 m g and its Newton iterations (30, 1,677 evaluations, 58 s) to 1.0 m g; the next stage's descent 3,801 steps
+  (17,136 evaluations, 710 s) to 3.3e-5 m g; the last two 206 and 443 steps (2,089 and 1,788 evaluations, 89 s and
+  79 s) to 7.5e-4 and 7.8e-7 m g.  Newton's method is needed only in the softest stage.
+
+Before the checks:
 
 - 4 x 4 rings (76 candidate pairs), ``--untraced``: 5.6 s wall, 2.7 s of CPU, 188 MB resident; residual 3.6e-7 m g
   (torque 2.7e-8 m g R); the descents take 828, 14, 13 and 32 steps (2,212, 76, 75 and 101 evaluations, the
@@ -25,7 +41,8 @@ energy's gradient, the descent preconditioned by the stiffness matrix and run to
 - 10 x 10 rings (718 pairs), ``--untraced``: 25.7 s wall, 22.2 s of CPU, 210 MB resident; residual 3.9e-7 m g
   (torque 1.3e-7 m g R), the fixed row carrying 90.000000 of the 90 weights; the descents 2,108, 40, 18 and 59 steps
   (6,161, 132, 110 and 162 evaluations).  Traced: 144 s wall, 79 s of CPU, 3.2 MB allocated at peak.
-- 30 x 30 rings (7,538 pairs), ``--untraced``: not solved.  The descent of the softest stage
+- 30 x 30 rings (7,538 pairs), ``--untraced``, with the search before its look between samples: not solved.  The
+  descent of the softest stage
   runs 9,723 steps (33,252 evaluations, the preconditioner's included; 1,215 s of CPU, 1,649 s wall) to 10.4 m g
   and stops where no step lowers the energy or the residual; the stiffer stages cannot step from there (their
   descents give up at once, Newton's method keeps the residual, 1.04e4 m g at the end: the pose of the softest
@@ -61,10 +78,43 @@ it stopped that version misses 10 of the 5,927 minima of the sheet's 3,861 pairs
 2^13 points; the version here misses none): the residual there is 32.0 m g with every minimum found, and 200 steps of
 the softest stage's descent from it (fresh descents of 100) reach 5.1 and 5.7 m g.
 
-What is left.  The whole 30 x 30 drape with this version of the search, from the start (some 85 min wall on this
-machine at load 5-9; the descent of the softest stage alone takes thousands of steps).  Then: carry the
-preconditioner from stage to stage, and rebuild it less often on large sheets (each build costs six evaluations per
-colour of the rings, some 100 on the 30 x 30 sheet).
+The whole 30 x 30 drape with this version of the search, from the start, ``--untraced``: stopped after some 39 min of
+CPU (613 MB resident) on BLAS's complaints from inside SuperLU ("On entry to DTRSV parameter number 6 had an illegal
+value", and DGEMV's parameter 2: an illegal leading dimension and a negative row count, which its BLAS prints and
+ignores).  Run again (the factorisations already refused as below) with every factorisation and every evaluation checked
+(finite entries, size, largest and smallest diagonal, the factor's fill, a probe solve; the pose and matrix saved): no
+matrix had an entry not finite, but from 677 s of CPU on (the softest stage's Newton iterations, its descent having
+stopped at about 5 m g) every stiffness matrix held entries of 4.6e148 (builds 70-79, till that run was stopped at
+790 s).  Their cause: Hertz's stiffness of the curvatures, whose ellipse the compiled law caps at ln(B/A) = 690 when a
+law's row gives no cap (the rows of rigid rings give none), so that a contact whose smaller curvature sum A turns
+negative gets K_c some 1e150 times its size: a cliff of the energy.  Trial poses of the descent met such cliffs from its
+first minute (energies of 1e132-1e144 J, loads up to 1e149 m g; rejected by the line search), and a finite difference
+of the stiffness matrix across one put 1e141 m g over 1e-7 r into the matrix; the pin of the spins copied it into every
+ring's block, the shifts of the preconditioner began at 1e140 and Newton's steps shrank to nothing, each accepted and
+each costing a new matrix (builds 70-79 at one pose).  At an earlier base pose (build 6) the contact of rings 726 and
+756, its A/B = 4.3e-5 at a crossing of 38.7 degrees, gave the matrix a real 5.8e8 (the energy's change over 1e-9 to
+1e-6 r matching the trapezoid rule on the loads to 1e-4 or better), with a cliff 1e-4 r away (2.5e142 J).  No small
+matrix reproduced the BLAS errors (NaN or infinite entries anywhere, entries up to 1e300, the saved 5,220-unknown
+matrix with its spins pinned at 1e100-1e156: SuperLU reports a singular factor or solves), so the path from these
+matrices to the errors is inferred, not shown.  Now (rings_static module notes): a finite difference whose change of the
+energy misses the trapezoid rule is taken backward, or left out; and a factorisation is refused where its matrix or its
+probe solve is not finite or the probe's backward error exceeds 1e-8, the callers shifting as for a matrix not positive
+definite.
+
+The whole drape with these checks, from the start, ``--untraced`` (load 4-7 beside the suite's run): no matrix with an
+entry not finite or above 1e8 (the largest of every 20th build: 7.7e4), no probe solve not finite, no message of BLAS,
+no difference left out; solved (the figures at the top).  At the pose where the softest stage's descent stopped, 6 of
+the 108 columns of the stiffness matrix (18 colours) crossed a cliff forward (the energy's change 2e133 J against the
+trapezoid rule's 1e131 J, differences of the loads of 3.9e149) and were taken backward, where they match the trapezoid
+rule to 3e-16 J of changes of 5e-11 to 3e-10 J.
+
+What is left.  The cliffs themselves, in the engine: a cap of the ellipse in the rigid rings' law rows, or a law that
+stays finite as A -> 0 (the descent's trial steps into them are wasted evaluations).  Newton's steps accepted where the
+2-norm of the residual falls though the energy rises: after the softest stage's Newton iterations the largest residual,
+1.0 m g, was that of rings of the lowest rows 3e-3 r clear of every neighbour, each feeling its weight alone (the next
+stage's descent brought them back).  The time: the two softest stages' descents take 86 per cent of the CPU (10,000
+steps); carry the preconditioner from stage to stage, and rebuild it less often on large sheets (each build costs six
+evaluations per colour of the rings, some 110 on the 30 x 30 sheet).
 
 Run: ``python benchmarks/bench_rings_drape.py [--rows 30] [--cols 30] [--tol 1e-6] [--iterations 30]
 [--save pose.npz] [--untraced]``.

@@ -41,7 +41,8 @@ stopped at 10.4 m g on a pose where the cold search missed a twin minimum lying 
 scan's samples, which the steps tried out of it found, 6.1e-5 J higher; with the search's look between samples
 (:mod:`~ringchain.numerics.engine.rings_kernels`) the descent moves on from that pose, to 3.9e-3 m g in 500 steps.
 The whole drape, run once with an earlier version of that look, stopped again at 12.5 m g, on a pose where that
-version missed 10 minima and the present one none; it is not yet solved (benchmarks/bench_rings_drape.py).
+version missed 10 minima and the present one none.  With the differences and factorisations checked (below) it is
+solved from the start: 7.8e-7 m g after 1,647 s of CPU, 464 MB resident (benchmarks/bench_rings_drape.py).
 Measured against it: FIRE (Bitzek, Koskinen, Gaehler, Moseler and Gumbsch, Phys. Rev. Lett. 97, 170201 (2006),
 with the parameters of FIRE 2.0, Guenole et al., Comput. Mater. Sci. 175, 109584 (2020)), on the same scaled
 variables with the time step bounded by the stiffest curvature, stalled at 0.4-0.8 m g on a 4 x 4 sheet after
@@ -62,6 +63,23 @@ where the energy does not rise beyond its rounding or the residual falls; tau gr
 residuals after an accepted step and shrinks fourfold after a rejected one.  The base and trial poses search
 every contact from scratch (the warm start cannot see a minimum born away from those it follows, and a step
 moves rings far); the finite differences follow them.
+
+Cliffs and spoilt factors.  Hertz's stiffness of the curvatures grows as A^(-1/2) where a contact's smaller sum of
+relative curvatures A falls to zero, and the compiled law
+(:func:`~ringchain.numerics.engine.rings_law.hertz_stiffness_curvatures`, its ellipse capped at ln(B/A) = 690 where
+the law's row gives no cap of its own, as the rows of rigid rings do not) raises an A <= 0 to B e^-690: K_c some
+1e150 times its size, a cliff of the energy.  On the 30 x 30 sheet's softest stage the descent's trial poses meet it
+(energies of 1e132-1e144 J, loads up to 1e149 m g; the line search rejects them) and so did the finite differences
+of the stiffness matrix: at a base pose where the energy was smooth to 1e-5 r (its change over 1e-7 r matching the
+trapezoid rule on the loads to 1.4e-4), the cliff lay 1e-4 r away (2.5e142 J), and a difference across one put
+4.6e148 in the matrix, which the pin of the spins (above) copied into every ring's block: the preconditioner's
+shifts began at 1e140, and Newton's steps shrank to nothing, each accepted at the cost of a new matrix.  So a
+difference whose change of the energy misses the trapezoid rule by more than ``SMOOTH`` of its size is taken
+backward, and left out where both miss (:meth:`_Problem.difference`).  And every factorisation (:func:`_factor`) is
+refused where its matrix has an entry not finite or its solve of a probe fails (not finite, or a backward error
+above ``BACKWARD``), the callers shifting as for a matrix not positive definite: SuperLU checks neither, and the
+whole drape before these checks printed BLAS's complaints of an illegal leading dimension from inside it (DTRSV,
+DGEMV) and went on.
 
 Stages.  The contacts are first softened (:data:`SOFTENING`: every stiffness, K of the power law or E* of
 Hertz's, scaled down), which widens the region where Newton's model holds -- a step along a floppy mode of
@@ -109,6 +127,14 @@ SOFTENING = (1e-3, 1e-2, 1e-1, 1.0)
 #: approach of a contact under one weight (about 1e-3 r for the paper's steel ring), large beside the rounding
 #: of the loads (about 1e-10 m g over stiffnesses of 1e4 m g / r).
 DIFFERENCE = 1e-7
+
+#: Largest mismatch of the energy's change over a finite difference of the stiffness matrix and the trapezoid rule on
+#: its gradients, as a fraction of their size, below which the difference is taken as a derivative
+#: (:meth:`_Problem.difference`): a smooth energy meets it to 1e-4 or better at ``DIFFERENCE`` (measured next to a
+#: contact whose stiffness grows a hundredfold within 1e-4 r: 1.4e-4), a cliff of Hertz's stiffness misses by about 1.
+#: A lone contact closing within the step (Hertz's force growing from zero) misses by 0.11, and its backward difference
+#: is taken, a one-sided derivative as good as the other.
+SMOOTH = 0.1
 
 #: Accepted steps of the first phase of each stage (module notes), preconditioned L-BFGS.
 DESCENT = 20000
@@ -170,6 +196,9 @@ class _Problem:
         self.centres, self.orientations = (network.centres.copy(), network.orientations.copy()) if start is None \
             else start  # fmt: skip
         self.evaluations = 0  # of the loads, counted for the record of the phases
+        # Energies closer than this differ by rounding (1e-13 of a weight lifted by a tube radius, per free ring), J.
+        self.rounding = 1e-13 * max(self.moving.size, 1) * self.weight * self.length
+        self.dropped = 0  # columns of the stiffness matrices left out (both differences across a cliff: stiffness)
 
     def axes(self):
         """The axes (free rings, 3) of the free rings in space at the base pose."""
@@ -213,8 +242,27 @@ class _Problem:
         self.centres, self.orientations = self.pose(x)
         self.orientations /= np.linalg.norm(self.orientations, axis=1, keepdims=True)
 
+    def difference(self, x, energy, grad):
+        """The change of the gradient over the small move x from the base pose (energy there ``energy``, J, and
+        gradient ``grad``, on the followed contacts), divided by ``DIFFERENCE``: forward, or backward where the
+        forward move crosses a cliff of the energy; None where both do.
+
+        A cliff: the energy's change differs from the trapezoid rule on the two gradients, (g_0 + g_1).x / 2, by more
+        than ``SMOOTH`` of its size (and the rounding), which a smooth energy meets to O(|x|^3).  Hertz's stiffness of
+        the curvatures jumps there to some 1e150 times its size (module notes), and a difference across it is no
+        derivative."""
+        scale = self.weight * self.length  # J per unit of gradient times move
+        for sign in (1.0, -1.0):
+            moved_energy, moved = self.evaluate(sign * x, cold=False)
+            change = moved_energy - energy
+            trapezoid = 0.5 * scale * float((grad + moved) @ (sign * x))
+            if abs(change - trapezoid) <= SMOOTH * (abs(change) + abs(trapezoid)) + self.rounding:
+                return sign * (moved - grad) / DIFFERENCE
+        return None
+
     def stiffness(self, grad):
-        """The sparse stiffness matrix d(grad)/dx at the base pose (grad its gradient there)."""
+        """The sparse stiffness matrix d(grad)/dx at the base pose (grad its gradient there), by differences of the
+        gradient on the followed contacts (:meth:`difference`)."""
         from scipy import sparse
 
         free = self.moving
@@ -230,11 +278,15 @@ class _Problem:
                 neighbours[index[j]].add(index[i])
         rows, cols, values = [], [], []
         offsets = np.arange(6)
+        energy, _ = self.evaluate(np.zeros(6 * free.size), cold=False)  # the base's energy on the followed contacts
         for group in _colours(neighbours):
             for d in range(6):
                 x = np.zeros((free.size, 6))
                 x[group, d] = DIFFERENCE
-                column = (self.evaluate(x.ravel(), cold=False)[1] - grad) / DIFFERENCE
+                column = self.difference(x.ravel(), energy, grad)
+                if column is None:  # a cliff either side (both within DIFFERENCE of the base): left out
+                    self.dropped += 1
+                    continue
                 for i in group:
                     near = np.fromiter((i, *neighbours[i]), dtype=np.int64)
                     r = (6 * near[:, None] + offsets).ravel()
@@ -258,29 +310,56 @@ class _Problem:
 def _preconditioner(problem, grad):
     """The solve x -> (H + sigma I)^(-1) x with H the symmetric part of the stiffness matrix at the base pose (its
     gradient there ``grad``), sigma the smallest of 1e-8, 1e-6, ... times its largest diagonal that makes it
-    positive definite (:func:`_positive_factor`)."""
+    positive definite (:func:`_factor`), or None where no such shift is found (its matrix not finite)."""
     from scipy import sparse
 
     matrix = problem.stiffness(grad)
     symmetric = (0.5 * (matrix + matrix.T)).tocsc()
     size = symmetric.shape[0]
-    sigma = 1e-8 * max(float(np.max(np.abs(symmetric.diagonal()))), 1.0)
-    while (factor := _positive_factor(symmetric + sigma * sparse.identity(size))) is None:
+    largest = float(np.max(np.abs(symmetric.diagonal()), initial=0.0))
+    if not np.isfinite(largest):  # no shift makes it finite (the checks of _factor refuse it)
+        return None
+    sigma = 1e-8 * max(largest, 1.0)
+    while (factor := _factor(symmetric + sigma * sparse.identity(size))) is None:
         sigma *= 100.0
+        if sigma > 1e8 * max(largest, 1.0):  # the shift dwarfs the matrix: no preconditioner left to keep
+            return None
     return factor.solve
 
 
-def _positive_factor(matrix):
-    """The sparse LU factors of a symmetric matrix without pivoting off the diagonal (SuperLU), or None where it is
-    not positive definite (a pivot zero or negative: the pivots give its inertia)."""
-    from scipy.sparse.linalg import splu
+#: Largest normwise backward error of a solve by the factors of :func:`_factor` (its check): far above the rounding
+#: of a stable factorisation (a small multiple of the machine's epsilon, at most its size times it: 1e-12 for 5,000
+#: unknowns), far below that of factors SuperLU spoilt (of order one).
+BACKWARD = 1e-8
 
+
+def _factor(matrix, positive=True):
+    """The sparse LU factors (SuperLU) of a matrix, or None where they are not to be trusted.
+
+    ``positive``: the matrix is symmetric, factorised without pivoting off the diagonal, and refused where it is not
+    positive definite (a pivot zero or negative: the pivots give its inertia); else with SuperLU's partial pivoting.
+    Refused too: a matrix with an entry not finite, and factors whose solve of a probe (b = A 1) is not finite or
+    has a backward error above ``BACKWARD``.  SuperLU checks neither: the 30 x 30 drape before these checks drew
+    from inside it BLAS's complaints of an illegal leading dimension ("On entry to DTRSV parameter number 6 had an
+    illegal value"), which BLAS prints and ignores, and went on with what it returned (module notes)."""
+    from scipy.sparse.linalg import norm, splu
+
+    matrix = matrix.tocsc()
+    if not np.all(np.isfinite(matrix.data)):
+        return None
+    options = {"permc_spec": "MMD_AT_PLUS_A", "diag_pivot_thresh": 0.0, "options": {"SymmetricMode": True}}
     try:
-        factor = splu(matrix.tocsc(), permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
-                      options={"SymmetricMode": True})  # fmt: skip
+        factor = splu(matrix, **(options if positive else {}))
     except RuntimeError:  # a pivot exactly zero
         return None
-    return factor if np.all(factor.U.diagonal() > 0.0) else None
+    if positive and not np.all(factor.U.diagonal() > 0.0):
+        return None
+    probe = matrix @ np.ones(matrix.shape[0])
+    solution = factor.solve(probe)
+    if not np.all(np.isfinite(solution)):
+        return None
+    scale = norm(matrix, np.inf) * np.max(np.abs(solution), initial=0.0) + np.max(np.abs(probe), initial=0.0)
+    return factor if np.max(np.abs(matrix @ solution - probe), initial=0.0) <= BACKWARD * scale else None
 
 
 def _descent(problem, tol, max_iterations):
@@ -291,7 +370,7 @@ def _descent(problem, tol, max_iterations):
     energy, grad = problem.evaluate(np.zeros(size))
     grad = problem.project(grad)
     scale = problem.weight * problem.length  # J per unit of gradient times step
-    rounding = 1e-13 * max(problem.moving.size, 1) * scale  # as in _newton
+    rounding = problem.rounding
     memory = []  # the last MEMORY pairs (step s, change of the gradient y, 1 / s.y)
     iterations, forced, gamma = 0, 0, None
     factor, built = None, -REFRESH  # the preconditioner (module notes) and the step it was built at
@@ -305,6 +384,8 @@ def _descent(problem, tol, max_iterations):
             step -= ratios[-1] * y
         if factor is not None:
             step = factor(step)  # the initial inverse Hessian: the stiffness matrix's
+            if not np.all(np.isfinite(step)):  # factors that passed their probe but fail here: dropped till the
+                factor, step = None, -grad  # next build (the step below then goes along the gradient)
         elif memory:
             s, y, rho = memory[-1]
             step *= 1.0 / (rho * (y @ y))  # the initial inverse Hessian s.y / y.y
@@ -363,12 +444,10 @@ def _newton(problem, tol, max_iterations):
     """The pseudo-transient Newton iterations of the module notes on ``problem`` until max |gradient| <= tol; returns
     the number of iterations (accepted or not)."""
     from scipy import sparse
-    from scipy.sparse.linalg import splu
 
     size = 6 * problem.moving.size
     energy, grad = problem.evaluate(np.zeros(size))
-    # Energies below this differ by rounding (1e-13 of a weight lifted by a tube radius, per free ring).
-    rounding = 1e-13 * max(problem.moving.size, 1) * problem.weight * problem.length
+    rounding = problem.rounding
     tau, matrix = 1.0, None  # pseudo-time step: (I / tau + H) dx = -g
     residual = np.linalg.norm(grad)
     for iteration in range(max_iterations):
@@ -378,16 +457,16 @@ def _newton(problem, tol, max_iterations):
             matrix = problem.stiffness(grad)
             symmetric = (0.5 * (matrix + matrix.T)).tocsc()
         shift = sparse.identity(size) / tau
-        factor = _positive_factor(symmetric + shift)
+        factor = _factor(symmetric + shift)
         if factor is None:
             tau *= 0.25
             continue
         step = factor.solve(-grad)
         if tau >= NEWTON:  # near the solution, the step of the matrix itself (symmetric but for its finite
-            try:  # differences): Newton's, quadratic
-                step = splu((matrix + shift).tocsc()).solve(-grad)
-            except RuntimeError:  # a singular factor: keep the symmetric step
-                pass
+            # differences): Newton's, quadratic; where its factors are refused, the symmetric step
+            unsymmetric = _factor(matrix + shift, positive=False)
+            newton = unsymmetric.solve(-grad) if unsymmetric is not None else step
+            step = newton if np.all(np.isfinite(newton)) else step
         largest = np.max(np.abs(step))
         if not np.isfinite(largest):
             tau *= 0.25

@@ -128,3 +128,175 @@ def test_the_loads_are_the_gradient_of_the_energy(law, below, pull):
         # 1e-3 of the largest torque (the twist about z) at the single Hertz contact.
         assert -0.5 * push == pytest.approx(forces[0] @ axis, rel=0, abs=1e-6 * scale)
         assert -0.5 * twist == pytest.approx(torques[0] @ axis, rel=0, abs=1e-6 * scale * R)
+
+
+def _positive_definite(size, seed):
+    """A sparse symmetric positive definite matrix B B^T + I (eigenvalues at least 1), seeded."""
+    from scipy import sparse
+
+    rng = np.random.default_rng(seed)
+    b = sparse.random(size, size, density=0.05, random_state=rng)
+    return (b @ b.T + sparse.identity(size)).tocsc()
+
+
+@pytest.mark.parametrize("positive", [True, False], ids=["positive", "pivoting"])
+def test_the_factors_solve_as_a_dense_solve(positive):
+    from ringchain.numerics.layouts import rings_static
+
+    matrix = _positive_definite(60, seed=1)
+    b = np.random.default_rng(2).standard_normal(60)
+    factor = rings_static._factor(matrix, positive=positive)
+    expected = np.linalg.solve(matrix.toarray(), b)  # an independent (dense, LAPACK) solve
+    # Both solves are backward stable: each is within cond(A) times a small multiple of the machine's epsilon of the
+    # exact solution (1e3 eps covers that multiple for 60 unknowns).
+    bound = 1e3 * np.finfo(float).eps * np.linalg.cond(matrix.toarray()) * np.abs(expected).max()
+    np.testing.assert_allclose(factor.solve(b), expected, rtol=0, atol=bound)
+
+
+@pytest.mark.parametrize("entry", [(3, 3), (3, 7)], ids=["diagonal", "off-diagonal"])
+@pytest.mark.parametrize("value", [np.nan, np.inf, -np.inf])
+@pytest.mark.parametrize("positive", [True, False], ids=["positive", "pivoting"])
+def test_a_matrix_with_an_entry_not_finite_is_refused(entry, value, positive):
+    from ringchain.numerics.layouts import rings_static
+
+    matrix = _positive_definite(30, seed=3).tolil()
+    i, j = entry
+    matrix[i, j] = matrix[j, i] = value  # symmetric, as the solver's matrices are
+    assert rings_static._factor(matrix.tocsc(), positive=positive) is None
+
+
+def test_an_indefinite_matrix_is_refused_without_pivoting_and_solved_with_it():
+    from ringchain.numerics.layouts import rings_static
+
+    matrix = _positive_definite(40, seed=4).tolil()
+    matrix[5, 5] = -1.0  # a negative diagonal entry: e_5^T A e_5 < 0, so A is not positive definite
+    matrix = matrix.tocsc()
+    assert rings_static._factor(matrix) is None
+    b = np.random.default_rng(5).standard_normal(40)
+    expected = np.linalg.solve(matrix.toarray(), b)  # independent: dense LAPACK
+    # As in the test above: both within cond(A) times a small multiple of eps of the exact solution.
+    bound = 1e3 * np.finfo(float).eps * np.linalg.cond(matrix.toarray()) * np.abs(expected).max()
+    np.testing.assert_allclose(rings_static._factor(matrix, positive=False).solve(b), expected, rtol=0, atol=bound)
+
+
+@pytest.mark.parametrize("spoilt", [lambda b: np.full_like(b, np.nan), lambda b: 0.5 * b[::-1]], ids=["nan", "garbage"])
+def test_factors_whose_solve_is_spoilt_are_refused(spoilt, monkeypatch):
+    """SuperLU's factors of some matrices solve to garbage (its BLAS told an illegal leading dimension, which it
+    reports and ignores); no small matrix was found that does so, so the factors here are stand-ins whose solve
+    returns NaN or a wrong vector."""
+    import scipy.sparse.linalg
+    from ringchain.numerics.layouts import rings_static
+
+    class Spoilt:
+        def __init__(self, factor):
+            self.factor, self.U = factor, factor.U
+
+        def solve(self, b):
+            return spoilt(b)
+
+    splu = scipy.sparse.linalg.splu
+    monkeypatch.setattr(scipy.sparse.linalg, "splu", lambda *args, **kwargs: Spoilt(splu(*args, **kwargs)))
+    matrix = _positive_definite(30, seed=6)
+    assert rings_static._factor(matrix) is None
+    assert rings_static._factor(matrix, positive=False) is None
+
+
+class _Matrix:
+    """A stand-in for the solver's problem whose stiffness matrix is given."""
+
+    def __init__(self, matrix):
+        self.matrix = matrix
+
+    def stiffness(self, grad):
+        return self.matrix
+
+
+def test_the_preconditioner_shifts_an_indefinite_matrix_until_it_is_positive_definite():
+    from ringchain.numerics.layouts import rings_static
+    from scipy import sparse
+
+    matrix = _positive_definite(40, seed=7)
+    largest = np.abs(matrix.diagonal()).max()
+    lowest = np.linalg.eigvalsh(matrix.toarray())[0]
+    # Shifted down by s so that its lowest eigenvalue, lowest - s, is -5e-3 of its largest diagonal, largest - s (2.7,
+    # above 1: the shifts are fractions of it): the shifts 1e-8, 1e-6 and 1e-4 of it leave it indefinite, 1e-2 makes
+    # it positive definite.
+    s = (lowest + 5e-3 * largest) / (1.0 + 5e-3)
+    matrix = (matrix - s * sparse.identity(40)).tocsc()
+    largest = np.abs(matrix.diagonal()).max()
+    assert largest > 1.0 and np.linalg.eigvalsh(matrix.toarray())[0] == pytest.approx(-5e-3 * largest, rel=1e-9)
+    solve = rings_static._preconditioner(_Matrix(matrix), None)
+    b = np.random.default_rng(8).standard_normal(40)
+    shifted = matrix.toarray() + 1e-2 * largest * np.eye(40)
+    expected = np.linalg.solve(shifted, b)  # independent: dense LAPACK
+    # As in the tests above: both within cond times a small multiple of eps of the exact solution.
+    bound = 1e3 * np.finfo(float).eps * np.linalg.cond(shifted) * np.abs(expected).max()
+    np.testing.assert_allclose(solve(b), expected, rtol=0, atol=bound)
+
+
+def test_the_preconditioner_of_a_matrix_not_finite_is_none():
+    from ringchain.numerics.layouts import rings_static
+
+    # No shift makes it finite: none is tried forever (the solver then steps along the gradient and its pairs).
+    matrix = _positive_definite(20, seed=9).tolil()
+    matrix[4, 4] = np.nan
+    assert rings_static._preconditioner(_Matrix(matrix.tocsc()), None) is None
+
+
+def _cliff(problem, dof, sides):
+    """Wrap the loads of ``problem`` with a cliff of the energy (1e100 J, its gradient 1e110) where the move of ``dof``
+    passes half the finite-difference step, on the given sides (+1, -1): a stand-in for Hertz's stiffness of the
+    curvatures capped at ln(B/A) = 690, which jumps by some 1e140 where a contact's sum A of curvatures turns
+    negative."""
+    from ringchain.numerics.layouts import rings_static
+
+    evaluate = problem.evaluate
+
+    def cliffed(x, cold=True):
+        energy, grad = evaluate(x, cold)
+        if any(side * x[dof] > 0.5 * rings_static.DIFFERENCE for side in sides):
+            grad = grad.copy()
+            grad[dof] += 1e110
+            energy += 1e100
+        return energy, grad
+
+    problem.evaluate = cliffed
+
+
+@pytest.fixture(scope="module")
+def hanging():
+    """A chain of four rings hanging at rest, its contacts closed under the weights (the rest pose of a chain
+    just touches them: a difference there is one-sided by nature, Hertz's force growing from zero)."""
+    return Rings.chain(4, RING).equilibrium(force_tol=1e-6)
+
+
+@pytest.mark.parametrize("dof", [0, 2, 4, 7])
+def test_the_stiffness_matrix_takes_no_difference_across_a_cliff(dof, hanging):
+    from ringchain.numerics.layouts import rings_static
+
+    chain = hanging
+    plain = rings_static._Problem(chain, STANDARD_GRAVITY)
+    size = 6 * plain.moving.size
+    expected = plain.stiffness(plain.evaluate(np.zeros(size))[1]).toarray()
+    cliffed = rings_static._Problem(chain, STANDARD_GRAVITY)
+    _cliff(cliffed, dof, sides=(1.0,))
+    matrix = cliffed.stiffness(cliffed.evaluate(np.zeros(size))[1]).toarray()
+    assert cliffed.dropped == 0
+    # The forward and backward differences of a smooth gradient agree to DIFFERENCE over the length on which the
+    # stiffness changes (the approach of a contact, some 1e-3 r): 1e-4 of the largest entry; the difference across
+    # the cliff would put 1e117 in the matrix.
+    np.testing.assert_allclose(matrix, expected, rtol=0, atol=1e-3 * np.abs(expected).max())
+
+
+def test_the_stiffness_matrix_leaves_out_a_column_with_a_cliff_either_side(hanging):
+    from ringchain.numerics.layouts import rings_static
+
+    chain = hanging
+    problem = rings_static._Problem(chain, STANDARD_GRAVITY)
+    size = 6 * problem.moving.size
+    plain = problem.stiffness(problem.evaluate(np.zeros(size))[1]).toarray()
+    _cliff(problem, 2, sides=(1.0, -1.0))  # a translation (along z) of the lowest ring
+    matrix = problem.stiffness(problem.evaluate(np.zeros(size))[1]).toarray()
+    assert problem.dropped == 1
+    assert np.all(matrix[:, 2] == 0.0)  # left out, not the difference across the cliff
+    assert np.any(plain[:, 2] != 0.0)  # (where the plain matrix has a column: the ring rests on its neighbour)
