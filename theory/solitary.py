@@ -242,7 +242,12 @@ def _change_of_variables_ratio():
     residual = _to_ratio(eq19_residual(xi_of_y, xi_tau, xi_tautau, C_1=0))
     residual = sp.expand(sp.powsimp(sp.expand(residual)))
     q_value = next(value for value in sp.solve(sp.factor(residual.coeff(y_mu, 2)), q, check=False) if value != 0)
-    y_mumu_value = sp.solve(residual.subs(q, q_value), y_mumu, check=False)[0]
+    # The residual is linear in y_mumu (it enters through xi_tautau alone): its root read from the two
+    # coefficients, which ``solve`` takes 1 s to find.
+    with_q = sp.expand(residual.subs(q, q_value))
+    if sp.diff(with_q, y_mumu, 2) != 0:  # pragma: no cover - derivation check
+        raise RuntimeError("the residual is not linear in y_mumu")
+    y_mumu_value = -with_q.coeff(y_mumu, 0) / with_q.coeff(y_mumu, 1)
     coefficients = _power_coefficients(y_mumu_value, y)
     linear = _coefficient(coefficients, 1)
     kappa_value = next(k for k in sp.solve(sp.Eq(linear, -1), kappa, check=False) if k.is_positive)
