@@ -1,7 +1,0 @@
-# ringchain generated code v1 sha256=723dd5df70c964ffb0e45eba72d0d60d53e789554acdd5c4b3d66656fc80dc02
-# derivation: curved_beam._inextensional_in_plane
-# source key: caeff341571871d5b69b (theory/*.py, sympy 1.14.0, numpy 2.4.6)
-# arguments: k, R, r, E, nu, rho
-# expression sha256: 268afb1bf318f0a04178ef97b41cbc44d5619516d7e3f927661309fad15ecf03 (of its srepr)
-def _lambdifygenerated(k, R, r, E, nu, rho):
-    return (1/2)*numpy.sqrt(E)*k*r*(k - 1)*(k + 1)/(R**2*numpy.sqrt(rho)*numpy.sqrt(k**2 + 1))

@@ -1,8 +1,0 @@
-# ringchain generated code v1 sha256=4b100e04c1b6c1fbbabeb84e11083d72c1a8de6270418944ef0e76c865cb7e3e
-# derivation: linear._power_law_top
-# source key: caeff341571871d5b69b (theory/*.py, sympy 1.14.0, numpy 2.4.6)
-# arguments: F_0, K, n, m
-# expression sha256: 1608b90f5fab4fef0955b1d13283288848aad2698d39d3b6ad3eb3bc667dd20c (of its srepr)
-def _lambdifygenerated(F_0, K, n, m):
-    x0 = (1/2)/n
-    return 2*F_0**(1/2 - x0)*K**x0*numpy.sqrt(n)/numpy.sqrt(m)
