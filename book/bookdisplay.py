@@ -159,8 +159,11 @@ def textbook(label: str, typed, derived, *, samples: int = 6) -> None:
     symbols = sorted(typed.free_symbols | derived.free_symbols, key=str)
     for _ in range(samples):
         point = {s: sp.Rational(rng.randint(100, 1100), 1000) for s in symbols}
-        a, b = (complex(e.subs(point).evalf(40)) for e in (typed, derived))
-        if abs(a - b) > 1e-25 * max(abs(a), abs(b), 1e-300):
+        a, b = (e.subs(point).evalf(40) for e in (typed, derived))
+        # Compared at 40 digits (as complex numbers the values would round to 16, and 1e-25 would mean 1e-16).
+        gap = sp.Abs(a - b).evalf(40)
+        size = max(sp.Abs(a).evalf(40), sp.Abs(b).evalf(40), sp.Float("1e-300", 40))
+        if not gap <= sp.Float("1e-25", 40) * size:
             raise AssertionError(f"{label}: the typed equation differs from the package's: {typed} != {derived}")
 
 
