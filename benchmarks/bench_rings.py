@@ -8,8 +8,11 @@ integrated for ``--duration`` by
 the disk cache) by a short run of a small chain first, timed apart: the cold compile is a one-off cost.
 
 Prints the wall time of the compile/warm-up, the wall and CPU time of the run (on a busy machine the CPU
-time is the cost), the steps it took, the peak of the memory the run allocated (tracemalloc: NumPy's arrays
-included) and the peak resident memory of the process.
+time is the cost), the steps it took, the peak resident memory of the process and, with ``--traced``, the peak
+of the memory the run allocated (tracemalloc: NumPy's arrays included).  Traced, the run takes three times as
+long: the compiled kernels allocate their small work arrays (a pose's matrices, a scan's brackets) from Python's
+allocator once per pair and evaluation, and tracemalloc sees every one (all figures below up to the next paragraph
+but one were traced, as the benchmark then always was).
 
 Measured on a 2-core machine shared with other jobs (load average 13-15), the Hertz law of the curvatures,
 kernels loaded from the disk cache: Verlet 1508 steps in 12.8 s wall (4.8 s of CPU), dopri5 1101 steps (6698
@@ -28,6 +31,11 @@ the goal.
 Nearly quiet (load 1.3: one other single-threaded job on the two cores), kernels from the disk cache: dopri5 16.4 s
 wall (16.0 s of CPU; 1101 steps, 6698 evaluations), Verlet 5.7 s wall (5.7 s of CPU, 1508 steps); 42 MB allocated
 at peak, 218 and 255 MB resident.
+
+Untraced, quiet (load below 1), kernels from the disk cache, with the loads the energy's gradient (the derivatives
+of Hertz's K_c over the pose and the shares of twin contacts) and the search's look between samples: dopri5 15.0 s
+wall (15.0 s of CPU; 1101 steps, 6698 evaluations, 2.2 ms each), 220 MB resident; traced, the same run 45.2 s wall
+(317 MB resident).  The goal (20 s on 2 cores) is met.
 
 With the contact search's look between two samples and the warm start's check for a twin beyond a maximum
 (:mod:`ringchain.numerics.engine.rings_kernels`), against the search before them, alternately on a machine at load
@@ -67,17 +75,20 @@ def main():
     parser.add_argument("--speed", type=float, default=1.0, help="impact speed, m/s")
     parser.add_argument("--samples", type=int, default=201)
     parser.add_argument("--method", default="dopri5", choices=["dopri5", "verlet"])
+    parser.add_argument("--traced", action="store_true", help="measure the memory the run allocates (tracemalloc: "
+                        "the run then takes about three times as long)")  # fmt: skip
     args = parser.parse_args()
 
     start = time.perf_counter()
     run(4, 1e-5, args.speed, 3, args.method)  # compile (or load) the kernels
     warm_up = time.perf_counter() - start
 
-    tracemalloc.start()
+    if args.traced:
+        tracemalloc.start()
     start, cpu = time.perf_counter(), time.process_time()
     sim = run(args.rings, args.duration, args.speed, args.samples, args.method)
     wall, cpu = time.perf_counter() - start, time.process_time() - cpu
-    _, peak = tracemalloc.get_traced_memory()
+    peak = tracemalloc.get_traced_memory()[1] if args.traced else None
     tracemalloc.stop()
     rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 2**10  # kB -> MB (Linux)
 
@@ -87,7 +98,8 @@ def main():
     print(f"{args.rings} rings, {args.duration * 1e3:g} ms after an impact at {args.speed:g} m/s, {args.method}")
     print(f"  compile or load of the kernels (a 4-ring run): {warm_up:.1f} s")
     print(f"  run: {wall:.1f} s wall, {cpu:.1f} s of CPU, {steps[0]} steps ({sim.stats.get('nfev')} evaluations)")
-    print(f"  memory: {peak / 2**20:.0f} MB allocated at peak during the run; {rss:.0f} MB resident at peak")
+    allocated = f"{peak / 2**20:.0f} MB allocated at peak during the run (traced); " if args.traced else ""
+    print(f"  memory: {allocated}{rss:.0f} MB resident at peak")
     print(f"  peak link force {force.max():.1f} N; the pulse has reached link {front} at t = {sim.t[-1] * 1e3:g} ms")
 
 
