@@ -66,6 +66,16 @@ CHECK_SCRIPT = (BOOK / "browser_check.js").read_text()
 # Resolves once the page has been laid out and painted at its current window size.
 _TWO_FRAMES = "new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done)))"
 
+# Resolves once the page is laid out and painted at its current window size and its finite animations have ended
+# (at most 3 s): a resized window starts the theme's transitions (at 390 px its side columns slide out of view), and a
+# capture in the middle of one showed the page half scrolled sideways.
+_SETTLED = """new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(async () => {
+  const running = document.getAnimations().filter((a) => a.effect && a.effect.getComputedTiming().endTime !== Infinity);
+  await Promise.race([Promise.all(running.map((a) => a.finished.catch(() => null))),
+                      new Promise((later) => setTimeout(later, 3000))]);
+  requestAnimationFrame(() => requestAnimationFrame(done));
+})))"""
+
 
 def chromium() -> str | None:
     return shutil.which("chromium") or shutil.which("chromium-browser") or shutil.which("google-chrome")
@@ -196,10 +206,10 @@ async def _inspect(port: int, pages: list[str], out: Path, timeout: float) -> li
 
 
 async def _window(tools: _DevTools, width: int) -> None:
-    """The window ``width`` px wide and :data:`VIEWPORT_HEIGHT` tall, laid out and painted."""
+    """The window ``width`` px wide and :data:`VIEWPORT_HEIGHT` tall, laid out and painted, its transitions ended."""
     await tools.call("Emulation.setDeviceMetricsOverride", width=width, height=VIEWPORT_HEIGHT, deviceScaleFactor=1,
                      mobile=False)  # fmt: skip
-    await tools.call("Runtime.evaluate", expression=_TWO_FRAMES, awaitPromise=True)
+    await tools.call("Runtime.evaluate", expression=_SETTLED, awaitPromise=True)
 
 
 async def _every_page(port: int, pages: list[str], out: Path, timeout: float) -> list[dict]:
