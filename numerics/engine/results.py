@@ -222,9 +222,10 @@ class Simulation(NetworkSimulation):
         self._require_all("bond_force")
         return self.link_force
 
-    @property
+    @functools.cached_property
     def contact_force(self) -> np.ndarray:
-        """Force between ring i and ring i+1, N, positive in tension; shape (..., T, n_rings - 1)."""
+        """Force between ring i and ring i+1, N, positive in tension; shape (..., T, n_rings - 1).  Selected from
+        :attr:`bond_force` once and kept: a loop that reads one contact at a time copies nothing more."""
         return self.bond_force[..., self.chain.contact_links]
 
     @property
