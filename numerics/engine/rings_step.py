@@ -132,6 +132,7 @@ def _pair(m, k, x, u, R, warm, load, rec, rows, vec, law, search, fold):
                                weights, slopes, tops)  # fmt: skip
     law[0], law[2], law[3] = m.kind[k], m.par[0, k, 1], m.par[0, k, 2]
     law[4], law[5] = m.par[0, k, 3], m.floats[0]
+    law[7] = rings_law.fold_quartic(m.coupling[i, 0], m.coupling[i, 1], m.coupling[j, 0], m.coupling[j, 1])
     power, energy = 0.0, 0.0
     for slot in range(rec.shape[0]):
         rec[slot, 0] = -np.inf
