@@ -11,6 +11,42 @@ opposite on ring 2.  Hertz's K follows the curvatures at the contact, which move
 (:func:`stiffness_slopes`) gives the loads that make the contact's force the gradient of its stored energy
 (:func:`~ringchain.numerics.engine.rings_step.loads` adds them).  SI units throughout.
 
+Near a fold.  Hertz's K_c = 4/3 E* (2A)^(-1/2) Gamma(B/A) grows without bound as the smaller sum of curvatures A
+falls to zero, where a minimum of the distance of the centre circles is about to split in two (theta_min at a
+crossing, a ring sliding past a fold); capped only at ln(B/A) = 690, the table's end, it reached some 1e150 times its
+size, a cliff of the energy that the static solver's trial poses met (1e132-1e144 J).  There the gap along the flat
+direction is quartic, h = A x^2 + C x^4 + B y^2, and the contact's length is set by C once A^2 < ~C delta.  The
+rings' law (:func:`contact_stiffness`) keeps Hertz's form with an effective curvature A_eff(A, C delta): A itself
+where A^2 >> C delta (to 28 (C delta/A^2)^3 relative: 2e-10 at the chapter's static pull at 60 degrees), bounded
+below by a multiple of sqrt(C delta) at A = 0 and beyond; its stored energy is 2/5 K delta^(5/2) and its force the
+derivative of that energy, so K's dependence on delta stays in the gradient.  C is that of the fold of two
+interlocked tori at theta_min (:func:`fold_quartic`, derived in :func:`ringchain.theory.gap.fold_quartic`), one
+number per pair.  Against the half-space solver (:class:`~ringchain.numerics.contact.halfspace.ElasticHalfSpace`, 32
+pixels across the contact along each axis, a window 1.3 times it; 24 pixels change the force by 0.16 per cent at
+most) on the gap A x^2 + C x^4 + B y^2, force at a given approach, law/solver - 1 (Hertz/solver - 1 beside it), for
+B/sqrt(C delta) = 10, 100, 1000 (the rings' contacts near a fold: about 100-200), t = A/sqrt(C delta):
+
+====== ======================== ========================
+t      law                      Hertz
+====== ======================== ========================
+8      +0.001 +0.002 +0.002     +0.001 +0.002 +0.002
+3      +0.003 +0.007 +0.009     +0.011 +0.016 +0.019
+2      +0.003 +0.009 +0.014     +0.024 +0.034 +0.041
+1      +0.007 +0.019 +0.027     +0.085 +0.110 +0.126
+0.5    +0.006 +0.025 +0.036     +0.219 +0.273 +0.304
+0      -0.012 +0.015 +0.030     (infinite)
+-0.25  -0.035 -0.004 +0.014     (infinite)
+-0.5   -0.070 -0.035 -0.015     (infinite)
+-1     -0.173 -0.133 -0.108     (infinite)
+-2     -0.437 -0.390 -0.362     (infinite)
+====== ======================== ========================
+
+(:data:`QUARTIC_WEIGHT` and :data:`QUARTIC_SCALE` fitted to these 54 forces, over t >= -0.5.)  Below t = -0.5 the
+law falls short: there the row's point is a maximum of the gap along x, the gap's two minima already overlap by
+A^2/(4C) before the approach is counted, and the row no longer stands for the contact (the search would find two
+minima; such rows are met only between searches, or where A of the curvatures at the tubes' surfaces and g'' of the
+centre circles, equal at zero approach, differ by terms of order delta).
+
 The disk cache: as every kernel module of the engine (:data:`ringchain.numerics.engine._compiled.KERNEL_MODULES`,
 whose sources key the cache folder: a change here recompiles the kernels that call these).
 """
@@ -25,7 +61,17 @@ from ringchain.theory.elliptical import TABLE_MAX_LOG_RATIO
 from ._compiled import jit
 from .rings_kernels import rotation_matrix
 
-__all__ = ["LAW_PARAMETERS", "hertz_stiffness_curvatures", "elliptical_factor_at", "contact_force", "stiffness_slopes"]
+__all__ = [
+    "LAW_PARAMETERS",
+    "QUARTIC_WEIGHT",
+    "QUARTIC_SCALE",
+    "fold_quartic",
+    "hertz_stiffness_curvatures",
+    "contact_stiffness",
+    "elliptical_factor_at",
+    "contact_force",
+    "stiffness_slopes",
+]
 
 #: Parameters of a contact law (a row): kind (0 the Hertz stiffness of the curvatures, 1 a given K),
 #: K (N/m^n, kind 1), n (kind 1), gamma (N s/m), mu, v_reg (m/s), E* (Pa, kind 0).  A row may carry an eighth
@@ -34,7 +80,7 @@ __all__ = ["LAW_PARAMETERS", "hertz_stiffness_curvatures", "elliptical_factor_at
 #: its ellipse capped at the table's end (:data:`ringchain.theory.elliptical.TABLE_MAX_LOG_RATIO`).
 LAW_PARAMETERS = 8
 #: The weight w_0 and the scale tau of the quartic term of the effective curvature of :func:`contact_stiffness`,
-#: fitted to the half-space solver's force on the gaps A x^2 + C x^4 + B y^2 (benchmarks/bench_rings_law.py).
+#: fitted to the half-space solver's force on the gaps A x^2 + C x^4 + B y^2 (the module notes).
 QUARTIC_WEIGHT = 0.22
 QUARTIC_SCALE = 3.35
 
@@ -204,9 +250,9 @@ def contact_stiffness(k1a, k1b, k2a, k2b, cos_angle, E_star, quartic, delta, tab
     that reaches delta at the half-length a (the larger root), with w = QUARTIC_WEIGHT for t <= 0 and
     w_0/(1 + (t/QUARTIC_SCALE)^4) above, so that A_eff = A (1 + O(t^-6)) where the quartic is negligible
     (t = A/sqrt(C delta) >> 1), sqrt(w_0 C delta) at A = 0, and C delta w_0/|A| for A << -sqrt(C delta).  w_0 and
-    tau are fitted to the half-space solver on such gaps; the force is within 4 per cent of it for t >= -0.5 and
-    1e1 <= B/sqrt(C delta) <= 1e3 (benchmarks/bench_rings_law.py).  At fixed C, A_eff is smooth (C^3 at t = 0)
-    in A and delta, and K finite for every A.
+    tau are fitted to the half-space solver on such gaps; the force is within 4 per cent of it for t >= -0.25 and
+    1e1 <= B/sqrt(C delta) <= 1e3, 7 per cent at t = -0.5 (the module notes).  At fixed C, A_eff is smooth (C^3 at
+    t = 0) in A and delta, and K finite for every A.
     """
     A, B = _curvature_sums(k1a, k1b, k2a, k2b, cos_angle)
     if not (quartic > 0.0 and delta > 0.0):
@@ -229,11 +275,12 @@ def stiffness_slopes(row, c1, q1, R1, c2, q2, R2, law, table, step, out):
     which move with the pose: s_2 as the nearest point of circle 2 to the point p_1 of circle 1
     (ds_2 = t_2.dp_1 / rho, rho the distance of p_1 from the axis of ring 2), s_1 as the minimum of the distance
     (the total differential of g'(s_1) = R_1 (p_1 - p_2).t_1 vanishes; its coefficient of ds_1 is g''/R_1).  The
-    derivatives of K_c over its three arguments are central differences of :func:`hertz_stiffness_curvatures`
-    (relative steps of 1e-6: their error about 1e-10 of the derivative).  A contact energy K_c phi(delta) then has
-    the loads of :func:`contact_force` plus -phi dK_c/dpose; ring 2's follow from the invariance of K_c under a
-    rigid motion of both rings (its force the opposite, its torque about its centre minus ring 1's minus
-    (c_1 - c_2) x that force).
+    derivatives of K_c over its three arguments are central differences of :func:`contact_stiffness` at the row's
+    approach and the law's quartic C (both held: the approach's own derivative is the normal force of
+    :func:`contact_force`) (relative steps of 1e-6: their error about 1e-10 of the derivative).  A contact energy
+    K_c phi(delta) then has the loads of :func:`contact_force` plus -phi dK_c/dpose; ring 2's follow from the
+    invariance of K_c under a rigid motion of both rings (its force the opposite, its torque about its centre minus
+    ring 1's minus (c_1 - c_2) x that force).
     """
     M1 = np.empty((3, 3))
     M2 = np.empty((3, 3))
@@ -311,8 +358,9 @@ def contact_force(row, c1, v1, w1, c2, v2, w2, law, table, step, force, torque_1
     """Force and torques of one contact row (module notes) between ring 1 and ring 2.
 
     Parameters: ``row`` (FIELDS,); centres c (3,) m, velocities v (3,) m/s and angular velocities w (3,) rad/s,
-    all in space; ``law`` (LAW_PARAMETERS,) or (LAW_PARAMETERS + 1,): kind (0 Hertz of the curvatures, 1 the
-    power law K delta^n), K, n, gamma, mu, v_reg, E*[, the largest ln(B/A)]; ``table``, ``step``: the elliptical
+    all in space; ``law`` (LAW_PARAMETERS - 1,) or (LAW_PARAMETERS,): kind (0 Hertz of the curvatures, 1 the
+    power law K delta^n), K, n, gamma, mu, v_reg, E*[, the gap's quartic coefficient C, 1/m^3, of
+    :func:`contact_stiffness`]; ``table``, ``step``: the elliptical
     factor (kind 0; :func:`ringchain.theory.elliptical_factor_grid`).
     Writes the force on ring 1 (N; ring 2 gets its opposite) and the torques on rings 1 and 2 about their
     centres (N m), all in space.  Returns (normal force N, stored energy J, dashpot power W, friction power W):
