@@ -34,7 +34,7 @@ import numpy as np
 
 from . import _validate as v
 from ._codegen import derived, sp
-from .contact import symbols
+from .contact import minimum_angle, symbols
 
 __all__ = [
     "gap_symbols",
@@ -43,6 +43,7 @@ __all__ = [
     "surface_gap",
     "surface_gap_quadratic",
     "patch_geometry",
+    "fold_quartic",
     "torus_distance",
     "torus_gap",
     "contact_patches",
@@ -177,6 +178,26 @@ def patch_geometry():
     slope2 = sp.factor(sp.simplify(_with_inner_radius(slope2).subs(C, sp.sqrt(1 - S**2)).subs(L, R - r)))
     half = {S: sp.sin(theta / 2), C: sp.cos(theta / 2)}
     return dict(c=sp.simplify(c.subs(half)), gap=gap.subs(half), slope2=slope2.subs(half))
+
+
+def fold_quartic():
+    """C (1/m^3): the quartic coefficient of the gap along the flat direction where the contact splits.
+
+    At theta_min (:func:`.contact.minimum_angle`) the quadratic coefficient A of the gap along the bisector of the
+    ring planes vanishes, and g = C c^4 + O(c^6) there (g is even along it: :func:`patch_geometry`), c the distance
+    from the axis along the bisector.  The fourth derivative of :func:`surface_gap` on the bisector at c = 0 over
+    4!, at theta_min, in R and r: 1/(4 R r (R - r)), each tube adding half.  The law of rigid rings near a fold
+    (:func:`ringchain.numerics.engine.rings_law.contact_stiffness`) bounds Hertz's stiffness with it.
+    """
+    s, g = symbols(), gap_symbols()
+    theta, c = s["theta"], sp.Symbol("c", real=True)
+    along = surface_gap().subs({g["x"]: c * sp.cos(theta / 2), g["y"]: c * sp.sin(theta / 2)}, simultaneous=True)
+    at_fold = {theta: minimum_angle()}
+    quadratic = sp.simplify(_with_inner_radius(sp.diff(along, c, 2).subs(c, 0).subs(at_fold)))
+    if quadratic != 0:  # pragma: no cover - derivation check
+        raise RuntimeError(f"the gap's quadratic coefficient on the bisector does not vanish at theta_min: {quadratic}")
+    quartic = sp.simplify(_with_inner_radius(sp.diff(along, c, 4).subs(c, 0).subs(at_fold) / 24))
+    return sp.factor(sp.simplify(quartic.subs(g["L"], s["R"] - s["r"])))
 
 
 # --- numeric functions ---------------------------------------------------------------------

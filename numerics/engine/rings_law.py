@@ -11,6 +11,42 @@ opposite on ring 2.  Hertz's K follows the curvatures at the contact, which move
 (:func:`stiffness_slopes`) gives the loads that make the contact's force the gradient of its stored energy
 (:func:`~ringchain.numerics.engine.rings_step.loads` adds them).  SI units throughout.
 
+Near a fold.  Hertz's K_c = 4/3 E* (2A)^(-1/2) Gamma(B/A) grows without bound as the smaller sum of curvatures A
+falls to zero, where a minimum of the distance of the centre circles is about to split in two (theta_min at a
+crossing, a ring sliding past a fold); capped only at ln(B/A) = 690, the table's end, it reached some 1e150 times its
+size, a cliff of the energy that the static solver's trial poses met (1e132-1e144 J).  There the gap along the flat
+direction is quartic, h = A x^2 + C x^4 + B y^2, and the contact's length is set by C once A^2 < ~C delta.  The
+rings' law (:func:`contact_stiffness`) keeps Hertz's form with an effective curvature A_eff(A, C delta): A itself
+where A^2 >> C delta (to 28 (C delta/A^2)^3 relative: 2e-10 at the chapter's static pull at 60 degrees), bounded
+below by a multiple of sqrt(C delta) at A = 0 and beyond; its stored energy is 2/5 K delta^(5/2) and its force the
+derivative of that energy, so K's dependence on delta stays in the gradient.  C is that of the fold of two
+interlocked tori at theta_min (:func:`fold_quartic`, derived in :func:`ringchain.theory.gap.fold_quartic`), one
+number per pair.  Against the half-space solver (:class:`~ringchain.numerics.contact.halfspace.ElasticHalfSpace`, 32
+pixels across the contact along each axis, a window 1.3 times it; 24 pixels change the force by 0.16 per cent at
+most) on the gap A x^2 + C x^4 + B y^2, force at a given approach, law/solver - 1 (Hertz/solver - 1 beside it), for
+B/sqrt(C delta) = 10, 100, 1000 (the rings' contacts near a fold: about 100-200), t = A/sqrt(C delta):
+
+====== ======================== ========================
+t      law                      Hertz
+====== ======================== ========================
+8      +0.001 +0.002 +0.002     +0.001 +0.002 +0.002
+3      +0.003 +0.007 +0.009     +0.011 +0.016 +0.019
+2      +0.003 +0.009 +0.014     +0.024 +0.034 +0.041
+1      +0.007 +0.019 +0.027     +0.085 +0.110 +0.126
+0.5    +0.006 +0.025 +0.036     +0.219 +0.273 +0.304
+0      -0.012 +0.015 +0.030     (infinite)
+-0.25  -0.035 -0.004 +0.014     (infinite)
+-0.5   -0.070 -0.035 -0.015     (infinite)
+-1     -0.173 -0.133 -0.108     (infinite)
+-2     -0.437 -0.390 -0.362     (infinite)
+====== ======================== ========================
+
+(:data:`QUARTIC_WEIGHT` and :data:`QUARTIC_SCALE` fitted to these 54 forces, over t >= -0.5.)  Below t = -0.5 the
+law falls short: there the row's point is a maximum of the gap along x, the gap's two minima already overlap by
+A^2/(4C) before the approach is counted, and the row no longer stands for the contact (the search would find two
+minima; such rows are met only between searches, or where A of the curvatures at the tubes' surfaces and g'' of the
+centre circles, equal at zero approach, differ by terms of order delta).
+
 The disk cache: as every kernel module of the engine (:data:`ringchain.numerics.engine._compiled.KERNEL_MODULES`,
 whose sources key the cache folder: a change here recompiles the kernels that call these).
 """
@@ -25,19 +61,48 @@ from ringchain.theory.elliptical import TABLE_MAX_LOG_RATIO
 from ._compiled import jit
 from .rings_kernels import rotation_matrix
 
-__all__ = ["LAW_PARAMETERS", "hertz_stiffness_curvatures", "elliptical_factor_at", "contact_force", "stiffness_slopes"]
+__all__ = [
+    "LAW_PARAMETERS",
+    "QUARTIC_WEIGHT",
+    "QUARTIC_SCALE",
+    "fold_quartic",
+    "hertz_stiffness_curvatures",
+    "contact_stiffness",
+    "elliptical_factor_at",
+    "contact_force",
+    "stiffness_slopes",
+]
 
 #: Parameters of a contact law (a row): kind (0 the Hertz stiffness of the curvatures, 1 a given K),
 #: K (N/m^n, kind 1), n (kind 1), gamma (N s/m), mu, v_reg (m/s), E* (Pa, kind 0).  A row may carry an eighth
-#: number, the largest ln(B/A) of the Hertz ellipse (kind 0; see :func:`hertz_stiffness_curvatures`); without
-#: it the ellipse is capped at the table's end (:data:`ringchain.theory.elliptical.TABLE_MAX_LOG_RATIO`).
-LAW_PARAMETERS = 7
+#: number, the quartic coefficient C (1/m^3) of the gap along the flat direction of a contact near a fold
+#: (kind 0; :func:`contact_stiffness`, :func:`fold_quartic`); without it, or with C = 0, the law is Hertz's with
+#: its ellipse capped at the table's end (:data:`ringchain.theory.elliptical.TABLE_MAX_LOG_RATIO`).
+LAW_PARAMETERS = 8
+#: The weight w_0 and the scale tau of the quartic term of the effective curvature of :func:`contact_stiffness`,
+#: fitted to the half-space solver's force on the gaps A x^2 + C x^4 + B y^2 (the module notes).
+QUARTIC_WEIGHT = 0.22
+QUARTIC_SCALE = 3.35
 
 
 @jit(inline="always")
-def _ellipse_cap(law):
-    """The largest ln(B/A) of a Hertz law row (:data:`LAW_PARAMETERS`): its eighth number, else the table's end."""
-    return law[7] if law.size > 7 else TABLE_MAX_LOG_RATIO
+def _quartic(law):
+    """The quartic coefficient C (1/m^3) of a Hertz law row (:data:`LAW_PARAMETERS`): its eighth number, else 0."""
+    return law[7] if law.size > 7 else 0.0
+
+
+@jit()
+def fold_quartic(R1, r1, R2, r2):
+    """C (1/m^3): the quartic coefficient of the gap of two tori (radii R_i, r_i in m) along the flat direction at
+    the fold of their contact, sum_i 1/(8 R_i r_i (R_i - r_i)).
+
+    For two equal interlocked tori at theta_min (where A = 0) the exact gap along the bisector of the ring planes is
+    A x^2 + C x^4 + O(x^6) with C = 1/(4 R r (R - r)), each tube's height adding 1/(8 R r (R - r))
+    (:func:`ringchain.theory.gap.fold_quartic_coefficient`, derived from :func:`ringchain.theory.gap.surface_gap`).
+    For unequal tori and for folds of other kinds (a ring sliding over an unlinked neighbour) the true C differs by
+    a factor of order one; K at A = 0 goes as C^(-1/4).
+    """
+    return 1.0 / (8.0 * R1 * r1 * (R1 - r1)) + 1.0 / (8.0 * R2 * r2 * (R2 - r2))
 
 
 @jit()
@@ -67,6 +132,74 @@ def elliptical_factor_at(s, table, step):
 
 
 @jit()
+def _factor_slope(s, table, step):
+    """dGamma/ds of :func:`elliptical_factor_at` (the derivative of the same cubic; 0 past the table's end)."""
+    n = table.size
+    x = s / step
+    if x >= n - 1:
+        return 0.0
+    j = int(x)
+    if j < 1:
+        j = 1
+    if j > n - 3:
+        j = n - 3
+    t = x - j
+    a = table[j - 1]
+    b = table[j]
+    c = table[j + 1]
+    d = table[j + 2]
+    slope = (
+        -a * (3.0 * t * t - 6.0 * t + 2.0) / 6.0
+        + b * (3.0 * t * t - 4.0 * t - 1.0) / 2.0
+        - c * (3.0 * t * t - 2.0 * t - 2.0) / 2.0
+        + d * (3.0 * t * t - 1.0) / 6.0
+    )
+    return slope / step
+
+
+@jit()
+def _curvature_sums(k1a, k1b, k2a, k2b, cos_angle):
+    """Hertz's A <= B (1/m) of two surfaces' principal curvatures (App. A, Eqs. (A2a)-(A2b))."""
+    d1 = k1a - k1b
+    d2 = k2a - k2b
+    total = 0.5 * (k1a + k1b + k2a + k2b)
+    cos2 = 2.0 * cos_angle * cos_angle - 1.0
+    radicand = d1 * d1 + d2 * d2 + 2.0 * d1 * d2 * cos2
+    difference = 0.5 * math.sqrt(radicand) if radicand > 0.0 else 0.0
+    A = 0.5 * (total - difference)
+    return A, A + difference
+
+
+@jit()
+def _hertz(A, B, E_star, max_log_ratio, table, step):
+    """(K_c (N/m^1.5), dK_c/dA at fixed B (N m^-0.5)) of the sums A, B: 4/3 E* (2A)^(-1/2) Gamma(B/A), the ellipse
+    capped at ln(B/A) = ``max_log_ratio`` and at the table's end (a smaller A, zero or negative included, is raised
+    to B exp(-cap), where the slope is 0); B < A is taken as the circle."""
+    cap = math.log1p(max_log_ratio) if max_log_ratio > 0.0 else 0.0
+    top = (table.size - 1) * step
+    if not cap < top:
+        cap = top
+    excess = B - A if B > A else 0.0
+    capped = True
+    if A > 0.0 and math.log1p(excess / A) < max_log_ratio:
+        s = math.log1p(math.log1p(excess / A))
+        capped = s > cap
+        if capped:
+            s = cap
+    else:
+        s = cap
+    if capped:
+        A = B * math.exp(-math.expm1(s))
+    gamma = elliptical_factor_at(s, table, step)
+    K = 4.0 / 3.0 * E_star / math.sqrt(2.0 * A) * gamma
+    if capped:
+        return K, 0.0
+    # d ln K/dA = -1/(2A) + Gamma'/Gamma ds/dA, ds/dA = -1/(A (1 + ln(B/A))) (0 for the circle, B <= A)
+    ds = -1.0 / (A * (1.0 + math.log1p(excess / A))) if excess > 0.0 else 0.0
+    return K, K * (-0.5 / A + _factor_slope(s, table, step) / gamma * ds)
+
+
+@jit()
 def hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, cos_angle, E_star, max_log_ratio, table, step):
     """K_c (N/m^1.5) of two surfaces with principal curvatures (k1a, k1b), (k2a, k2b) (1/m, convex positive)
     whose first principal directions make the angle with cosine ``cos_angle``; E* in Pa.
@@ -75,30 +208,59 @@ def hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, cos_angle, E_star, max_log_ra
     (:func:`ringchain.theory.elliptical_factor_grid`), as :func:`ringchain.theory.hertz_stiffness_curvatures`.
     K_c grows without bound as A -> 0 (a minimum about to split: theta_min at a crossing); the ellipse is
     capped at ln(B/A) = ``max_log_ratio`` (and at the table's end, 690): a smaller A, zero or negative
-    included, is raised to B exp(-max_log_ratio), which keeps K_c finite and continuous.
+    included, is raised to B exp(-max_log_ratio), which keeps K_c finite and continuous.  The contacts of rigid
+    rings bound it by the quartic term of the gap instead (:func:`contact_stiffness`).
     """
-    d1 = k1a - k1b
-    d2 = k2a - k2b
-    total = 0.5 * (k1a + k1b + k2a + k2b)
-    cos2 = 2.0 * cos_angle * cos_angle - 1.0
-    radicand = d1 * d1 + d2 * d2 + 2.0 * d1 * d2 * cos2
-    difference = 0.5 * math.sqrt(radicand) if radicand > 0.0 else 0.0
-    A = 0.5 * (total - difference)
-    B = A + difference
-    cap = math.log1p(max_log_ratio) if max_log_ratio > 0.0 else 0.0
-    top = (table.size - 1) * step
-    if not cap < top:
-        cap = top
-    if A > 0.0 and math.log1p(difference / A) < max_log_ratio:
-        s = math.log1p(math.log1p(difference / A))
-        if s > cap:
-            s = cap
-    else:
-        s = cap
-    if s >= cap:
-        A = B * math.exp(-math.expm1(s))
-    gamma = elliptical_factor_at(s, table, step)
-    return 4.0 / 3.0 * E_star / math.sqrt(2.0 * A) * gamma
+    A, B = _curvature_sums(k1a, k1b, k2a, k2b, cos_angle)
+    K, _ = _hertz(A, B, E_star, max_log_ratio, table, step)
+    return K
+
+
+@jit()
+def _effective_curvature(A, quartic, delta):
+    """(A_eff (1/m), dA_eff/d(delta) (1/m^2)) of :func:`contact_stiffness`: A_eff = a_0 phi(A/a_0),
+    a_0 = sqrt(C delta), phi(t) = (t + sqrt(t^2 + 4 w(t)))/2, w = w_0 for t <= 0, w_0/(1 + (t/tau)^4) above."""
+    a0 = math.sqrt(quartic * delta)
+    t = A / a0
+    u = (t / QUARTIC_SCALE) ** 4 if t > 0.0 else 0.0
+    w = QUARTIC_WEIGHT / (1.0 + u)
+    root = math.sqrt(t * t + 4.0 * w)
+    # d A_eff/d delta = a_0/(2 delta) (phi - t phi') = a_0/(2 delta) (2 w - t w')/root, t w' = -4 w u/(1 + u)
+    slope = a0 / (2.0 * delta) * (2.0 * w + 4.0 * w * u / (1.0 + u)) / root
+    # the larger root of phi^2 - t phi - w = 0, without cancellation on either side of t = 0 (A itself, to
+    # rounding, where w/t^2 is below rounding)
+    if t >= 0.0:
+        return A + a0 * (2.0 * w / (root + t)), slope
+    return a0 * (2.0 * w / (root - t)), slope
+
+
+@jit()
+def contact_stiffness(k1a, k1b, k2a, k2b, cos_angle, E_star, quartic, delta, table, step):
+    """(K (N/m^1.5), dK/d(delta) (N/m^2.5)) of a contact whose gap is A x^2 + C x^4 + B y^2 about its point:
+    Hertz's K_c of the curvatures (:func:`hertz_stiffness_curvatures`, App. A) where A^2 >> C delta, bounded
+    where A -> 0 and below.
+
+    Parameters: principal curvatures (1/m), the cosine of the angle between the first principal directions, E*
+    (Pa) as :func:`hertz_stiffness_curvatures`; ``quartic`` C (1/m^3, :func:`fold_quartic`; 0: Hertz's K_c with
+    its ellipse capped at the table's end); ``delta`` the approach (m, > 0).
+
+    The contact's stored energy is 2/5 K delta^(5/2) and its force d/d(delta) of it, K delta^(3/2) +
+    2/5 delta^(5/2) dK/d(delta) (:func:`contact_force`).  K is Hertz's with A replaced by A_eff = a_0 phi(A/a_0),
+    a_0 = sqrt(C delta), phi(t) = (t + sqrt(t^2 + 4 w(t)))/2: the curvature delta/a^2 of a gap A x^2 + w C x^4
+    that reaches delta at the half-length a (the larger root), with w = QUARTIC_WEIGHT for t <= 0 and
+    w_0/(1 + (t/QUARTIC_SCALE)^4) above, so that A_eff = A (1 + O(t^-6)) where the quartic is negligible
+    (t = A/sqrt(C delta) >> 1), sqrt(w_0 C delta) at A = 0, and C delta w_0/|A| for A << -sqrt(C delta).  w_0 and
+    tau are fitted to the half-space solver on such gaps; the force is within 4 per cent of it for t >= -0.25 and
+    1e1 <= B/sqrt(C delta) <= 1e3, 7 per cent at t = -0.5 (the module notes).  At fixed C, A_eff is smooth (C^3 at
+    t = 0) in A and delta, and K finite for every A.
+    """
+    A, B = _curvature_sums(k1a, k1b, k2a, k2b, cos_angle)
+    if not (quartic > 0.0 and delta > 0.0):
+        K, _ = _hertz(A, B, E_star, TABLE_MAX_LOG_RATIO, table, step)
+        return K, 0.0
+    A_eff, slope = _effective_curvature(A, quartic, delta)
+    K, dK = _hertz(A_eff, B, E_star, TABLE_MAX_LOG_RATIO, table, step)
+    return K, dK * slope
 
 
 @jit()
@@ -113,26 +275,27 @@ def stiffness_slopes(row, c1, q1, R1, c2, q2, R2, law, table, step, out):
     which move with the pose: s_2 as the nearest point of circle 2 to the point p_1 of circle 1
     (ds_2 = t_2.dp_1 / rho, rho the distance of p_1 from the axis of ring 2), s_1 as the minimum of the distance
     (the total differential of g'(s_1) = R_1 (p_1 - p_2).t_1 vanishes; its coefficient of ds_1 is g''/R_1).  The
-    derivatives of K_c over its three arguments are central differences of :func:`hertz_stiffness_curvatures`
-    (relative steps of 1e-6: their error about 1e-10 of the derivative).  A contact energy K_c phi(delta) then has
-    the loads of :func:`contact_force` plus -phi dK_c/dpose; ring 2's follow from the invariance of K_c under a
-    rigid motion of both rings (its force the opposite, its torque about its centre minus ring 1's minus
-    (c_1 - c_2) x that force).
+    derivatives of K_c over its three arguments are central differences of :func:`contact_stiffness` at the row's
+    approach and the law's quartic C (both held: the approach's own derivative is the normal force of
+    :func:`contact_force`) (relative steps of 1e-6: their error about 1e-10 of the derivative).  A contact energy
+    K_c phi(delta) then has the loads of :func:`contact_force` plus -phi dK_c/dpose; ring 2's follow from the
+    invariance of K_c under a rigid motion of both rings (its force the opposite, its torque about its centre minus
+    ring 1's minus (c_1 - c_2) x that force).
     """
     M1 = np.empty((3, 3))
     M2 = np.empty((3, 3))
     rotation_matrix(q1, M1)
     rotation_matrix(q2, M2)
-    cap = _ellipse_cap(law)
+    quartic, delta = _quartic(law), -row[0]
     k1a, k1b, k2a, k2b, cosine = row[9], row[10], row[11], row[12], row[13]
-    K = hertz_stiffness_curvatures(k1a, k1b, k2a, k2b, cosine, law[6], cap, table, step)
+    K, _ = contact_stiffness(k1a, k1b, k2a, k2b, cosine, law[6], quartic, delta, table, step)
     partials = np.empty(3)  # d ln K over k1a, k2a, the cosine
     for a in range(3):
         h = 1e-6 * ((abs(k1a) + k1b) if a == 0 else (abs(k2a) + k2b) if a == 1 else 1.0)
-        up = hertz_stiffness_curvatures(k1a + h * (a == 0), k1b, k2a + h * (a == 1), k2b, cosine + h * (a == 2),
-                                        law[6], cap, table, step)  # fmt: skip
-        down = hertz_stiffness_curvatures(k1a - h * (a == 0), k1b, k2a - h * (a == 1), k2b, cosine - h * (a == 2),
-                                          law[6], cap, table, step)  # fmt: skip
+        up, _ = contact_stiffness(k1a + h * (a == 0), k1b, k2a + h * (a == 1), k2b, cosine + h * (a == 2), law[6],
+                                  quartic, delta, table, step)  # fmt: skip
+        down, _ = contact_stiffness(k1a - h * (a == 0), k1b, k2a - h * (a == 1), k2b, cosine - h * (a == 2), law[6],
+                                    quartic, delta, table, step)  # fmt: skip
         partials[a] = (up - down) / (2.0 * h * K)
     C1, S1, C2, S2 = math.cos(row[1]), math.sin(row[1]), math.cos(row[2]), math.sin(row[2])
     u1, t1, u2, t2, n, lever = np.empty(3), np.empty(3), np.empty(3), np.empty(3), np.empty(3), np.empty(3)
@@ -195,8 +358,9 @@ def contact_force(row, c1, v1, w1, c2, v2, w2, law, table, step, force, torque_1
     """Force and torques of one contact row (module notes) between ring 1 and ring 2.
 
     Parameters: ``row`` (FIELDS,); centres c (3,) m, velocities v (3,) m/s and angular velocities w (3,) rad/s,
-    all in space; ``law`` (LAW_PARAMETERS,) or (LAW_PARAMETERS + 1,): kind (0 Hertz of the curvatures, 1 the
-    power law K delta^n), K, n, gamma, mu, v_reg, E*[, the largest ln(B/A)]; ``table``, ``step``: the elliptical
+    all in space; ``law`` (LAW_PARAMETERS - 1,) or (LAW_PARAMETERS,): kind (0 Hertz of the curvatures, 1 the
+    power law K delta^n), K, n, gamma, mu, v_reg, E*[, the gap's quartic coefficient C, 1/m^3, of
+    :func:`contact_stiffness`]; ``table``, ``step``: the elliptical
     factor (kind 0; :func:`ringchain.theory.elliptical_factor_grid`).
     Writes the force on ring 1 (N; ring 2 gets its opposite) and the torques on rings 1 and 2 about their
     centres (N m), all in space.  Returns (normal force N, stored energy J, dashpot power W, friction power W):
@@ -217,15 +381,16 @@ def contact_force(row, c1, v1, w1, c2, v2, w2, law, table, step, force, torque_1
     delta = -row[0]
     if not delta > 0.0:
         return 0.0, 0.0, 0.0, 0.0
-    if law[0] == 0.0:
-        cap = _ellipse_cap(law)
-        K = hertz_stiffness_curvatures(row[9], row[10], row[11], row[12], row[13], law[6], cap, table, step)
-        n = 1.5
+    if law[0] == 0.0:  # energy 2/5 K delta^(5/2), K = K(delta) near a fold: the force is its derivative
+        K, dK = contact_stiffness(row[9], row[10], row[11], row[12], row[13], law[6], _quartic(law), delta, table,
+                                  step)  # fmt: skip
+        energy = 0.4 * K * delta * delta * math.sqrt(delta)
+        elastic = K * delta * math.sqrt(delta) + 0.4 * dK * delta * delta * math.sqrt(delta)
     else:
         K = law[1]
         n = law[2]
-    elastic = K * delta * math.sqrt(delta) if n == 1.5 else K * delta**n
-    energy = elastic * delta / (n + 1.0)
+        elastic = K * delta**n
+        energy = elastic * delta / (n + 1.0)
     # lever arms from the centres, and the velocity of ring 1's material point at the contact relative to ring 2's
     a1 = (row[3] - c1[0], row[4] - c1[1], row[5] - c1[2])
     a2 = (row[3] - c2[0], row[4] - c2[1], row[5] - c2[2])

@@ -29,9 +29,11 @@ each accepted step (:func:`normalise`).
 Contacts.  The geometry and the law are those of :mod:`ringchain.numerics.engine.rings_kernels`: every local
 minimum of the distance of the two centre circles (warm-started Newton, the cold scan as fallback), the tubes
 overlapping by delta = r_1 + r_2 - d where it is below the sum of the tube radii; the normal force
-[K delta^n + gamma d(delta)/dt]_+ and the regularised Coulomb friction at the contact point, forces and
-torques on both rings, and the loads of the pose derivatives of Hertz's K_c and of the shares of twin contacts
-by a fold (:func:`~ringchain.numerics.engine.rings_law.stiffness_slopes`,
+[K delta^n + gamma d(delta)/dt]_+ (Hertz's K bounded near a fold by the gap's quartic, C of
+:func:`~ringchain.numerics.engine.rings_law.fold_quartic` from the pair's radii, the force then the derivative of the
+stored energy: :func:`~ringchain.numerics.engine.rings_law.contact_stiffness`) and the regularised Coulomb friction
+at the contact point, forces and torques on both rings, and the loads of the pose derivatives of Hertz's K_c and
+of the shares of twin contacts by a fold (:func:`~ringchain.numerics.engine.rings_law.stiffness_slopes`,
 :func:`~ringchain.numerics.engine.rings_kernels.fold_weights`), so that the elastic loads are the gradient of the
 stored energy (a rattle of four rings with Hertz's law holds its energy to 1.3e-11 of the impact's, 2e-7 without
 them).  Their dissipated power (dashpot and friction) is the rate of the state's dissipated energy W.
@@ -132,6 +134,7 @@ def _pair(m, k, x, u, R, warm, load, rec, rows, vec, law, search, fold):
                                weights, slopes, tops)  # fmt: skip
     law[0], law[2], law[3] = m.kind[k], m.par[0, k, 1], m.par[0, k, 2]
     law[4], law[5] = m.par[0, k, 3], m.floats[0]
+    law[7] = rings_law.fold_quartic(m.coupling[i, 0], m.coupling[i, 1], m.coupling[j, 0], m.coupling[j, 1])
     power, energy = 0.0, 0.0
     for slot in range(rec.shape[0]):
         rec[slot, 0] = -np.inf

@@ -153,3 +153,27 @@ def test_contact_modulus_is_app_a():
     assert float(contact_modulus(193e9, 0.29)) == pytest.approx(193e9 / (2 * (1 - 0.29**2)), rel=1e-14)
     with pytest.raises(ValueError, match="nu"):
         contact_modulus(193e9, 0.5)
+
+
+def test_fold_quartic_is_the_quartic_of_the_exact_gap_at_theta_min():
+    derived = gap.fold_quartic()
+    assert sp.simplify(derived - 1 / (4 * R * r * (R - r))) == 0
+    # Independent: the height of each inner tube surface solved from the torus's own equation
+    # (sqrt(x^2 + z^2) - R)^2 + y^2 = r^2 at 40 digits, summed for both rings along the bisector at theta_min,
+    # where the gap is C c^4 + D c^6 + ...: g/c^4 at c and c/2, extrapolated (Richardson) to c = 0.
+    mpmath.mp.dps = 40
+    R0, r0 = mpmath.mpf("22.5e-3"), mpmath.mpf("2.5e-3")
+    half = mpmath.asin(mpmath.sqrt(r0 / R0))  # theta_min / 2 (contact.minimum_angle)
+
+    def height(x, y):  # the inner surface above its inner-equator point (ring 1's own coordinates)
+        return mpmath.findroot(lambda z: (mpmath.sqrt(x**2 + z**2) - R0) ** 2 + y**2 - r0**2, R0 - r0) - (R0 - r0)
+
+    def along(c):  # ring 1 at (c cos, c sin) of the half angle, ring 2 (turned by theta) at (c cos, -c sin)
+        x, y = c * mpmath.cos(half), c * mpmath.sin(half)
+        return (height(x, y) + height(x, -y)) / c**4
+
+    c = mpmath.mpf("1e-6")
+    quartic = (4 * along(c / 2) - along(c)) / 3  # the c^2 term of g/c^4 cancelled: error ~ (c/r)^4 ~ 1e-14
+    expected = float(derived.subs({R: R_, r: r_}))
+    assert float(quartic) == pytest.approx(expected, rel=1e-9)  # Richardson's remainder, and 40 digits
+    mpmath.mp.dps = 15

@@ -81,14 +81,16 @@ def _quaternion(rotation):
 
 @pytest.mark.parametrize(
     "law, below, pull",
-    [("power-law", 2.0, 1e-5), ("power-law", 2.0, 3e-5), ("hertz", 2.0, 3e-5), ("hertz", -10.0, 3e-5)],
-)
+    [("power-law", 2.0, 1e-5), ("power-law", 2.0, 3e-5), ("hertz", 2.0, 3e-5), ("hertz", -10.0, 3e-5),
+     ("hertz", 0.0, 3e-5)],
+)  # fmt: skip
 def test_the_loads_are_the_gradient_of_the_energy(law, below, pull):
     """Central differences of the energy of Rings.potential against its forces and torques: at twin contacts whose
     maximum between them is in overlap (``below`` theta_min by 2 degrees; the shares of rings_kernels.fold_weights
     depend on the pose) with the power law (a constant K: the shares are the only stiffness that changes with the
     pose) and with Hertz's law (K_c of the curvatures at each contact changes with the pose too), and with Hertz's
-    law at one contact 10 degrees above theta_min."""
+    law at one contact 10 degrees above theta_min, and at theta_min itself (one contact whose A/sqrt(C delta) is 1.2:
+    Hertz's K bounded by the gap's quartic, rings_law.contact_stiffness, K depending on the approach)."""
     from ringchain.numerics.contact.tori import torus_contacts
     from ringchain.theory import minimum_contact_angle
     from scipy.spatial.transform import Rotation
