@@ -65,10 +65,12 @@ every contact from scratch (the warm start cannot see a minimum born away from t
 moves rings far); the finite differences follow them.
 
 Cliffs and spoilt factors.  Hertz's stiffness of the curvatures grows as A^(-1/2) where a contact's smaller sum of
-relative curvatures A falls to zero, and the compiled law
-(:func:`~ringchain.numerics.engine.rings_law.hertz_stiffness_curvatures`, its ellipse capped at ln(B/A) = 690 where
-the law's row gives no cap of its own, as the rows of rigid rings do not) raises an A <= 0 to B e^-690: K_c some
-1e150 times its size, a cliff of the energy.  On the 30 x 30 sheet's softest stage the descent's trial poses meet it
+relative curvatures A falls to zero.  Until the rings' law was bounded near a fold
+(:func:`~ringchain.numerics.engine.rings_law.contact_stiffness`: an effective curvature set by the gap's quartic term
+there), the compiled law capped its ellipse only at ln(B/A) = 690 and raised an A <= 0 to B e^-690: K_c some
+1e150 times its size, a cliff of the energy.  The checks below were made for that law and are kept: a contact
+born or lost within a step can still change the energy faster than a difference resolves.  On the 30 x 30
+sheet's softest stage, with that law, the descent's trial poses met the cliff
 (energies of 1e132-1e144 J, loads up to 1e149 m g; the line search rejects them) and so did the finite differences
 of the stiffness matrix: at a base pose where the energy was smooth to 1e-5 r (its change over 1e-7 r matching the
 trapezoid rule on the loads to 1.4e-4), the cliff lay 1e-4 r away (2.5e142 J), and a difference across one put
