@@ -1,7 +1,0 @@
-# ringchain generated code v1 sha256=6c27a18791ed42b74862126bf21b06b5a55cd3ceba706317e3c00bdfa3547e6d
-# derivation: disorder._effective_speed
-# source key: 263ab3517922b3fc21eb (theory/*.py, sympy 1.14.0, numpy 2.4.6)
-# arguments: log_mean_a, log_mean_m, log_mean_compliance
-# expression sha256: a3f1bb5ec73402409d34d738c9ff16eb37040f5a3264e1a18ef289514c049200 (of its srepr)
-def _lambdifygenerated(log_mean_a, log_mean_m, log_mean_compliance):
-    return log_mean_a - 1/2*log_mean_compliance - 1/2*log_mean_m

@@ -1,7 +1,0 @@
-# ringchain generated code v1 sha256=b30b12b4c4ff92325af2a2f99ab970b22ba8525c41d66926c2c291fef8584827
-# derivation: rigid._modulus_pair
-# source key: 263ab3517922b3fc21eb (theory/*.py, sympy 1.14.0, numpy 2.4.6)
-# arguments: E_1, nu_1, E_2, nu_2
-# expression sha256: 048c9cabb01bda9f3cab2a722b38eb0c89f51ffe1d090e7feeb1e997fdf02c9a (of its srepr)
-def _lambdifygenerated(E_1, nu_1, E_2, nu_2):
-    return -E_1*E_2/(E_1*nu_2**2 - E_1 + E_2*nu_1**2 - E_2)
