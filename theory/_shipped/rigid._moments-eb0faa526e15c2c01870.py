@@ -1,9 +1,0 @@
-# ringchain generated code v1 sha256=8ecfa2f6af82a654d5490887e08256fa70e841b7d0065dce5ff5ec75c5407296
-# derivation: rigid._moments
-# source key: c0b268e8f55b26f011d3 (theory/*.py, sympy 1.14.0, numpy 2.4.6)
-# arguments: R, r, m
-# expression sha256: 37cf7913a9cd3a90009f34e5b85d707a02a3091d9afa6656ca353276f703f102 (of its srepr)
-def _lambdifygenerated(R, r, m):
-    x0 = 4*R**2
-    x1 = r**2
-    return ((1/8)*m*(x0 + 5*x1), (1/4)*m*(x0 + 3*x1),)

@@ -1,7 +1,0 @@
-# ringchain generated code v1 sha256=488fdcfd37fad1e7bd8ee5c8e3bf44f2fb1637a644de32327958d881d4b83b13
-# derivation: series._exponent
-# source key: c0b268e8f55b26f011d3 (theory/*.py, sympy 1.14.0, numpy 2.4.6)
-# arguments: F, K_c, K_b
-# expression sha256: 25e67935be228e44fca46acf9cd0be092a2af45a6d2f8a8ededdee4857ab9123 (of its srepr)
-def _lambdifygenerated(F, K_c, K_b):
-    return 3/(2 + (numpy.exp(-1/3*numpy.log(F) + numpy.log(K_b) - 2/3*numpy.log(K_c)) + 1)**(-1.0))
