@@ -44,7 +44,7 @@ import numpy as np
 from . import _validate as v
 from . import longwave
 from ._codegen import derived, sp
-from ._forms import power_law, power_law_value, tidy_powers
+from ._forms import power_law, power_law_value, power_root, tidy_powers
 
 __all__ = [
     "symbols",
@@ -230,6 +230,23 @@ def _coefficient(coefficients, exponent):
     return next(c for e, c in coefficients.items() if sp.cancel(e - exponent) == 0)
 
 
+def _roots_of_factors(product, x):
+    """The roots in x of a product whose factors are linear in x or powers of positive bases (checked).
+
+    The powers of positive bases (y, sigma) never vanish, so the product does exactly where a linear
+    factor does; its root is read from the two coefficients (``solve`` takes 0.25 s).
+    """
+    roots = []
+    for factor in sp.Mul.make_args(product):
+        base, _ = factor.as_base_exp()
+        if not base.has(x) or base.is_positive:
+            continue
+        if not (base.is_polynomial(x) and sp.degree(base, x) == 1):  # pragma: no cover - derivation check
+            raise RuntimeError(f"the factor {factor} is not linear in {x}")
+        roots.append(-base.coeff(x, 0) / base.coeff(x, 1))
+    return roots
+
+
 @functools.cache
 def _change_of_variables_ratio():
     """:func:`change_of_variables` with (V_s/c_n)^2 written as the symbol s."""
@@ -242,7 +259,7 @@ def _change_of_variables_ratio():
     xi_tautau = (sp.diff(xi_of_y, y, 2) * y_mu**2 + sp.diff(xi_of_y, y) * y_mumu) * kappa**2
     residual = _to_ratio(eq19_residual(xi_of_y, xi_tau, xi_tautau, C_1=0))
     residual = sp.expand(sp.powsimp(sp.expand(residual)))
-    q_value = next(value for value in sp.solve(sp.factor(residual.coeff(y_mu, 2)), q, check=False) if value != 0)
+    q_value = next(value for value in _roots_of_factors(sp.factor(residual.coeff(y_mu, 2)), q) if value != 0)
     # The residual is linear in y_mumu (it enters through xi_tautau alone): its root read from the two
     # coefficients, which ``solve`` takes 1 s to find.
     with_q = sp.expand(residual.subs(q, q_value))
@@ -253,8 +270,15 @@ def _change_of_variables_ratio():
     linear = _coefficient(coefficients, 1)
     kappa_value = next(k for k in sp.solve(sp.Eq(linear, -1), kappa, check=False) if k.is_positive)
     nonlinear = tidy_powers(sp.simplify(-_coefficient(coefficients, (3 - n) / (n + 1)) / linear))  # kappa cancels
-    sigma_value = tidy_powers(sp.solve(sp.Eq(nonlinear, 1), sigma, check=False)[0])
-    forcing = sp.expand(y_mumu_value.subs({q: q_value, kappa: kappa_value, sigma: sigma_value}))
+    # nonlinear = c sigma^e (a monomial, checked): sigma = c^(-1/e), without ``solve`` (0.15 s).
+    coefficient, exponent = nonlinear.as_coeff_exponent(sigma)
+    if coefficient.has(sigma) or not exponent.has(n):  # pragma: no cover - derivation check
+        raise RuntimeError(f"{nonlinear} is not a power of sigma")
+    sigma_value = tidy_powers((1 / coefficient) ** (1 / exponent))
+    # The scales substituted term by term into the coefficients already read (substituting them into the whole
+    # quotient y_mumu_value and expanding gives a sum of 30 large fractions, 0.9 s to reduce again).
+    values = {q: q_value, kappa: kappa_value, sigma: sigma_value}
+    forcing = sp.Add(*(c.subs(values) * y**e for e, c in coefficients.items()))
     return dict(
         q=q_value,
         kappa=kappa_value,
@@ -304,11 +328,42 @@ def oscillator_potential(prestressed=False):
 # --- 3. compact solution ------------------------------------------------------------------------
 
 
-def _positive_for_n_above_1(expr):
-    """Whether expr (a root of a polynomial equation) is the positive one when n > 1."""
+def _positive_square_root(expr, x):
+    """The root x > 0 of expr = c_2 x^2 + c_0 (checked) when n > 1, without ``solve`` (0.35 s with the choice of root).
+
+    x^2 = -c_0/c_2, factored; its square root is taken with n = 1 + nu, nu > 0, so that a factor
+    (n - 1)^2 of x^2 gives the factor n - 1 of the positive root.
+    """
     n = symbols()["n"]
+    square = sp.Symbol("square", positive=True)
+    quadratic = sp.expand(expr.subs(x, sp.sqrt(square)))
+    if quadratic.has(x) or sp.diff(quadratic, square, 2) != 0:  # pragma: no cover - derivation check
+        raise RuntimeError(f"{expr} is not c_2 {x}^2 + c_0")
     nu = sp.Symbol("nu", positive=True)
-    return bool(sp.simplify(expr.subs(n, 1 + nu)).is_positive)
+    value = sp.factor(-quadratic.coeff(square, 0) / quadratic.coeff(square, 1)).subs(n, 1 + nu)
+    if not value.is_positive:  # pragma: no cover - derivation check
+        raise RuntimeError(f"{x}^2 = {value} is not positive for n > 1")
+    return sp.sqrt(value).subs(nu, n - 1)
+
+
+def _root_of_two_powers(expr, x):
+    """The root x > 0 of expr = c_1 x^(e + 1) + c_0 x^e (checked): x = -c_0/c_1, factored (``solve`` takes 0.25 s)."""
+    terms: dict = {}
+    for term in sp.Add.make_args(expr):
+        coefficient, power = term.as_independent(x, as_Add=False)
+        base, exponent = power.as_base_exp()
+        if base != x:  # pragma: no cover - derivation check
+            raise RuntimeError(f"{term} is not a power of {x}")
+        exponent = sp.cancel(exponent)
+        terms[exponent] = terms.get(exponent, 0) + coefficient
+    if len(terms) != 2:  # pragma: no cover - derivation check
+        raise RuntimeError(f"{expr} is not a sum of two powers of {x}")
+    (first, c_first), (second, c_second) = terms.items()
+    if sp.cancel(first - second) == 1:
+        (first, c_first), (second, c_second) = (second, c_second), (first, c_first)
+    if sp.cancel(second - first) != 1:  # pragma: no cover - derivation check
+        raise RuntimeError(f"the powers of {x} in {expr} do not differ by one")
+    return sp.factor(-c_first / c_second)
 
 
 @functools.cache
@@ -324,16 +379,18 @@ def _compact_solution_ratio():
     # The linear term s A S^p can only be balanced by the dispersive term S^(n p - 2).
     if not any(sp.cancel(e - (n * p - 2)) == 0 for e in exponents):  # pragma: no cover - derivation check
         raise RuntimeError("no dispersive term S^(n p - 2) in the residual")
-    p_value = sp.solve(sp.Eq(n * p - 2, p), p, check=False)[0]
+    # n p - 2 = p is linear in p: its root read from the two coefficients (``solve`` takes 0.3 s).
+    balance = sp.expand(n * p - 2 - p)
+    if sp.diff(balance, p, 2) != 0:  # pragma: no cover - derivation check
+        raise RuntimeError("the balance of exponents is not linear in p")
+    p_value = -balance.coeff(p, 0) / balance.coeff(p, 1)
     balanced = _power_coefficients(residual.subs(p, p_value), S)
     equations = [sp.expand(c) for c in balanced.values()]
     no_ratio = next(e for e in equations if not e.has(s["s"]))
-    omega_value = next(w for w in sp.solve(no_ratio, omega, check=False) if _positive_for_n_above_1(w))
+    omega_value = _positive_square_root(no_ratio, omega)
     with_ratio = next(e for e in equations if e.has(s["s"])).subs(omega, omega_value)
     Z = sp.Symbol("Z", positive=True)  # A^(n-1)
-    power = sp.solve(
-        sp.powsimp(sp.powdenest(with_ratio.subs(amplitude, Z ** (1 / (n - 1))), force=True)), Z, check=False
-    )[0]
+    power = _root_of_two_powers(sp.powsimp(sp.powdenest(with_ratio.subs(amplitude, Z ** (1 / (n - 1))), force=True)), Z)
     return dict(p=p_value, omega=sp.factor(omega_value), xi_max=power ** (1 / (n - 1)), xi_max_power=power)
 
 
@@ -412,7 +469,7 @@ def speed_from_velocity():
     peak = peak.subs(compact_solution()["xi_max"], s["xi_max"])
     xi_peak = sp.solve(sp.Eq(s["v_max"], peak), s["xi_max"])[0]
     equation = sp.Eq(V_s**2, speed_from_strain().subs(s["xi_max"], xi_peak) ** 2)
-    return sp.powsimp(sp.solve(equation, V_s)[0], force=True)
+    return sp.powsimp(power_root(equation, V_s), force=True)
 
 
 def force_profile():

@@ -17,6 +17,7 @@ from ringchain.theory import (
     solitary_wave_speed_prestressed,
     solitary_wave_width,
 )
+from ringchain.theory._forms import power_root
 
 S = solitary.symbols()
 a, n, K, m, c_n, V_s, tau, x = (S[k] for k in ("a", "n", "K", "m", "c_n", "V_s", "tau", "x"))
@@ -157,6 +158,21 @@ def test_speed_from_strain_is_app_b():
 def test_speed_from_velocity_is_app_b():
     paper = (2 * c_n**2 / (n + 1)) ** (1 / (n + 1)) * (-v_max) ** ((n - 1) / (n + 1))
     assert_same(solitary.speed_from_velocity(), paper)
+
+
+def test_power_root_solves_a_power_equal_to_another():
+    # The helper that replaces ``solve`` for V_s and for the impact law: its root satisfies the equation, for a
+    # power of a product on one side and a sum in the coefficient on the other.
+    x, c = sp.symbols("x c", positive=True)
+    equation = sp.Eq(3 * x**2 * (c + 2), c * (5 / x) ** (n - 1))
+    root = power_root(equation, x)
+    assert not root.has(x)
+    for n_value, c_value in ((1.5, 0.3), (2.7, 4.0)):
+        point = {n: n_value, c: c_value}
+        lhs, rhs = (float(side.subs(x, root).subs(point)) for side in (equation.lhs, equation.rhs))
+        assert lhs == pytest.approx(rhs, rel=1e-13)  # double precision of the two sides
+    with pytest.raises(RuntimeError, match="same power"):
+        power_root(sp.Eq(x**n, c * x**n), x)
 
 
 def test_speed_from_force_is_eq_vsfm():

@@ -1,7 +1,0 @@
-# ringchain generated code v1 sha256=e7ee4935531e9d8a3fb2f682665725c6f39fec26f0d2f82fd037c75f576fbd31
-# derivation: contact._minimum_angle_pair
-# source key: aaa6be78b00d30412b2b (theory/*.py, sympy 1.14.0, numpy 2.4.6)
-# arguments: R_1, r_1, R_2, r_2
-# expression sha256: 2395f2c0189329a23d57f0db5ed475415e7ad6c0338c8239b1f6d48740869674 (of its srepr)
-def _lambdifygenerated(R_1, r_1, R_2, r_2):
-    return numpy.arcsin(numpy.sqrt(r_1 + r_2)*numpy.sqrt(R_1 + R_2 - r_1 - r_2)/(numpy.sqrt(R_1)*numpy.sqrt(R_2)))

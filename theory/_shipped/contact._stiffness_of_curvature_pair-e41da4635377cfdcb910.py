@@ -1,7 +1,0 @@
-# ringchain generated code v1 sha256=2d3f2ae98d2eb2bf71b3f682a4fb36b66e29abc2802133c6e2bd0bcf5280213d
-# derivation: contact._stiffness_of_curvature_pair
-# source key: aaa6be78b00d30412b2b (theory/*.py, sympy 1.14.0, numpy 2.4.6)
-# arguments: A, E_1, nu_1, E_2, nu_2
-# expression sha256: a7375f821857b142ce11533e579399e906fa653d1456e2febaaabc752046ecec (of its srepr)
-def _lambdifygenerated(A, E_1, nu_1, E_2, nu_2):
-    return -2/3*numpy.sqrt(2)*E_1*E_2/(numpy.sqrt(A)*(E_1*nu_2**2 - E_1 + E_2*nu_1**2 - E_2))

@@ -1,8 +1,0 @@
-# ringchain generated code v1 sha256=8a3f09722bfe8c681d0f05935e8cef40713aff7edad52b47b7ac55489eec599e
-# derivation: longwave._sound_speed
-# source key: aaa6be78b00d30412b2b (theory/*.py, sympy 1.14.0, numpy 2.4.6)
-# arguments: K, n, a, m
-# expression sha256: 9f76c9b52a089bf8df7fa7a1b6f8bd88fa49a927608a98968eb7685fdc7cedb2 (of its srepr)
-def _lambdifygenerated(K, n, a, m):
-    x0 = (1/2)/n
-    return (x0*numpy.log(K) + numpy.log(a) - 1/2*numpy.log(m) + (1/2)*numpy.log(n), x0*(n - 1),)
