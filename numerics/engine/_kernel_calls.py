@@ -5,6 +5,7 @@ its own module's file).
 
 - :func:`over_threads` calls a kernel that releases the GIL over ranges of runs on a pool of threads (one
   compiled kernel serves one run or many: no parallel variant to compile).
+- :func:`dopri5_tableau`: the Runge-Kutta pair's coefficients, an argument of its kernel.
 - :func:`announce_compile` prints one line on stderr before a kernel is compiled rather than loaded from
   the disk cache: ``ringchain: compiling the integrator for this machine, once: about N s; cached in ...``.
   N is the compile time of that kernel measured on a quiet two-core machine (:data:`COMPILE_SECONDS`),
@@ -17,6 +18,7 @@ its own module's file).
 from __future__ import annotations
 
 import contextlib
+import functools
 import gc
 import itertools
 import math
@@ -79,6 +81,23 @@ def verlet_arrays(x0, u0, t_eval, t_end, dt, keep):
     out_x, out_u = np.empty((B, T, K)), np.empty((B, T, K))
     status, final_x, final_u = np.zeros(B, dtype=np.int64), np.empty_like(x0), np.empty_like(u0)
     return x0, u0, n_steps, t_end / n_steps, out_x, out_u, status, final_x, final_u
+
+
+@functools.cache
+def dopri5_tableau() -> np.ndarray:
+    """Dormand and Prince's coefficients a_sr of stage s from stage r, the last row the fifth-order weights (made here
+    and passed to the kernel: no kernel of its own to compile, no module-level value in a kernel).  Made once; the
+    kernel only reads it."""
+    a = np.zeros((7, 6))
+    a[1, 0] = 0.2
+    a[2, 0], a[2, 1] = 3.0 / 40.0, 9.0 / 40.0
+    a[3, 0], a[3, 1], a[3, 2] = 44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0
+    a[4, 0], a[4, 1], a[4, 2], a[4, 3] = 19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0
+    a[5, 0], a[5, 1], a[5, 2], a[5, 3], a[5, 4] = (9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0, 49.0 / 176.0,
+                                                   -5103.0 / 18656.0)  # fmt: skip
+    a[6, 0], a[6, 2], a[6, 3], a[6, 4], a[6, 5] = (35.0 / 384.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0,
+                                                   11.0 / 84.0)  # fmt: skip
+    return a
 
 
 def fingerprint(value):
