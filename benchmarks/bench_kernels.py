@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import resource
 import shutil
 import subprocess
 import sys
@@ -218,13 +219,17 @@ def part_cold(args, rows):
         env = {**os.environ, "RINGCHAIN_CACHE_DIR": cache}
         walls = []
         for _ in range(2):
-            start = time.perf_counter()
+            start, cpu = time.perf_counter(), resource.getrusage(resource.RUSAGE_CHILDREN)
             out = subprocess.run([sys.executable, "-W", "error", "-c", COLD_PROBE], env=env, capture_output=True,
                                  text=True, check=True).stdout.split()  # fmt: skip
-            walls.append((time.perf_counter() - start, float(out[0]), out[1] == "True"))
-    print("\n(c) one simulate of the paper's chain in a fresh process (wall s: whole process / import and call)")
-    for name, (wall, inner, cached) in zip(("empty cache (cold)", "warm cache"), walls, strict=True):
-        print(f"{name:28s} {wall:9.2f} {inner:9.2f}  disk cache {'on' if cached else 'off'}")
+            used = resource.getrusage(resource.RUSAGE_CHILDREN)
+            cpu = used.ru_utime + used.ru_stime - cpu.ru_utime - cpu.ru_stime
+            walls.append((time.perf_counter() - start, float(out[0]), out[1] == "True", cpu, os.getloadavg()[0]))
+    print("\n(c) one simulate of the paper's chain in a fresh process (wall s: whole process / import and call; CPU s "
+          "of the process: the compile's cost whatever the load)")  # fmt: skip
+    for name, (wall, inner, cached, cpu, load) in zip(("empty cache (cold)", "warm cache"), walls, strict=True):
+        print(f"{name:28s} {wall:9.2f} {inner:9.2f}  CPU {cpu:6.2f}  load {load:4.1f}  "
+              f"disk cache {'on' if cached else 'off'}")  # fmt: skip
     rows["cold"] = walls
 
 
@@ -283,8 +288,9 @@ def main(argv=None):
         print(f"  paper chain: recipe/dopri5 = {r / d:.0f}x at errors {de:.1e} (dopri5) and {re:.1e} (recipe); "
               "target >= 150x at equal or better accuracy")  # fmt: skip
     if "cold" in rows:
-        (cold, *_), (warm, *_) = rows["cold"]
-        print(f"  one simulate in a fresh process: {cold:.1f} s cold, {warm:.2f} s with a warm cache")
+        (cold, _, _, cold_cpu, _), (warm, *_) = rows["cold"]
+        print(f"  one simulate in a fresh process: {cold:.1f} s cold ({cold_cpu:.1f} s of CPU), {warm:.2f} s with a "
+              "warm cache")  # fmt: skip
     print(f"load average now {os.getloadavg()[0]:.1f}")
 
 

@@ -226,30 +226,29 @@ def _cubic_peak(e0, s0, e1, s1):
     return peak
 
 
-def _remember(m, start, G, y, y_new, h, N, n):
-    """After an accepted step from ``y`` to ``y_new`` (the states of the G runs from ``start``), each Thornton link's
-    memory in ``y_new`` becomes the largest of its memory and the peak extension over the step (the module notes).
-    Returns whether a memory now exceeds its link's extension at the end of the step.  Compiled: chosen by the
-    packed type (a network's links; no memory in the other models)."""
+def _remember(m, start, G, value0, rate0, value1, rate1, y_new, h, N, n):
+    """After an accepted step to ``y_new`` (the states of the G runs from ``start``), each Thornton link's memory in
+    ``y_new`` becomes the largest of its memory and the peak extension over the step (the module notes), from the
+    links' extensions and rates at both ends (:func:`_switches`' rows).  Returns whether a memory now exceeds its
+    link's extension at the end of the step.  Compiled: chosen by the packed type (no memory but a network's)."""
 
 
-def _network_remember(m, start, G, y, y_new, h, N, n):
+def _network_remember(m, start, G, value0, rate0, value1, rate1, y_new, h, N, n):
     w = 2 * N + (1 if m.ints[3] else 0)
     changed = False
     for q in range(G):
         o = q * n
         for k in range(n - w):
             if m.kind[k] == 3:
-                e0, r0 = _extension(m, k, y[o : o + N], y[o + N : o + 2 * N])
-                e1, r1 = _extension(m, k, y_new[o : o + N], y_new[o + N : o + 2 * N])
-                peak = _cubic_peak(e0, h * r0, e1, h * r1)
+                e1 = value1[q, k]
+                peak = _cubic_peak(value0[q, k], h * rate0[q, k], e1, h * rate1[q, k])
                 if peak > y_new[o + w + k]:
                     changed = changed or peak > e1  # memory beyond the end's approach: the force at the end changes
                     y_new[o + w + k] = peak
     return changed
 
 
-def _no_memory(m, start, G, y, y_new, h, N, n):
+def _no_memory(m, start, G, value0, rate0, value1, rate1, y_new, h, N, n):
     return False
 
 
@@ -413,12 +412,13 @@ def _packed_type(m):
     return getattr(m, "instance_class", None)
 
 
-# The right-hand side is chosen when a kernel is compiled, by the packed model's type (Packed, PackedRingChain,
-# PackedRings), not by its kind code at run time: a chain's integrator holds neither the ring-resolved chain nor
-# the rigid rings (they were most of its compile), and theirs none of the links' laws.  The chosen function is
-# compiled into the kernel's own call tree, which is kept shallow: Numba optimises and generates machine code
-# again for every compiled function at every level of calls above it (measured: the cold compile of the paper's
-# chain, 67 s with every kind in one kernel and inlined in Numba's IR, 24 s by type, fewer levels less).
+# The right-hand side, the switches and the memory are chosen when a kernel is compiled, by the packed model's type
+# (Packed, PackedRingChain, PackedRings), not by its kind code at run time: a chain's integrator holds neither the
+# ring-resolved chain nor the rigid rings (they were most of its compile), and theirs none of the links' laws,
+# switches or memory.  The chosen function is compiled into the kernel's own call tree, which is kept shallow:
+# Numba optimises and generates machine code again for every compiled function at every level of calls above it
+# (measured: the cold compile of the paper's chain, 67 s with every kind in one kernel and inlined in Numba's IR,
+# 24 s by type, fewer levels less; what it costs now: benchmarks/bench_kernels.py, part (c)).
 def _by_type(stub, network, ring_chain=None, rings=None):
     """Compile a call of ``stub`` as ``network``, ``ring_chain`` or ``rings`` by the packed model's type (its first
     argument; ``network`` where the others are not given), a kernel called from kernels only (:func:`_inner`)."""
@@ -484,14 +484,15 @@ def _first_zero(e0, s0, e1, s1, start, end):
 
 
 def _network_switches(m, start, G, y, N, n, out_value, out_rate):
-    """The switches of a network's links: a power law's and Hunt-Crossley's extension (not yet Thornton's: see the
-    notes).  Written out: a call per link passing the packed model costs more."""
+    """The switches of a network's links: the extension of a power law, Hunt-Crossley's and Thornton's (read by
+    :func:`_remember`; not located yet: see the notes).  Written out: a call per link passing the packed model
+    costs more."""
     S, d = out_value.shape[1], m.ints[1]
     for q in range(G):
         o, v = q * n, q * n + N  # displacements and velocities of member q
         for k in range(S):
             e, rate = 1.0, 0.0
-            if m.kind[k] == 0 or m.kind[k] == 4:
+            if m.kind[k] == 0 or m.kind[k] == 3 or m.kind[k] == 4:
                 i, j = m.li[k], m.lj[k]
                 if d == 1:
                     e = (y[o + j] if j >= 0 else 0.0) - y[o + i]
@@ -527,12 +528,15 @@ def _ring_chain_switches(m, start, G, y, N, n, out_value, out_rate):
 
 
 @_inner()
-def _first_switch(value0, rate0, value1, rate1, h, floor):
+def _first_switch(value0, rate0, value1, rate1, h, floor, kinds):
     """Where in a step of length ``h`` a switch first changes sign (on the cubic through the values and rates at
-    its ends; within 1e-7 of an end: at that end; not within ``floor`` of zero), a fraction of it; 2.0: none."""
+    its ends; within 1e-7 of an end: at that end; not within ``floor`` of zero), a fraction of it; 2.0: none.
+    ``kinds``: the links' laws (a Thornton link's is not located), or empty."""
     first = 2.0
     for q in range(value0.shape[0]):
         for k in range(value0.shape[1]):
+            if k < kinds.size and kinds[k] == 3:
+                continue
             e0, e1 = value0[q, k], value1[q, k]
             s0, s1 = h * rate0[q, k], h * rate1[q, k]
             slope = e1 - e0  # p(z) = (1 - z) e0 + z e1 + z (1 - z) ((1 - z)(s0 - slope) - z (s1 - slope)):
@@ -620,7 +624,8 @@ def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max
         code, steps, rejections, cuts = 0, 0, 0, 0
         if j == T:
             t = t_end  # every sample at the start: no step to take
-        S = 0 if not locate else (m.li.size if m.ints[0] == 0 else (m.ints[6] if m.ints[0] == 1 else 0))
+        # The switches, where contacts are located or a memory reads the extensions (rows of _switches).
+        S = 0 if not (locate or n > w) else (m.li.size if m.ints[0] == 0 else (m.ints[6] if m.ints[0] == 1 else 0))
         switches = np.empty((4 * G, S))
         value0, rate0, value1, rate1 = switches[0:G], switches[G : 2 * G], switches[2 * G : 3 * G], switches[3 * G :]
         if S:
@@ -686,7 +691,7 @@ def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max
             factor = 0.9 * error**-0.2 if error > 0.0 else 10.0
             if error <= 1.0 and S:
                 _switches(m, start, G, y_new, N, n, value1, rate1)
-                z = _first_switch(value0, rate0, value1, rate1, h, floor)
+                z = _first_switch(value0, rate0, value1, rate1, h, floor, m.kind) if locate else 2.0
                 if (0.01 if after_cut else 0.0) < z < (0.99 if h_after > 0.0 else 1.0) and tries < 3:
                     if h_after == 0.0:
                         h_after = h * _smaller(1.0, _larger(0.2, factor))
@@ -729,7 +734,7 @@ def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max
                             out_m[b, j, c] = y[o + w + c]  # the memory the step started from (what its stages used)
                     j += 1
                 # A peak inside the step: the new memory changes the force at y_new (first same as last).
-                if n > w and _remember(m, start, G, y, y_new, h, N, n):
+                if n > w and _remember(m, start, G, value0, rate0, value1, rate1, y_new, h, N, n):
                     _group_derivative(m, start, G, g, y_new, k7, N, n)
                     evaluations += 1
                 _after_step(m, y_new, G, n)
@@ -748,8 +753,6 @@ def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max
                     h_after = 0.0
                 if S:
                     value0, rate0, value1, rate1 = value1, rate1, value0, rate0  # the new step starts where this ended
-                    if n > w:  # a new memory moves the zero of Thornton's unloading curve
-                        _switches(m, start, G, y, N, n, value0, rate0)
                 if not _finite(y):
                     code = 2
                     break
