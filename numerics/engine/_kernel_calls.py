@@ -27,9 +27,17 @@ import sys
 
 import numpy as np
 
-#: Seconds to compile each kernel family for the paper's chain on a quiet two-core machine (CPU time of
-#: the cold part of benchmarks/bench_kernels.py, imports excluded); the notice scales them by the load.
-COMPILE_SECONDS = {"dopri5": 16.0, "verlet": 8.0}
+#: Seconds to compile each kernel family for each type of packed model (the paper's chain, a ring-resolved chain of
+#: five rings, one rigid ring) on a two-core machine: CPU time of the compile in a fresh process, measured at a
+#: load of 3 (each type is a compile of its own); the notice scales them by the load.
+COMPILE_SECONDS = {
+    ("dopri5", "Packed"): 16.0,
+    ("dopri5", "PackedRingChain"): 13.0,
+    ("dopri5", "PackedRings"): 20.0,
+    ("verlet", "Packed"): 9.0,
+    ("verlet", "PackedRingChain"): 5.0,
+    ("verlet", "PackedRings"): 8.0,
+}
 
 _announced: set = set()
 
@@ -151,10 +159,10 @@ def load_factor() -> float:
     return max(1.0, load)
 
 
-def compile_estimate(family: str) -> float:
-    """Seconds a compile of ``family`` ("dopri5", "verlet") takes on this machine now: the quiet figure
-    times :func:`load_factor`."""
-    return COMPILE_SECONDS[family] * load_factor()
+def compile_estimate(family: str, model: str = "Packed") -> float:
+    """Seconds a compile of ``family`` ("dopri5", "verlet") for a packed ``model`` (the name of its type) takes on
+    this machine now: the measured figure (of a network's where the type is not listed) times :func:`load_factor`."""
+    return COMPILE_SECONDS.get((family, model), COMPILE_SECONDS[family, "Packed"]) * load_factor()
 
 
 def compiled() -> int:
@@ -184,7 +192,7 @@ def announce_compile(dispatcher, family: str, folder, args=None) -> None:
         return
     _announced.add(key)
     where = f"cached in {folder}" if folder else "not cached: the cache folder is disabled or not writable"
-    notify(f"ringchain: compiling the integrator for this machine, once: about {compile_estimate(family):.0f} s; "
+    notify(f"ringchain: compiling the integrator for this machine, once: about {compile_estimate(*key):.0f} s; "
            f"{where}")  # fmt: skip
     if folder and args is not None:
         compile_once(dispatcher, args, folder)
