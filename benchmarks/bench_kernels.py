@@ -20,7 +20,8 @@ Four measurements, each a ratio measured in one run (issue 20, "Must show"):
     better accuracy.
 (c) ``cold``: one :func:`simulate` of the paper's chain in a fresh process with an empty
     ``RINGCHAIN_CACHE_DIR`` (every kernel it calls compiled), then in a second process with the cache
-    the first one wrote (wall times of the whole process, imports included).
+    the first one wrote (wall times of the whole process, imports included; its CPU time, the compile's cost
+    whatever the load; and the CPU time of each compiled function from Numba's compile events).
 (d) ``ns``: nanoseconds per ring per right-hand-side evaluation (run time / (rings x evaluations)) at
     20 and at 10^4 rings, for ringchain's dopri5 and the C loop on the Hertz chain of (a), and for the
     paper's dual-spring chain.
@@ -33,6 +34,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import resource
 import shutil
 import subprocess
 import sys
@@ -55,10 +57,29 @@ PARTS = ("c", "paper", "cold", "ns")
 COLD_PROBE = """
 import time
 start = time.perf_counter()
+from numba.core import event
+spent, open_ = {}, []  # CPU s of each compiled function, its callees' compiles excluded
+
+
+class Compiles(event.Listener):
+    def on_start(self, ev):
+        open_.append([time.thread_time(), 0.0])
+
+    def on_end(self, ev):
+        began, inner = open_.pop()
+        took = time.thread_time() - began
+        if open_:
+            open_[-1][1] += took
+        name = ev.data["dispatcher"].py_func.__qualname__.split(".")[0]
+        spent[name] = spent.get(name, 0.0) + took - inner
+
+
+event.register("numba:compile", Compiles())
 from ringchain.numerics import paper_chain, simulate
 from ringchain.numerics.engine import kernels
 sim = simulate(paper_chain("dual-spring"), 2e-3, drop_height=0.05)
-print(time.perf_counter() - start, kernels.CACHE is not None)
+top = sorted(spent.items(), key=lambda item: -item[1])[:8]
+print(time.perf_counter() - start, kernels.CACHE is not None, ",".join(f"{k}={v:.2f}" for k, v in top))
 """
 
 
@@ -218,13 +239,20 @@ def part_cold(args, rows):
         env = {**os.environ, "RINGCHAIN_CACHE_DIR": cache}
         walls = []
         for _ in range(2):
-            start = time.perf_counter()
+            start, cpu = time.perf_counter(), resource.getrusage(resource.RUSAGE_CHILDREN)
             out = subprocess.run([sys.executable, "-W", "error", "-c", COLD_PROBE], env=env, capture_output=True,
                                  text=True, check=True).stdout.split()  # fmt: skip
-            walls.append((time.perf_counter() - start, float(out[0]), out[1] == "True"))
-    print("\n(c) one simulate of the paper's chain in a fresh process (wall s: whole process / import and call)")
-    for name, (wall, inner, cached) in zip(("empty cache (cold)", "warm cache"), walls, strict=True):
-        print(f"{name:28s} {wall:9.2f} {inner:9.2f}  disk cache {'on' if cached else 'off'}")
+            used = resource.getrusage(resource.RUSAGE_CHILDREN)
+            cpu = used.ru_utime + used.ru_stime - cpu.ru_utime - cpu.ru_stime
+            walls.append((time.perf_counter() - start, float(out[0]), out[1] == "True", cpu, os.getloadavg()[0],
+                          out[2] if len(out) > 2 else ""))  # fmt: skip
+    print("\n(c) one simulate of the paper's chain in a fresh process (wall s: whole process / import and call; CPU s "
+          "of the process: the compile's cost whatever the load)")  # fmt: skip
+    for name, (wall, inner, cached, cpu, load, _) in zip(("empty cache (cold)", "warm cache"), walls, strict=True):
+        print(f"{name:28s} {wall:9.2f} {inner:9.2f}  CPU {cpu:6.2f}  load {load:4.1f}  "
+              f"disk cache {'on' if cached else 'off'}")  # fmt: skip
+    print("cold compile, CPU s per compiled function (Numba's compile events, its callees excluded): "
+          + walls[0][5].replace(",", ", ").replace("=", " "))  # fmt: skip
     rows["cold"] = walls
 
 
@@ -283,8 +311,9 @@ def main(argv=None):
         print(f"  paper chain: recipe/dopri5 = {r / d:.0f}x at errors {de:.1e} (dopri5) and {re:.1e} (recipe); "
               "target >= 150x at equal or better accuracy")  # fmt: skip
     if "cold" in rows:
-        (cold, *_), (warm, *_) = rows["cold"]
-        print(f"  one simulate in a fresh process: {cold:.1f} s cold, {warm:.2f} s with a warm cache")
+        (cold, _, _, cold_cpu, *_), (warm, *_) = rows["cold"]
+        print(f"  one simulate in a fresh process: {cold:.1f} s cold ({cold_cpu:.1f} s of CPU), {warm:.2f} s with a "
+              "warm cache")  # fmt: skip
     print(f"load average now {os.getloadavg()[0]:.1f}")
 
 

@@ -5,6 +5,7 @@ its own module's file).
 
 - :func:`over_threads` calls a kernel that releases the GIL over ranges of runs on a pool of threads (one
   compiled kernel serves one run or many: no parallel variant to compile).
+- :func:`dopri5_tableau`: the Runge-Kutta pair's coefficients, an argument of its kernel.
 - :func:`announce_compile` prints one line on stderr before a kernel is compiled rather than loaded from
   the disk cache: ``ringchain: compiling the integrator for this machine, once: about N s; cached in ...``.
   N is the compile time of that kernel measured on a quiet two-core machine (:data:`COMPILE_SECONDS`),
@@ -17,6 +18,7 @@ its own module's file).
 from __future__ import annotations
 
 import contextlib
+import functools
 import gc
 import itertools
 import math
@@ -25,9 +27,17 @@ import sys
 
 import numpy as np
 
-#: Seconds to compile each kernel family for the paper's chain on a quiet two-core machine (CPU time of
-#: the cold part of benchmarks/bench_kernels.py, imports excluded); the notice scales them by the load.
-COMPILE_SECONDS = {"dopri5": 16.0, "verlet": 8.0}
+#: Seconds to compile each kernel family for each type of packed model (the paper's chain, a ring-resolved chain of
+#: five rings, one rigid ring) on a two-core machine: CPU time of the compile in a fresh process, measured at a
+#: load of 3 (each type is a compile of its own); the notice scales them by the load.
+COMPILE_SECONDS = {
+    ("dopri5", "Packed"): 16.0,
+    ("dopri5", "PackedRingChain"): 13.0,
+    ("dopri5", "PackedRings"): 20.0,
+    ("verlet", "Packed"): 9.0,
+    ("verlet", "PackedRingChain"): 5.0,
+    ("verlet", "PackedRings"): 8.0,
+}
 
 _announced: set = set()
 
@@ -81,6 +91,23 @@ def verlet_arrays(x0, u0, t_eval, t_end, dt, keep):
     return x0, u0, n_steps, t_end / n_steps, out_x, out_u, status, final_x, final_u
 
 
+@functools.cache
+def dopri5_tableau() -> np.ndarray:
+    """Dormand and Prince's coefficients a_sr of stage s from stage r, the last row the fifth-order weights (made here
+    and passed to the kernel: no kernel of its own to compile, no module-level value in a kernel).  Made once; the
+    kernel only reads it."""
+    a = np.zeros((7, 6))
+    a[1, 0] = 0.2
+    a[2, 0], a[2, 1] = 3.0 / 40.0, 9.0 / 40.0
+    a[3, 0], a[3, 1], a[3, 2] = 44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0
+    a[4, 0], a[4, 1], a[4, 2], a[4, 3] = 19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0
+    a[5, 0], a[5, 1], a[5, 2], a[5, 3], a[5, 4] = (9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0, 49.0 / 176.0,
+                                                   -5103.0 / 18656.0)  # fmt: skip
+    a[6, 0], a[6, 2], a[6, 3], a[6, 4], a[6, 5] = (35.0 / 384.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0,
+                                                   11.0 / 84.0)  # fmt: skip
+    return a
+
+
 def fingerprint(value):
     """What Numba's type of ``value`` depends on, read without Numba (a tuple, hashable), or None where it cannot
     tell: an array's class, dtype, dimensions, layout (C, F or any), whether it is writable and aligned; a tuple's
@@ -132,10 +159,10 @@ def load_factor() -> float:
     return max(1.0, load)
 
 
-def compile_estimate(family: str) -> float:
-    """Seconds a compile of ``family`` ("dopri5", "verlet") takes on this machine now: the quiet figure
-    times :func:`load_factor`."""
-    return COMPILE_SECONDS[family] * load_factor()
+def compile_estimate(family: str, model: str = "Packed") -> float:
+    """Seconds a compile of ``family`` ("dopri5", "verlet") for a packed ``model`` (the name of its type) takes on
+    this machine now: the measured figure (of a network's where the type is not listed) times :func:`load_factor`."""
+    return COMPILE_SECONDS.get((family, model), COMPILE_SECONDS[family, "Packed"]) * load_factor()
 
 
 def compiled() -> int:
@@ -165,7 +192,7 @@ def announce_compile(dispatcher, family: str, folder, args=None) -> None:
         return
     _announced.add(key)
     where = f"cached in {folder}" if folder else "not cached: the cache folder is disabled or not writable"
-    notify(f"ringchain: compiling the integrator for this machine, once: about {compile_estimate(family):.0f} s; "
+    notify(f"ringchain: compiling the integrator for this machine, once: about {compile_estimate(*key):.0f} s; "
            f"{where}")  # fmt: skip
     if folder and args is not None:
         compile_once(dispatcher, args, folder)

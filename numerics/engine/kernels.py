@@ -76,7 +76,7 @@ from numba.extending import overload
 
 from . import rings_step
 from ._compiled import CACHE, Packed, PackedRingChain, PackedRings
-from ._kernel_calls import announce_compile, kernel_array, over_threads, verlet_arrays
+from ._kernel_calls import announce_compile, dopri5_tableau, kernel_array, over_threads, verlet_arrays
 from .packing import LAW_KINDS, PARAMETERS, pack, pack_network, pack_ring_chain
 
 __all__ = [
@@ -109,7 +109,26 @@ def _jit(**options):
     return numba.njit(cache=CACHE is not None, error_model="numpy", **options)
 
 
-@_jit()
+def _inner(**options):
+    """A kernel called from other kernels only: no wrapper to call it from Python or C (each cost a
+    compile of its arguments' boxing, the packed model's fourteen arrays)."""
+    return _jit(no_cpython_wrapper=True, no_cfunc_wrapper=True, **options)
+
+
+@_jit(inline="always")
+def _larger(a, b):
+    """max(a, b) as Python's builtin takes it (b if b > a, else a), inlined where it is called: the builtin's
+    overload is a kernel of its own, compiled once per type of its arguments."""
+    return b if b > a else a
+
+
+@_jit(inline="always")
+def _smaller(a, b):
+    """min(a, b) as Python's builtin takes it (b if b < a, else a), inlined (as :func:`_larger`)."""
+    return b if b < a else a
+
+
+@_inner()
 def _copy(source, target):
     """target[:] = source, written out (a slice assignment compiles a check of shapes that formats its message:
     seconds of the cold compile)."""
@@ -117,7 +136,7 @@ def _copy(source, target):
         target[c] = source[c]
 
 
-@_jit()
+@_jit(forceinline=True)
 def law_force(kind, p0, p1, p2, e, rate, memory):
     """(force, elastic force) of one link, N: the :mod:`ringchain.numerics.laws` of kind ``kind`` (:data:`LAW_KINDS`),
     parameters p0-p2, at extension ``e`` (m) and its rate (m/s); ``memory``: Thornton's largest approach (m)."""
@@ -141,7 +160,7 @@ def law_force(kind, p0, p1, p2, e, rate, memory):
     return p0 * rate, 0.0  # Dashpot (gamma)
 
 
-@_jit()
+@_inner()
 def _thornton(K, dy, gamma, e, rate, memory):
     """(force, elastic force) of Thornton's contact (:class:`~ringchain.numerics.laws.Thornton`): with
     dm = max(memory, delta) beyond delta_y, F_m = K sqrt(dy)(3 dm - dy)/2 and w = sqrt(dy)(3 dm - dy)/(2 sqrt(dm)),
@@ -162,7 +181,7 @@ def _thornton(K, dy, gamma, e, rate, memory):
     return (force if force > 0.0 else 0.0), elastic
 
 
-@_jit()
+@_inner()
 def _extension(m, k, x, u):
     """(extension, rate) of link k of a packed network at displacements x and velocities u (as the right-hand
     side computes them)."""
@@ -182,7 +201,7 @@ def _extension(m, k, x, u):
     return stretch / (length + m.spans[k]) + m.prestretch[k], rate
 
 
-@_jit()
+@_inner()
 def _cubic(e0, s0, e1, s1, z):
     """The cubic with values e0, e1 and slopes s0, s1 at 0 and 1, at z."""
     z2 = z * z
@@ -190,11 +209,11 @@ def _cubic(e0, s0, e1, s1, z):
     return (2 * z3 - 3 * z2 + 1) * e0 + (z3 - 2 * z2 + z) * s0 + (-2 * z3 + 3 * z2) * e1 + (z3 - z2) * s1
 
 
-@_jit()
+@_inner()
 def _cubic_peak(e0, s0, e1, s1):
     """Largest value on [0, 1] of the cubic with values e0, e1 and slopes s0, s1 (per unit parameter) at its ends."""
     a, b, c = 6.0 * (e0 - e1) + 3.0 * (s0 + s1), 6.0 * (e1 - e0) - 4.0 * s0 - 2.0 * s1, s0  # p'(s) = a s^2 + b s + c
-    peak = max(e0, e1)
+    peak = _larger(e0, e1)
     disc = b * b - 4.0 * a * c
     roots = (
         (-c / b if b != 0.0 else -1.0, -1.0)
@@ -203,28 +222,46 @@ def _cubic_peak(e0, s0, e1, s1):
     )
     for z in roots:
         if 0.0 < z < 1.0:
-            peak = max(peak, _cubic(e0, s0, e1, s1, z))
+            peak = _larger(peak, _cubic(e0, s0, e1, s1, z))
     return peak
 
 
-@_jit()
-def _remember(m, members, y, y_new, h, N, n):
-    """After an accepted step from ``y`` to ``y_new`` (the group's states), each Thornton link's memory in ``y_new``
-    becomes the largest of its memory and the peak extension over the step (the module notes).  Returns whether a
-    memory now exceeds its link's extension at the end of the step."""
+def _remember(m, start, G, value0, rate0, value1, rate1, y_new, h, N, n):
+    """After an accepted step to ``y_new`` (the states of the G runs from ``start``), each Thornton link's memory in
+    ``y_new`` becomes the largest of its memory and the peak extension over the step (the module notes), from the
+    links' extensions and rates at both ends (:func:`_switches`' rows).  Returns whether a memory now exceeds its
+    link's extension at the end of the step.  Compiled: chosen by the packed type (no memory but a network's)."""
+
+
+def _network_remember(m, start, G, value0, rate0, value1, rate1, y_new, h, N, n):
     w = 2 * N + (1 if m.ints[3] else 0)
     changed = False
-    for q in range(members.size):
+    for q in range(G):
         o = q * n
         for k in range(n - w):
             if m.kind[k] == 3:
-                e0, r0 = _extension(m, k, y[o : o + N], y[o + N : o + 2 * N])
-                e1, r1 = _extension(m, k, y_new[o : o + N], y_new[o + N : o + 2 * N])
-                peak = _cubic_peak(e0, h * r0, e1, h * r1)
+                e1 = value1[q, k]
+                peak = _cubic_peak(value0[q, k], h * rate0[q, k], e1, h * rate1[q, k])
                 if peak > y_new[o + w + k]:
                     changed = changed or peak > e1  # memory beyond the end's approach: the force at the end changes
                     y_new[o + w + k] = peak
     return changed
+
+
+def _no_memory(m, start, G, value0, rate0, value1, rate1, y_new, h, N, n):
+    return False
+
+
+def _update_memory(m, x, u, memory):
+    """Velocity Verlet's memory after a step: each Thornton link's becomes the larger of it and the link's extension
+    at the new positions ``x`` (compiled: chosen by the packed type, as :func:`_remember`)."""
+
+
+def _network_update_memory(m, x, u, memory):
+    for link in range(memory.size):
+        if m.kind[link] == 3:
+            e, _ = _extension(m, link, x, u)
+            memory[link] = _larger(memory[link], e)
 
 
 # -- right-hand sides ----------------------------------------------------------------------------------------
@@ -328,21 +365,27 @@ def _accelerations(m, b, g, x, u, out, memory):
     dashpots take out.  ``memory`` per link (laws with memory) or empty.  Compiled: chosen by the packed type."""
 
 
-def _group_derivative(m, members, g, y, dy, N, n):
-    """dy/dt of the runs ``members`` stepped together, their states of length n one after the other in ``y``
+def _group_derivative(m, start, G, g, y, dy, N, n):
+    """dy/dt of the G runs from ``start`` stepped together, their states of length n one after the other in ``y``
     (compiled: chosen by the packed type)."""
+
+
+def _switches(m, start, G, y, N, n, out_value, out_rate):
+    """Each switch (value, rate) of the G runs from ``start`` at their states ``y``, one row per run: zero where a
+    contact's force stops being smooth (its extension, as :func:`_extension`); (1, 0) for a smooth law (compiled:
+    chosen by the packed type)."""
 
 
 def _after_step(m, y, G, n):
     """What a model does to the G states of length n in ``y`` after an accepted step (compiled: by type)."""
 
 
-def _network_group_derivative(m, members, g, y, dy, N, n):
+def _network_group_derivative(m, start, G, g, y, dy, N, n):
     """dy/dt of each state [x (N), u (N), W (dissipated energy, if damped), memory (per link, if stateful)]."""
     w = 2 * N + (1 if m.ints[3] else 0)
-    for q in range(members.size):
+    for q in range(G):
         o = q * n
-        power = _accelerations(m, members[q], g, y[o : o + N], y[o + N : o + 2 * N], dy[o + N : o + 2 * N],
+        power = _accelerations(m, start + q, g, y[o : o + N], y[o + N : o + 2 * N], dy[o + N : o + 2 * N],
                                y[o + w : o + n])  # fmt: skip
         for c in range(N):
             dy[o + c] = y[o + N + c]
@@ -352,38 +395,39 @@ def _network_group_derivative(m, members, g, y, dy, N, n):
             dy[c] = 0.0  # the memory changes on accepted steps only
 
 
-def _rings_group_derivative(m, members, g, y, dy, N, n):
-    for q in range(members.size):
-        rings_step.rings_derivative(m, members[q], g, y[q * n : (q + 1) * n], dy[q * n : (q + 1) * n], N)
+def _rings_group_derivative(m, start, G, g, y, dy, N, n):
+    for q in range(G):
+        rings_step.rings_derivative(m, start + q, g, y[q * n : (q + 1) * n], dy[q * n : (q + 1) * n], N)
 
 
-def _nothing_after_step(m, y, G, n):
+def _nothing(m, *args):
     return 0
+
+
+#: The options of the right-hand sides chosen by type (kernels called from kernels only, as :func:`_inner`).
+_INNER = dict(error_model="numpy", no_cpython_wrapper=True, no_cfunc_wrapper=True)
 
 
 def _packed_type(m):
     return getattr(m, "instance_class", None)
 
 
-# The right-hand side is chosen when a kernel is compiled, by the packed model's type (Packed, PackedRingChain,
-# PackedRings), not by its kind code at run time: a chain's integrator holds neither the ring-resolved chain nor
-# the rigid rings (they were most of its compile), and theirs none of the links' laws.  The chosen function is
-# compiled into the kernel's own call tree, which is kept shallow: Numba optimises and generates machine code
-# again for every compiled function at every level of calls above it (measured: the cold compile of the paper's
-# chain, 67 s with every kind in one kernel and inlined in Numba's IR, 24 s by type, fewer levels less).
-@overload(_accelerations, jit_options=dict(error_model="numpy"))
-def _overload_accelerations(m, b, g, x, u, out, memory):
-    return _ring_chain_accelerations if _packed_type(m) is PackedRingChain else _network_accelerations
+# The right-hand side, the switches and the memory are chosen when a kernel is compiled, by the packed model's type
+# (Packed, PackedRingChain, PackedRings), not by its kind code at run time: a chain's integrator holds neither the
+# ring-resolved chain nor the rigid rings (they were most of its compile), and theirs none of the links' laws,
+# switches or memory.  The chosen function is compiled into the kernel's own call tree, which is kept shallow:
+# Numba optimises and generates machine code again for every compiled function at every level of calls above it
+# (measured: the cold compile of the paper's chain, 67 s with every kind in one kernel and inlined in Numba's IR,
+# 24 s by type, fewer levels less; what it costs now: benchmarks/bench_kernels.py, part (c)).
+def _by_type(stub, network, ring_chain=None, rings=None):
+    """Compile a call of ``stub`` as ``network``, ``ring_chain`` or ``rings`` by the packed model's type (its first
+    argument; ``network`` where the others are not given), a kernel called from kernels only (:func:`_inner`)."""
 
+    def choose(m, *args):
+        kind = _packed_type(m)
+        return (rings if kind is PackedRings else ring_chain if kind is PackedRingChain else None) or network
 
-@overload(_group_derivative, jit_options=dict(error_model="numpy"))
-def _overload_group_derivative(m, members, g, y, dy, N, n):
-    return _rings_group_derivative if _packed_type(m) is PackedRings else _network_group_derivative
-
-
-@overload(_after_step, jit_options=dict(error_model="numpy"))
-def _overload_after_step(m, y, G, n):
-    return rings_step.normalise.py_func if _packed_type(m) is PackedRings else _nothing_after_step
+    overload(stub, jit_options=_INNER, strict=False)(choose)
 
 
 @_jit()
@@ -403,7 +447,7 @@ def accelerations(packed: Packed, x, u=None, g=9.80665, member=0, memory=None) -
 
 
 # -- contacts opening and closing --------------------------------------------------------------------------------
-@_jit()
+@_inner()
 def _first_zero(e0, s0, e1, s1, start, end):
     """The first change of sign in (start, end) of the cubic with values e0, e1 and slopes s0, s1 at 0 and 1
     (found on its monotone pieces by bisection; the point just past it), or 2.0 if it keeps its sign there."""
@@ -413,7 +457,7 @@ def _first_zero(e0, s0, e1, s1, start, end):
         disc = b * b - 4.0 * a * c
         if disc > 0.0:
             r1, r2 = (-b - math.sqrt(disc)) / (2.0 * a), (-b + math.sqrt(disc)) / (2.0 * a)
-            cut1, cut2 = min(r1, r2), max(r1, r2)
+            cut1, cut2 = _smaller(r1, r2), _larger(r1, r2)
     elif b != 0.0:
         cut1 = -c / b
     lo = start
@@ -422,7 +466,7 @@ def _first_zero(e0, s0, e1, s1, start, end):
         hi = cut1 if piece == 0 else (cut2 if piece == 1 else end)
         if hi <= lo:
             continue
-        hi = min(hi, end)
+        hi = _smaller(hi, end)
         v_hi = _cubic(e0, s0, e1, s1, hi)
         if (v_lo > 0.0) != (v_hi > 0.0):
             for _ in range(60):  # bisection on a monotone piece, to the last bits of z
@@ -439,23 +483,16 @@ def _first_zero(e0, s0, e1, s1, start, end):
     return 2.0
 
 
-@_jit()
-def _switches(m, members, y, N, n, out_value, out_rate):
-    """Each switch (value, rate) of a group's members at its state ``y``, one row per member: zero where a
-    contact's force stops being smooth (its extension, as :func:`_extension`); (1, 0) for a smooth law.
-    Written out: a call per link passing the packed model costs more."""
+def _network_switches(m, start, G, y, N, n, out_value, out_rate):
+    """The switches of a network's links: the extension of a power law, Hunt-Crossley's and Thornton's (read by
+    :func:`_remember`; not located yet: see the notes).  Written out: a call per link passing the packed model
+    costs more."""
     S, d = out_value.shape[1], m.ints[1]
-    for q in range(members.size):
+    for q in range(G):
         o, v = q * n, q * n + N  # displacements and velocities of member q
         for k in range(S):
             e, rate = 1.0, 0.0
-            if m.ints[0] == 1:  # the ring-resolved chain: the contact above ring k, with ring k + 1 or the support
-                top, dofs = o + k * m.ints[7] + 1, m.ints[7]
-                if k < S - 1:
-                    e, rate = y[top + dofs - 1] - y[top], y[top + dofs - 1 + N] - y[top + N]
-                elif m.ints[8]:
-                    e, rate = -y[top], -y[top + N]
-            elif m.kind[k] == 0 or m.kind[k] == 4:  # a power law, Hunt-Crossley (not yet Thornton: see the notes)
+            if m.kind[k] == 0 or m.kind[k] == 3 or m.kind[k] == 4:
                 i, j = m.li[k], m.lj[k]
                 if d == 1:
                     e = (y[o + j] if j >= 0 else 0.0) - y[o + i]
@@ -475,53 +512,65 @@ def _switches(m, members, y, N, n, out_value, out_rate):
             out_value[q, k], out_rate[q, k] = e, rate
 
 
-@_jit()
-def _first_switch(value0, rate0, value1, rate1, h, floor):
+def _ring_chain_switches(m, start, G, y, N, n, out_value, out_rate):
+    """The switches of the ring-resolved chain: the contact above ring k, with ring k + 1 or the support."""
+    S, dofs = out_value.shape[1], m.ints[7]
+    for q in range(G):
+        o = q * n
+        for k in range(S):
+            e, rate = 1.0, 0.0
+            top = o + k * dofs + 1
+            if k < S - 1:
+                e, rate = y[top + dofs - 1] - y[top], y[top + dofs - 1 + N] - y[top + N]
+            elif m.ints[8]:
+                e, rate = -y[top], -y[top + N]
+            out_value[q, k], out_rate[q, k] = e, rate
+
+
+@_inner()
+def _first_switch(value0, rate0, value1, rate1, h, floor, kinds):
     """Where in a step of length ``h`` a switch first changes sign (on the cubic through the values and rates at
-    its ends; within 1e-7 of an end: at that end; not within ``floor`` of zero), a fraction of it; 2.0: none."""
+    its ends; within 1e-7 of an end: at that end; not within ``floor`` of zero), a fraction of it; 2.0: none.
+    ``kinds``: the links' laws (a Thornton link's is not located), or empty."""
     first = 2.0
     for q in range(value0.shape[0]):
         for k in range(value0.shape[1]):
+            if k < kinds.size and kinds[k] == 3:
+                continue
             e0, e1 = value0[q, k], value1[q, k]
             s0, s1 = h * rate0[q, k], h * rate1[q, k]
             slope = e1 - e0  # p(z) = (1 - z) e0 + z e1 + z (1 - z) ((1 - z)(s0 - slope) - z (s1 - slope)):
-            bend = 0.25 * max(abs(s0 - slope), abs(s1 - slope))
-            if (e0 > 0.0) == (e1 > 0.0) and min(abs(e0), abs(e1)) > bend:
+            bend = 0.25 * _larger(abs(s0 - slope), abs(s1 - slope))
+            if (e0 > 0.0) == (e1 > 0.0) and _smaller(abs(e0), abs(e1)) > bend:
                 continue  # it stays within max|s - slope|/4 of the chord, which keeps its sign: no zero
-            if max(abs(e0), abs(e1)) + bend <= floor:
+            if _larger(abs(e0), abs(e1)) + bend <= floor:
                 continue  # it stays within the displacements' tolerance of zero (rounding at rest): no matter
-            first = min(first, _first_zero(e0, s0, e1, s1, 1e-7, 1.0 - 1e-7))
+            first = _smaller(first, _first_zero(e0, s0, e1, s1, 1e-7, 1.0 - 1e-7))
     return first
 
 
+# The right-hand sides and what else depends on the model, by its type (_by_type).
+_by_type(_accelerations, _network_accelerations, ring_chain=_ring_chain_accelerations)
+_by_type(_group_derivative, _network_group_derivative, rings=_rings_group_derivative)
+_by_type(_after_step, _nothing, rings=rings_step.normalise.py_func)
+_by_type(_switches, _network_switches, ring_chain=_ring_chain_switches, rings=_nothing)
+_by_type(_remember, _network_remember, ring_chain=_no_memory, rings=_no_memory)
+_by_type(_update_memory, _network_update_memory, ring_chain=_nothing, rings=_nothing)
+
+
 # -- Dormand-Prince 5(4) -----------------------------------------------------------------------------------------
-@_jit()
+@_inner()
 def _error_norm(err, y, y_new, atol, rtol):
     worst = 0.0
     for c in range(err.size):
-        scale = atol[c] + rtol * max(abs(y[c]), abs(y_new[c]))
+        scale = atol[c] + rtol * _larger(abs(y[c]), abs(y_new[c]))
         ratio = abs(err[c]) / scale
         if not ratio <= worst:  # NaN too
             worst = ratio
     return worst
 
 
-@_jit()
-def _tableau():
-    """Dormand and Prince's coefficients a_sr of stage s from stage r, the last row the fifth-order weights."""
-    a = np.zeros((7, 6))
-    a[1, 0] = 0.2
-    a[2, 0], a[2, 1] = 3.0 / 40.0, 9.0 / 40.0
-    a[3, 0], a[3, 1], a[3, 2] = 44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0
-    a[4, 0], a[4, 1], a[4, 2], a[4, 3] = 19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0
-    a[5, 0], a[5, 1], a[5, 2], a[5, 3], a[5, 4] = (9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0, 49.0 / 176.0,
-                                                   -5103.0 / 18656.0)  # fmt: skip
-    a[6, 0], a[6, 2], a[6, 3], a[6, 4], a[6, 5] = (35.0 / 384.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0,
-                                                   11.0 / 84.0)  # fmt: skip
-    return a
-
-
-@_jit()
+@_inner()
 def _finite(y):
     for c in range(y.size):
         if not math.isfinite(y[c]):
@@ -531,7 +580,7 @@ def _finite(y):
 
 @_jit(nogil=True)
 def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max_steps, status, stats, final,
-                 out_m, first, last, shared, locate):  # fmt: skip
+                 out_m, tableau, first, last, shared, locate):  # fmt: skip
     """Runs ``first`` to ``last`` (excluded) of the states ``y0`` (B, n), each with its own steps, or all of them
     with one step size, the error measured over all of them (``shared``); without the GIL, so that threads can
     take disjoint ranges of runs.
@@ -542,17 +591,18 @@ def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max
     or closes (the module notes).  (One kernel, no call level between it and the right-hand side: see
     _group_derivative.)
     """
-    group = max(1, last - first) if shared else 1
+    group = _larger(1, last - first) if shared else 1
+    n = y0.shape[1]
     for start in range(first, last, group):
-        members = np.arange(start, min(start + group, last))
-        G, n = members.size, y0.shape[1]
+        G = _smaller(group, last - start)
         size = G * n
-        y = y0[start : start + G].copy().reshape(size)
-        tolerance = atol[start : start + G].copy().reshape(size)
-        stages = np.empty((7, size))
+        # One allocation of one type for every work array (each type of np.empty's arguments is a compile of its own).
+        work = np.empty((12, size))
+        stages, y_stage, y_new, err, y, tolerance = work[0:7], work[7], work[8], work[9], work[10], work[11]
         k1, k2, k3, k4, k5, k6, k7 = stages[0], stages[1], stages[2], stages[3], stages[4], stages[5], stages[6]
-        y_stage, y_new, err = np.empty(size), np.empty(size), np.empty(size)
-        tableau = _tableau()
+        for q in range(G):
+            for c in range(n):
+                y[q * n + c], tolerance[q * n + c] = y0[start + q, c], atol[start + q, c]
         T = t_eval.size
         t_end = t_eval[T - 1]
         t = 0.0
@@ -562,25 +612,27 @@ def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max
         K = keep.size
         while j < T and t_eval[j] <= 0.0:  # samples at the start
             for q in range(G):
-                b, o = members[q], q * n
+                b, o = start + q, q * n
                 for c in range(K):
                     out_x[b, j, c], out_u[b, j, c] = y[o + keep[c]], y[o + N + keep[c]]
                 out_w[b, j] = y[o + 2 * N] if damped else 0.0
                 for c in range(n - w):
                     out_m[b, j, c] = y[o + w + c]
             j += 1
-        _group_derivative(m, members, g, y, k1, N, n)
+        _group_derivative(m, start, G, g, y, k1, N, n)
         evaluations = 1
         code, steps, rejections, cuts = 0, 0, 0, 0
         if j == T:
             t = t_end  # every sample at the start: no step to take
-        S = 0 if not locate else (m.li.size if m.ints[0] == 0 else (m.ints[6] if m.ints[0] == 1 else 0))
-        value0, rate0, value1, rate1 = np.empty((G, S)), np.empty((G, S)), np.empty((G, S)), np.empty((G, S))
+        # The switches, where contacts are located or a memory reads the extensions (rows of _switches).
+        S = 0 if not (locate or n > w) else (m.li.size if m.ints[0] == 0 else (m.ints[6] if m.ints[0] == 1 else 0))
+        switches = np.empty((4 * G, S))
+        value0, rate0, value1, rate1 = switches[0:G], switches[G : 2 * G], switches[2 * G : 3 * G], switches[3 * G :]
         if S:
-            _switches(m, members, y, N, n, value0, rate0)
+            _switches(m, start, G, y, N, n, value0, rate0)
         floor = tolerance[0]  # a switch within the displacements' absolute tolerance of zero is not located
         for c in range(N):
-            floor = min(floor, tolerance[c])
+            floor = _smaller(floor, tolerance[c])
         cuts = 0
         h_after = 0.0  # the step a cut step's first trial proposed for after it (0: the last trial was not cut)
         # Guards (without them a sheet struck at a point underflowed its step): at most 3 cuts of one step, and a
@@ -594,20 +646,20 @@ def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max
             d0, d1 = 0.0, 0.0
             for c in range(size):
                 scale = tolerance[c] + rtol * abs(y[c])
-                d0 = max(d0, abs(y[c]) / scale)
-                d1 = max(d1, abs(k1[c]) / scale)
+                d0 = _larger(d0, abs(y[c]) / scale)
+                d1 = _larger(d1, abs(k1[c]) / scale)
             h = 1e-6 * t_end if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
-            h = min(h, t_end)
+            h = _smaller(h, t_end)
             for c in range(size):
                 y_stage[c] = y[c] + h * k1[c]
-            _group_derivative(m, members, g, y_stage, k2, N, n)
+            _group_derivative(m, start, G, g, y_stage, k2, N, n)
             evaluations += 1
             d2 = 0.0
             for c in range(size):
                 scale = tolerance[c] + rtol * abs(y[c])
-                d2 = max(d2, abs(k2[c] - k1[c]) / scale / h)
-            h1 = max(1e-6 * h, 1e-3 * h) if max(d1, d2) <= 1e-15 else (0.01 / max(d1, d2)) ** 0.2
-            h = min(100.0 * h, h1, t_end)
+                d2 = _larger(d2, abs(k2[c] - k1[c]) / scale / h)
+            h1 = _larger(1e-6 * h, 1e-3 * h) if _larger(d1, d2) <= 1e-15 else (0.01 / _larger(d1, d2)) ** 0.2
+            h = _smaller(_smaller(100.0 * h, h1), t_end)
         rejected_last = False
         while t < t_end:
             if steps + rejections >= max_steps:
@@ -615,7 +667,7 @@ def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max
                 break
             if t + h > t_end:
                 h = t_end - t
-            if h <= 1e-14 * max(abs(t), t_end):
+            if h <= 1e-14 * _larger(abs(t), t_end):
                 code = 3
                 break
             for s in range(1, 7):  # the stages after the first; the last one at the new state (first same as last)
@@ -625,7 +677,7 @@ def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max
                     for r in range(s):
                         total += tableau[s, r] * stages[r, c]
                     target[c] = y[c] + h * total
-                _group_derivative(m, members, g, target, stages[s], N, n)
+                _group_derivative(m, start, G, g, target, stages[s], N, n)
             evaluations += 6
             for c in range(size):
                 err[c] = h * (71.0 / 57600.0 * k1[c] - 71.0 / 16695.0 * k3[c] + 71.0 / 1920.0 * k4[c]
@@ -638,11 +690,11 @@ def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max
                 continue
             factor = 0.9 * error**-0.2 if error > 0.0 else 10.0
             if error <= 1.0 and S:
-                _switches(m, members, y_new, N, n, value1, rate1)
-                z = _first_switch(value0, rate0, value1, rate1, h, floor)
+                _switches(m, start, G, y_new, N, n, value1, rate1)
+                z = _first_switch(value0, rate0, value1, rate1, h, floor, m.kind) if locate else 2.0
                 if (0.01 if after_cut else 0.0) < z < (0.99 if h_after > 0.0 else 1.0) and tries < 3:
                     if h_after == 0.0:
-                        h_after = h * min(1.0, max(0.2, factor))
+                        h_after = h * _smaller(1.0, _larger(0.2, factor))
                     h *= z
                     cuts += 1
                     tries += 1
@@ -655,7 +707,7 @@ def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max
                     theta = (t_eval[j] - t) / h
                     theta1 = 1.0 - theta
                     for q in range(G):
-                        b, o = members[q], q * n
+                        b, o = start + q, q * n
                         for c in range(2 * K + (1 if damped else 0)):
                             if c < K:
                                 r = o + keep[c]
@@ -681,8 +733,9 @@ def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max
                         for c in range(n - w):
                             out_m[b, j, c] = y[o + w + c]  # the memory the step started from (what its stages used)
                     j += 1
-                if n > w and _remember(m, members, y, y_new, h, N, n):  # a peak inside the step: the new memory
-                    _group_derivative(m, members, g, y_new, k7, N, n)  # changes the force at y_new (first same as last)
+                # A peak inside the step: the new memory changes the force at y_new (first same as last).
+                if n > w and _remember(m, start, G, value0, rate0, value1, rate1, y_new, h, N, n):
+                    _group_derivative(m, start, G, g, y_new, k7, N, n)
                     evaluations += 1
                 _after_step(m, y_new, G, n)
                 for c in range(size):
@@ -690,27 +743,23 @@ def _dopri5_runs(m, g, y0, t_eval, rtol, atol, keep, N, out_x, out_u, out_w, max
                     k1[c] = k7[c]  # first same as last
                 t = t_new
                 if rejected_last:
-                    factor = min(factor, 1.0)
+                    factor = _smaller(factor, 1.0)
                 rejected_last = False
-                h *= min(10.0, max(0.2, factor))
+                h *= _smaller(10.0, _larger(0.2, factor))
                 tries = 0
                 after_cut = h_after > 0.0
                 if h_after > 0.0:  # a step cut at a contact: the next one as its first trial proposed
-                    h = max(h, h_after)
+                    h = _larger(h, h_after)
                     h_after = 0.0
                 if S:
-                    if n > w:  # a new memory moves the zero of Thornton's unloading curve
-                        _switches(m, members, y, N, n, value0, rate0)
-                    else:
-                        _copy(value1.reshape(value1.size), value0.reshape(value0.size))
-                        _copy(rate1.reshape(rate1.size), rate0.reshape(rate0.size))
+                    value0, rate0, value1, rate1 = value1, rate1, value0, rate0  # the new step starts where this ended
                 if not _finite(y):
                     code = 2
                     break
             else:
                 rejections += 1
                 rejected_last = True
-                h *= max(0.2, factor)
+                h *= _larger(0.2, factor)
         for q in range(G):
             b = start + q
             status[b], stats[b, 0], stats[b, 1], stats[b, 2], stats[b, 3] = code, evaluations, steps, rejections, cuts
@@ -740,7 +789,7 @@ def dopri5(
     status, stats, final = np.zeros(B, dtype=np.int64), np.zeros((B, 4), dtype=np.int64), np.empty_like(y0)
     args = (packed, float(g), y0, kernel_array(t_eval, dtype=float), float(rtol),
             kernel_array(atol, dtype=float), kernel_array(keep, dtype=np.int64), N, out_x, out_u, out_w,
-            int(max_steps), status, stats, final, out_m)  # fmt: skip
+            int(max_steps), status, stats, final, out_m, dopri5_tableau())  # fmt: skip
     announce_compile(_dopri5_runs, "dopri5", CACHE, (*args, 0, B, bool(shared), bool(locate)))
     if shared:
         _dopri5_runs(*args, 0, B, True, bool(locate))
@@ -792,10 +841,7 @@ def _verlet_runs(m, g, x0, u0, t_eval, n_steps, dt, keep, out_x, out_u, status, 
                     us[j, c] = (d00 * x_prev[c] + d01 * x[q]) / dt + d10 * u_prev[c] + d11 * u_now
                 _copy(mem, ms[j])
                 j += 1
-            for link in range(mem.size):  # the memory after the step, from the new positions
-                if m.kind[link] == 3:
-                    e, _ = _extension(m, link, x, u_half)
-                    mem[link] = max(mem[link], e)
+            _update_memory(m, x, u_half, mem)  # the memory after the step, from the new positions
             for c in range(N):
                 u_half[c] += dt * a[c]
             if not math.isfinite(x[0] + u_half[0]):
