@@ -116,17 +116,18 @@ of rings_law).  Counting the solver's evaluations whose energy exceeds 1e10 J (a
 kept), ``--untraced``, the machine shared (load 3-5), before and after, at one commit apart:
 
 - 4 x 4: before 5.4 s wall, 2.7 s of CPU, residual 9.2e-7 m g (torque 1.3e-7 m g R); 1,302 evaluations at searched
-  poses (bases and trial poses) and 590 of the finite differences, none above 1e10 J (the largest 0.12 J).  After
-  6.1 and 4.6 s wall (two runs), 3.0 s of CPU, residual 8.7e-7 m g (torque 3.5e-7 m g R); 1,825 and 657 evaluations, none above 1e10 J
-  (the largest 0.17 J); the softest stage's descent 702 steps (2,231 evaluations) against 651 (1,639): the bounded
-  law changes its path, where contacts softened a thousandfold approach ten times deeper and more of them feel C.
-- 10 x 10: before 35.6 and 38.1 s wall (two runs), 22.1 and 24.1 s of CPU, residual 7.8e-7 m g (torque 6.1e-7 m g R); 3,259 and 1,578
-  evaluations, 14 of the searched poses above 1e10 J (the largest 3.7e141 J: the cliff, rejected by the line search).
-  After 44.9 and 34.7 s wall, 24.4 and 23.7 s of CPU, residual 2.7e-7 m g (torque 7.7e-8 m g R), the fixed row carrying 90.000000 of
-  the 90 weights; 3,096 and 1,742 evaluations, none above 1e10 J (the largest 0.20 J); the descents 1,810, 40, 18
-  and 62 steps (4,415, 133, 111 and 179 evaluations).  The time is the same within the machine's noise: 14 of 4,837
-  evaluations were all the cliff cost here; on the 30 x 30 sheet it also put 1e148 in the stiffness
-  matrices, now refused by the checks above.
+  poses (bases and trial poses) and 590 of the finite differences, none above 1e10 J (the largest 0.12 J).  After 6.1
+  and 4.6 s wall (two runs), 3.0 s of CPU, residual 8.7e-7 m g (torque 3.5e-7 m g R); 1,825 and 657 evaluations, none
+  above 1e10 J (the largest 0.17 J); the softest stage's descent 702 steps (2,231 evaluations) against 651 (1,639):
+  the bounded law changes its path, where contacts softened a thousandfold approach ten times deeper and more of them
+  feel C.
+- 10 x 10: before 35.6 and 38.1 s wall (two runs), 22.1 and 24.1 s of CPU, residual 7.8e-7 m g (torque 6.1e-7 m g R);
+  3,259 and 1,578 evaluations, 14 of the searched poses above 1e10 J (the largest 3.7e141 J: the cliff, rejected by
+  the line search). After 44.9 and 34.7 s wall, 24.4 and 23.7 s of CPU, residual 2.7e-7 m g (torque 7.7e-8 m g R), the
+  fixed row carrying 90.000000 of the 90 weights; 3,096 and 1,742 evaluations, none above 1e10 J (the largest 0.20 J);
+  the descents 1,810, 40, 18 and 62 steps (4,415, 133, 111 and 179 evaluations).  The time is the same within the
+  machine's noise: 14 of 4,837 evaluations were all the cliff cost here; on the 30 x 30 sheet it also put 1e148 in the
+  stiffness matrices, now refused by the checks above.
 - 30 x 30, ``--untraced``, the whole drape from the start with the bounded law (and the smaller compile of the
   integrators): solved, residual 7.4e-7 m g (torque 6.5e-7 m g R), the fixed row carrying 870.000000 of the 870
   weights; 1,066 s wall (65 s of it the kernels' compile; two other jobs beside it for the first half, then alone),
