@@ -172,9 +172,10 @@ def _curvature_sums(k1a, k1b, k2a, k2b, cos_angle):
 
 @jit()
 def _hertz(A, B, E_star, max_log_ratio, table, step):
-    """(K_c (N/m^1.5), dK_c/dA at fixed B (N m^-0.5)) of the sums A, B: 4/3 E* (2A)^(-1/2) Gamma(B/A), the ellipse
-    capped at ln(B/A) = ``max_log_ratio`` and at the table's end (a smaller A, zero or negative included, is raised
-    to B exp(-cap), where the slope is 0); B < A is taken as the circle."""
+    """(K_c (N/m^1.5), dK_c/dA at fixed B - A (N m^-0.5)) of the sums A, B: 4/3 E* (2A)^(-1/2) Gamma(B/A), the
+    ellipse capped at ln(B/A) = ``max_log_ratio`` and at the table's end (a smaller A, zero or negative included, is
+    raised to B exp(-cap), where the slope is 0); B < A is taken as the circle.  The slope holds the excess B - A
+    (not B): it is continuous as the excess goes to 0 (the circle), where one at fixed B jumps by K Gamma'/(A Gamma)."""
     cap = math.log1p(max_log_ratio) if max_log_ratio > 0.0 else 0.0
     top = (table.size - 1) * step
     if not cap < top:
@@ -194,8 +195,10 @@ def _hertz(A, B, E_star, max_log_ratio, table, step):
     K = 4.0 / 3.0 * E_star / math.sqrt(2.0 * A) * gamma
     if capped:
         return K, 0.0
-    # d ln K/dA = -1/(2A) + Gamma'/Gamma ds/dA, ds/dA = -1/(A (1 + ln(B/A))) (0 for the circle, B <= A)
-    ds = -1.0 / (A * (1.0 + math.log1p(excess / A))) if excess > 0.0 else 0.0
+    # d ln K/dA = -1/(2A) + Gamma'/Gamma ds/dA; at fixed excess e = B - A, s = ln(1 + ln(1 + e/A)) and
+    # ds/dA = -e / (A^2 (1 + e/A) (1 + ln(1 + e/A))), which goes to 0 with e (the circle's, B <= A)
+    ratio = excess / A
+    ds = -ratio / (A * (1.0 + ratio) * (1.0 + math.log1p(ratio)))
     return K, K * (-0.5 / A + _factor_slope(s, table, step) / gamma * ds)
 
 
@@ -245,9 +248,10 @@ def contact_stiffness(k1a, k1b, k2a, k2b, cos_angle, E_star, quartic, delta, tab
     its ellipse capped at the table's end); ``delta`` the approach (m, > 0).
 
     The contact's stored energy is 2/5 K delta^(5/2) and its force d/d(delta) of it, K delta^(3/2) +
-    2/5 delta^(5/2) dK/d(delta) (:func:`contact_force`).  K is Hertz's with A replaced by A_eff = a_0 phi(A/a_0),
-    a_0 = sqrt(C delta), phi(t) = (t + sqrt(t^2 + 4 w(t)))/2: the curvature delta/a^2 of a gap A x^2 + w C x^4
-    that reaches delta at the half-length a (the larger root), with w = QUARTIC_WEIGHT for t <= 0 and
+    2/5 delta^(5/2) dK/d(delta) (:func:`contact_force`).  K is Hertz's with A replaced by A_eff = a_0 phi(A/a_0)
+    (and B by B + A_eff - A), a_0 = sqrt(C delta), phi(t) = (t + sqrt(t^2 + 4 w(t)))/2: the curvature delta/a^2
+    of a gap A x^2 + w C x^4 that reaches delta at the half-length a (the larger root), with w = QUARTIC_WEIGHT for
+    t <= 0 and
     w_0/(1 + (t/QUARTIC_SCALE)^4) above, so that A_eff = A (1 + O(t^-6)) where the quartic is negligible
     (t = A/sqrt(C delta) >> 1), sqrt(w_0 C delta) at A = 0, and C delta w_0/|A| for A << -sqrt(C delta).  w_0 and
     tau are fitted to the half-space solver on such gaps; the force is within 4 per cent of it for t >= -0.25 and
@@ -259,7 +263,10 @@ def contact_stiffness(k1a, k1b, k2a, k2b, cos_angle, E_star, quartic, delta, tab
         K, _ = _hertz(A, B, E_star, TABLE_MAX_LOG_RATIO, table, step)
         return K, 0.0
     A_eff, slope = _effective_curvature(A, quartic, delta)
-    K, dK = _hertz(A_eff, B, E_star, TABLE_MAX_LOG_RATIO, table, step)
+    # B moves with A_eff (its excess over A kept): near the circle (B - A small against A_eff - A) the ellipse then
+    # stays on its side of B = A_eff, and K and dK/d(delta) stay continuous through B = A (a crossing of equal rings
+    # at 90 degrees, which a swing of the chain crosses); where B >> A (a fold) B moves by A_eff - A << B
+    K, dK = _hertz(A_eff, B + (A_eff - A), E_star, TABLE_MAX_LOG_RATIO, table, step)
     return K, dK * slope
 
 
