@@ -37,6 +37,11 @@ of Hertz's K_c over the pose and the shares of twin contacts) and the search's l
 wall (15.0 s of CPU; 1101 steps, 6698 evaluations, 2.2 ms each), 220 MB resident; traced, the same run 45.2 s wall
 (317 MB resident).  The goal (20 s on 2 cores) is met.
 
+With the contact law bounded near a fold (:func:`~ringchain.numerics.engine.rings_law.contact_stiffness`) and the
+smaller compile of the integrators, untraced, one other single-threaded job on the other core (load 1.8), kernels
+from the disk cache: dopri5 15.3 s wall (15.2 s of CPU; the same 1101 steps, 6698 evaluations and peak link force
+688.7 N), 217 MB resident.  On an empty cache the same process compiled for 48.5 s first (384 MB resident).
+
 With the contact search's look between two samples and the warm start's check for a twin beyond a maximum
 (:mod:`ringchain.numerics.engine.rings_kernels`), against the search before them, alternately on a machine at load
 4-9, kernels from the disk cache: dopri5 49.9 and 45.4 s of CPU against 48.9 and 47.1 (the same 1101 steps, 6698
