@@ -135,6 +135,12 @@ kept), ``--untraced``, the machine shared (load 3-5), before and after, at one c
   and 306 steps (15,387, 634, 1,384 and 1,394 evaluations; 615, 28, 63 and 65 s of CPU) to 7.7e-4, 8.8e-4, 9.9e-4
   and 7.4e-7 m g.  Before the bounded law (above): 1,647 s of CPU, the softest stage's descent stopping at 16.6 m g
   and needing Newton's method, the next stage's descent 3,801 steps.
+- The same with the law made continuous through the circle B = A (its B moved with A_eff; rings_law's notes), alone on
+  a quiet machine but for a few minutes: solved, residual 7.3e-7 m g (torque 4.9e-7 m g R), 870.000000 of the 870
+  weights on the fixed row; 699 s wall (35 s of it the kernels' compile), 696 s of CPU, 544 MB resident at peak; the
+  descents 6,973, 302, 120 and 467 steps (15,882, 1,371, 483 and 1,587 evaluations; 522, 54, 20 and 63 s of CPU),
+  no Newton phase.  10 x 10 with it, quiet: 28.9 s wall and of CPU, residual 4.5e-7 m g (torque 1.3e-7 m g R),
+  90.000001 of 90 weights, the descents 1,825, 40, 18 and 60 steps (19.5 s of CPU quiet before the bounded law).
 
 What is left.  Newton's steps accepted where the
 2-norm of the residual falls though the energy rises: after the softest stage's Newton iterations the largest residual,
