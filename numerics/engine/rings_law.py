@@ -41,7 +41,9 @@ t      law                      Hertz
 -2     -0.437 -0.390 -0.362     (infinite)
 ====== ======================== ========================
 
-(:data:`QUARTIC_WEIGHT` and :data:`QUARTIC_SCALE` fitted to these 54 forces, over t >= -0.5.)  Below t = -0.5 the
+(:data:`QUARTIC_WEIGHT` and :data:`QUARTIC_SCALE` fitted to these 54 forces, over t >= -0.5.) The table was measured
+with B held; B now moves with A_eff (:func:`contact_stiffness`, for continuity through the circle B = A), which lowers
+K by at most 1.0 per cent at B/sqrt(C delta) = 10 and 0.1 per cent from 100 on (t from 1 to -0.5). Below t = -0.5 the
 law falls short: there the row's point is a maximum of the gap along x, the gap's two minima already overlap by
 A^2/(4C) before the approach is counted, and the row no longer stands for the contact (the search would find two
 minima; such rows are met only between searches, or where A of the curvatures at the tubes' surfaces and g'' of the
@@ -98,7 +100,7 @@ def fold_quartic(R1, r1, R2, r2):
 
     For two equal interlocked tori at theta_min (where A = 0) the exact gap along the bisector of the ring planes is
     A x^2 + C x^4 + O(x^6) with C = 1/(4 R r (R - r)), each tube's height adding 1/(8 R r (R - r))
-    (:func:`ringchain.theory.gap.fold_quartic_coefficient`, derived from :func:`ringchain.theory.gap.surface_gap`).
+    (:func:`ringchain.theory.gap.fold_quartic`, derived from :func:`ringchain.theory.gap.surface_gap`).
     For unequal tori and for folds of other kinds (a ring sliding over an unlinked neighbour) the true C differs by
     a factor of order one; K at A = 0 goes as C^(-1/4).
     """
@@ -251,8 +253,7 @@ def contact_stiffness(k1a, k1b, k2a, k2b, cos_angle, E_star, quartic, delta, tab
     2/5 delta^(5/2) dK/d(delta) (:func:`contact_force`).  K is Hertz's with A replaced by A_eff = a_0 phi(A/a_0)
     (and B by B + A_eff - A), a_0 = sqrt(C delta), phi(t) = (t + sqrt(t^2 + 4 w(t)))/2: the curvature delta/a^2
     of a gap A x^2 + w C x^4 that reaches delta at the half-length a (the larger root), with w = QUARTIC_WEIGHT for
-    t <= 0 and
-    w_0/(1 + (t/QUARTIC_SCALE)^4) above, so that A_eff = A (1 + O(t^-6)) where the quartic is negligible
+    t <= 0 and w_0/(1 + (t/QUARTIC_SCALE)^4) above, so that A_eff = A (1 + O(t^-6)) where the quartic is negligible
     (t = A/sqrt(C delta) >> 1), sqrt(w_0 C delta) at A = 0, and C delta w_0/|A| for A << -sqrt(C delta).  w_0 and
     tau are fitted to the half-space solver on such gaps; the force is within 4 per cent of it for t >= -0.25 and
     1e1 <= B/sqrt(C delta) <= 1e3, 7 per cent at t = -0.5 (the module notes).  At fixed C, A_eff is smooth (C^3 at
